@@ -1,0 +1,38 @@
+// The ray-casting contract every integrator uses on the CPU: nearest hit and any-hit (shadow) queries
+// over a finalised Scene. The implementation (embree_accel.cpp) is the project's only Embree client.
+// Accel satisfies the "Tracer" concept the PS_HD kernels are templated on (intersect / occluded).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "pathspace/geometry/interaction.h"
+#include "pathspace/geometry/ray.h"
+
+namespace pathspace {
+
+class Scene;
+
+class Accel {
+ public:
+  explicit Accel(const Scene& scene);
+  ~Accel();
+  Accel(const Accel&) = delete;
+  Accel& operator=(const Accel&) = delete;
+
+  // Nearest hit in (ray.tmin, ray.tmax). Fills every field of *hit. Thread-safe.
+  bool intersect(const Ray& ray, SurfaceHit* hit) const;
+  // True when anything blocks (ray.tmin, ray.tmax). Thread-safe.
+  bool occluded(const Ray& ray) const;
+
+  // Batched queries (Embree's stream API); `coherent` marks camera-ray batches. Results equal the
+  // single-ray calls bit for bit.
+  void intersect_batch(const Ray* rays, SurfaceHit* hits, bool* found, uint32_t count, bool coherent) const;
+  void occluded_batch(const Ray* rays, bool* blocked, uint32_t count) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pathspace

@@ -1,0 +1,46 @@
+// Film: per-pixel accumulation of path samples with first and second moments, so every render yields
+// a mean image and a variance-of-the-mean image (used by the z-tests, docs/testing.md).
+// Each pixel is written by exactly one thread per pass, in sample order, so sums are deterministic.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/film/image.h"
+
+namespace pathspace {
+
+class Film {
+ public:
+  Film(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  size_t pixel_count() const { return count_.size(); }
+
+  // Adds one sample (the pixel estimate of one camera path). Not synchronised: a pixel must be owned
+  // by one thread at a time.
+  void add_sample(uint32_t pixel, const Rgb& value) {
+    double* s = &sum_[3 * size_t(pixel)];
+    double* q = &sum_sq_[3 * size_t(pixel)];
+    for (int c = 0; c < 3; ++c) {
+      s[c] += value[c];
+      q[c] += double(value[c]) * double(value[c]);
+    }
+    ++count_[pixel];
+  }
+
+  uint32_t samples(uint32_t pixel) const { return count_[pixel]; }
+  // Mean per pixel (black where no samples).
+  Image mean() const;
+  // Unbiased estimate of the variance of the pixel mean: s^2 / n.
+  Image variance_of_mean() const;
+  void clear();
+
+ private:
+  int width_, height_;
+  std::vector<double> sum_, sum_sq_;
+  std::vector<uint32_t> count_;
+};
+
+}  // namespace pathspace

@@ -1,0 +1,26 @@
+// Fixed layout of sampler dimensions along a path, so that a dimension is a pure function of
+// (pixel, sample, vertex index, purpose) and enabling/disabling NEE or RR does not reshuffle the
+// random numbers used by the other decisions.
+#pragma once
+
+#include <cstdint>
+
+#include "pathspace/base/platform.h"
+
+namespace pathspace::dims {
+
+inline constexpr uint32_t kPixelX = 0;
+inline constexpr uint32_t kPixelY = 1;
+inline constexpr uint32_t kFirstVertex = 2;
+inline constexpr uint32_t kPerVertex = 8;
+
+// Offsets inside a vertex's block.
+inline constexpr uint32_t kLightSelect = 0;
+inline constexpr uint32_t kLightU = 1;  // and kLightU + 1
+inline constexpr uint32_t kLobe = 3;
+inline constexpr uint32_t kBsdfU = 4;   // and kBsdfU + 1
+inline constexpr uint32_t kRoulette = 6;
+
+PS_HD inline constexpr uint32_t vertex(uint32_t index, uint32_t offset) { return kFirstVertex + index * kPerVertex + offset; }
+
+}  // namespace pathspace::dims

@@ -1,0 +1,39 @@
+// Host-side integrator interface: an integrator renders one sample pass at a time into a Film, each
+// pass a pure function of (scene, settings, seed, pass index). The render driver (render.h) runs
+// passes until a sample count or a time budget is reached.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pathspace/film/film.h"
+#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/integrators/pt/pt_settings.h"
+
+namespace pathspace {
+
+class Accel;
+class Scene;
+
+struct IntegratorSettings {
+  uint64_t seed = 0;
+  PtSettings pt;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual const char* name() const = 0;
+  // Renders pass `pass` (one sample per pixel for PT) into film; adds to counters.
+  virtual void render_pass(uint32_t pass, Film& film, PathCounters& counters) = 0;
+};
+
+// The integrators selectable by name ("pt").
+const std::vector<std::string>& integrator_names();
+// Throws pathspace::Error for an unknown name.
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, const Accel& accel,
+                                            const IntegratorSettings& settings);
+
+}  // namespace pathspace

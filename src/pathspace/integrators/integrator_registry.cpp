@@ -1,0 +1,21 @@
+// Name -> integrator factory. New integrators (lt, bpt, sppm, pclt) register here.
+#include <fmt/format.h>
+
+#include "pathspace/base/error.h"
+#include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/pt/pt_integrator.h"
+
+namespace pathspace {
+
+const std::vector<std::string>& integrator_names() {
+  static const std::vector<std::string> names = {"pt"};
+  return names;
+}
+
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, const Accel& accel,
+                                            const IntegratorSettings& settings) {
+  if (name == "pt") return std::make_unique<PtIntegrator>(scene, accel, settings);
+  throw Error(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(integrator_names(), ", ")));
+}
+
+}  // namespace pathspace

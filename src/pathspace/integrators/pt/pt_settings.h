@@ -1,0 +1,16 @@
+// Path tracing parameters and their defaults.
+#pragma once
+
+#include "pathspace/sampling/mis.h"
+
+namespace pathspace {
+
+struct PtSettings {
+  int max_segments = -1;            // path length limit in segments (camera ray = 1); -1: the scene's
+  bool nee = true;                  // next event estimation (light sampling)
+  bool bsdf_sampling = true;        // count emission found by BSDF-sampled rays (after non-delta bounces)
+  MisHeuristic mis = MisHeuristic::power;
+  int roulette_start = 3;           // Russian roulette from this many segments on; < 0 disables it
+};
+
+}  // namespace pathspace

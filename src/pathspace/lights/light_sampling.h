@@ -1,0 +1,137 @@
+// Next-event estimation for every light type: sample a direction towards the light, its solid-angle
+// pdf (for MIS when a BSDF-sampled ray hits an emitter), and emitted radiance.
+// Triangles: uniform area sampling. Spheres: uniform cone of directions from outside, uniform area
+// from inside (the only choice for the "inside of a sphere" test scenes).
+#pragma once
+
+#include "pathspace/geometry/interaction.h"
+#include "pathspace/lights/light.h"
+#include "pathspace/math/frame.h"
+#include "pathspace/sampling/warps.h"
+#include "pathspace/scene/scene_view.h"
+
+namespace pathspace {
+
+// Emitted radiance leaving an area light at a point with geometric normal n towards w.
+PS_INLINE Rgb area_light_radiance(const Light& l, const Vec3& n, const Vec3& w) {
+  const float c = dot(n, w);
+  if (c > kMinEmitterCosine || (l.two_sided && c < -kMinEmitterCosine)) return l.value;
+  return {};
+}
+
+namespace detail {
+PS_INLINE float solid_angle_from_area(float pdf_a, const Vec3& ref, const Vec3& p, const Vec3& n) {
+  const Vec3 d = p - ref;
+  const float d2 = length_squared(d);
+  const float c = fabsf(dot(n, d)) / sqrtf(d2);
+  return c > 0.f ? pdf_a * d2 / c : 0.f;
+}
+}  // namespace detail
+
+PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& ref, Point2 u, LightSample* s) {
+  switch (l.type) {
+    case LightType::area_triangle: {
+      const Triangle& tri = scene.triangles[l.shape];
+      const Vec3 p0 = scene.positions[tri.v[0]], p1 = scene.positions[tri.v[1]], p2 = scene.positions[tri.v[2]];
+      const Point2 b = square_to_triangle_barycentric(u);
+      const Vec3 p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
+      const Vec3 n = triangle_normal(p0, p1, p2);
+      const Vec3 d = p - ref;
+      const float dist = length(d);
+      if (dist <= 0.f) return false;
+      s->wi = d / dist;
+      s->dist = dist;
+      s->p = p;
+      s->li = area_light_radiance(l, n, -s->wi);
+      s->pdf_w = detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
+      s->delta = false;
+      return s->pdf_w > 0.f && !is_black(s->li);
+    }
+    case LightType::area_sphere: {
+      const Sphere& sp = scene.spheres[l.shape];
+      const Vec3 to_c = sp.center - ref;
+      const float dc2 = length_squared(to_c);
+      const float r2 = sp.radius * sp.radius;
+      Vec3 p;
+      if (dc2 > r2 * 1.0001f) {  // outside: sample the cone of directions subtended by the sphere
+        const float dc = sqrtf(dc2);
+        const float sin2_max = r2 / dc2;
+        const float cos_max = sqrtf(fmaxf(0.f, 1.f - sin2_max));
+        const Frame f(to_c / dc);
+        const Vec3 wi = f.to_world(square_to_uniform_cone(u, cos_max));
+        float t;
+        if (!intersect_sphere(sp, ref, wi, 0.f, kInfinity, &t)) {
+          // Grazing sample missed by rounding: take the tangent point.
+          t = dot(to_c, wi);
+        }
+        p = ref + wi * t;
+        s->pdf_w = uniform_cone_pdf(cos_max);
+        s->wi = wi;
+        s->dist = t;
+      } else {  // inside (or on): uniform area
+        p = sp.center + square_to_uniform_sphere(u) * sp.radius;
+        const Vec3 d = p - ref;
+        s->dist = length(d);
+        if (s->dist <= 0.f) return false;
+        s->wi = d / s->dist;
+        s->pdf_w = detail::solid_angle_from_area(1.f / (kFourPi * r2), ref, p, sphere_normal(sp, p));
+      }
+      s->p = p;
+      s->li = area_light_radiance(l, sphere_normal(sp, p), -s->wi);
+      s->delta = false;
+      return s->pdf_w > 0.f && isfinite(s->pdf_w) && !is_black(s->li);
+    }
+    case LightType::point: {
+      const Vec3 d = l.position - ref;
+      const float d2 = length_squared(d);
+      s->dist = sqrtf(d2);
+      s->wi = d / s->dist;
+      s->p = l.position;
+      s->li = l.value / d2;
+      s->pdf_w = 1.f;
+      s->delta = true;
+      return d2 > 0.f;
+    }
+    case LightType::directional:
+      s->wi = -l.direction;
+      s->dist = kInfinity;
+      s->li = l.value;
+      s->pdf_w = 1.f;
+      s->delta = true;
+      return true;
+    case LightType::environment:
+      s->wi = square_to_uniform_sphere(u);
+      s->dist = kInfinity;
+      s->li = l.value;
+      s->pdf_w = uniform_sphere_pdf();
+      s->delta = false;
+      return true;
+  }
+  return false;
+}
+
+// Solid-angle pdf with which sample_light would produce the direction from `ref` to the point `p`
+// (normal n) on light l; for the environment light p and n are unused.
+PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& ref, const Vec3& p, const Vec3& n) {
+  switch (l.type) {
+    case LightType::area_triangle: {
+      const Triangle& tri = scene.triangles[l.shape];
+      const Vec3 p0 = scene.positions[tri.v[0]], p1 = scene.positions[tri.v[1]], p2 = scene.positions[tri.v[2]];
+      return detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
+    }
+    case LightType::area_sphere: {
+      const Sphere& sp = scene.spheres[l.shape];
+      const float dc2 = distance_squared(sp.center, ref);
+      const float r2 = sp.radius * sp.radius;
+      if (dc2 > r2 * 1.0001f) {
+        const float cos_max = sqrtf(fmaxf(0.f, 1.f - r2 / dc2));
+        return uniform_cone_pdf(cos_max);
+      }
+      return detail::solid_angle_from_area(1.f / (kFourPi * r2), ref, p, n);
+    }
+    case LightType::environment: return uniform_sphere_pdf();
+    default: return 0.f;  // delta lights cannot be hit
+  }
+}
+
+}  // namespace pathspace

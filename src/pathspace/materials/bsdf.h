@@ -1,0 +1,59 @@
+// BSDF dispatch: one switch over MaterialType (no virtual calls; device-safe, docs/architecture.md §3).
+// Directions are local to the shading frame; f excludes the cosine; pdfs are per solid angle.
+// Two-sided materials are evaluated in the frame mirrored to wo's side.
+#pragma once
+
+#include "pathspace/materials/rough_conductor.h"
+#include "pathspace/materials/rough_dielectric.h"
+#include "pathspace/materials/standard_material.h"
+
+namespace pathspace {
+
+namespace detail {
+PS_INLINE bool flip_for_two_sided(const Material& m, Vec3* wo, Vec3* wi) {
+  if (!m.two_sided || wo->z >= 0.f || m.type == MaterialType::rough_dielectric || m.ior > 0.f) return false;
+  wo->z = -wo->z;
+  if (wi) wi->z = -wi->z;
+  return true;
+}
+}  // namespace detail
+
+PS_INLINE Rgb bsdf_eval(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode) {
+  detail::flip_for_two_sided(m, &wo, &wi);
+  switch (m.type) {
+    case MaterialType::standard: return standard::eval(m, wo, wi);
+    case MaterialType::rough_conductor: return rough_conductor::eval(m, wo, wi, mode);
+    case MaterialType::rough_dielectric: return rough_dielectric::eval(m, wo, wi, mode);
+  }
+  return {};
+}
+
+PS_INLINE float bsdf_pdf(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode) {
+  detail::flip_for_two_sided(m, &wo, &wi);
+  switch (m.type) {
+    case MaterialType::standard: return standard::pdf(m, wo, wi);
+    case MaterialType::rough_conductor: return rough_conductor::pdf(m, wo, wi, mode);
+    case MaterialType::rough_dielectric: return rough_dielectric::pdf(m, wo, wi, mode);
+  }
+  return 0.f;
+}
+
+// u_lobe picks a lobe, u samples within it.
+PS_INLINE bool bsdf_sample(const Material& m, Vec3 wo, float u_lobe, Point2 u, TransportMode mode, BsdfSample* s) {
+  const bool flipped = detail::flip_for_two_sided(m, &wo, nullptr);
+  bool ok = false;
+  switch (m.type) {
+    case MaterialType::standard: ok = standard::sample(m, wo, u_lobe, u, mode, s); break;
+    case MaterialType::rough_conductor: ok = rough_conductor::sample(m, wo, u_lobe, u, mode, s); break;
+    case MaterialType::rough_dielectric: ok = rough_dielectric::sample(m, wo, u_lobe, u, mode, s); break;
+  }
+  if (ok && flipped) s->wi.z = -s->wi.z;
+  return ok;
+}
+
+// True when the material has a lobe that eval/pdf can see (NEE and MIS are worthwhile).
+PS_INLINE bool bsdf_has_non_delta(const Material& m) {
+  return m.type != MaterialType::standard || standard::has_non_delta(m);
+}
+
+}  // namespace pathspace

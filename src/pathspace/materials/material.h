@@ -1,0 +1,82 @@
+// Material records: plain data selected by MaterialType, evaluated by a switch in bsdf.h.
+// All BSDF functions work in the local shading frame (z = normal), with wo towards the camera side
+// and wi towards the light side, both pointing away from the surface (docs/conventions.md).
+#pragma once
+
+#include <cstdint>
+
+#include "pathspace/math/rgb.h"
+
+namespace pathspace {
+
+enum class MaterialType : uint8_t {
+  standard,          // sum of Lambert diffuse + normalised Phong + one smooth specular lobe (mirror or glass)
+  rough_conductor,   // GGX microfacet metal, visible-normal sampling
+  rough_dielectric,  // GGX microfacet glass (Walter et al. 2007), visible-normal sampling
+};
+
+enum class TransportMode : uint8_t { radiance, importance };
+
+struct Material {
+  MaterialType type = MaterialType::standard;
+  // Diffuse and Phong lobes are one-sided by default (zero from the back, as in the Cornell
+  // scenes); two_sided mirrors them to the side of wo.
+  bool two_sided = false;
+
+  // standard
+  Rgb diffuse;             // Lambert albedo rho_d
+  Rgb glossy;              // Phong rho_p, f = rho_p (n + 2) / (2 pi) cos^n(alpha)
+  float exponent = 1.f;    // Phong exponent n
+  Rgb specular;            // smooth specular reflectance rho_m (mirror, or glass tint)
+  float ior = 0.f;         // 0: the specular lobe is a mirror (no Fresnel); > 0: smooth dielectric
+
+  // rough_conductor / rough_dielectric
+  float alpha = 0.1f;      // GGX roughness (alpha = perceptual roughness^2)
+  Rgb eta{1.f, 1.f, 1.f};  // conductor: real part of the complex IOR (per channel)
+  Rgb k;                   // conductor: imaginary part
+  // rough_dielectric uses `ior` (inside / outside) and `specular` as the tint.
+};
+
+// Convenience constructors.
+inline Material make_diffuse(const Rgb& albedo) {
+  Material m;
+  m.diffuse = albedo;
+  return m;
+}
+inline Material make_mirror(const Rgb& reflectance = Rgb(1.f)) {
+  Material m;
+  m.specular = reflectance;
+  return m;
+}
+inline Material make_glass(float ior, const Rgb& tint = Rgb(1.f)) {
+  Material m;
+  m.specular = tint;
+  m.ior = ior;
+  return m;
+}
+inline Material make_phong(const Rgb& diffuse, const Rgb& glossy, float exponent) {
+  Material m;
+  m.diffuse = diffuse;
+  m.glossy = glossy;
+  m.exponent = exponent;
+  return m;
+}
+inline Material make_rough_conductor(float alpha, const Rgb& eta, const Rgb& k) {
+  Material m;
+  m.type = MaterialType::rough_conductor;
+  m.alpha = alpha;
+  m.eta = eta;
+  m.k = k;
+  m.two_sided = false;
+  return m;
+}
+inline Material make_rough_dielectric(float alpha, float ior, const Rgb& tint = Rgb(1.f)) {
+  Material m;
+  m.type = MaterialType::rough_dielectric;
+  m.alpha = alpha;
+  m.ior = ior;
+  m.specular = tint;
+  return m;
+}
+
+}  // namespace pathspace

@@ -1,0 +1,41 @@
+// The built-in scenes: exact copies of SmallVCM's Cornell box variants (cornell-variants.md), selectable
+// by SmallVCM's id (e.g. "bs_c") or a descriptive name (e.g. "cornell-box").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pathspace/scene/scene.h"
+
+namespace pathspace {
+
+struct BuiltinSceneInfo {
+  std::string name;         // descriptive name, e.g. "cornell-box"
+  std::string id;           // SmallVCM acronym, e.g. "bs_c"
+  unsigned mask;            // LoadCornellBox bit mask
+  std::string description;
+};
+
+inline constexpr const char* kDefaultSceneName = "cornell-box";
+
+const std::vector<BuiltinSceneInfo>& builtin_scenes();
+// Finds a scene by name or id; nullptr when unknown.
+const BuiltinSceneInfo* find_builtin_scene(const std::string& name_or_id);
+// Builds a finalised scene; throws pathspace::Error for an unknown name.
+Scene make_builtin_scene(const std::string& name_or_id, int width = 512, int height = 512);
+
+// SmallVCM's LoadCornellBox(resolution, mask) bits (cornell-variants.md §1).
+enum CornellMask : unsigned {
+  kLightCeiling = 1,
+  kLightSun = 2,
+  kLightPoint = 4,
+  kLightBackground = 8,
+  kLargeMirrorSphere = 16,
+  kLargeGlassSphere = 32,
+  kSmallMirrorSphere = 64,
+  kSmallGlassSphere = 128,
+  kGlossyFloor = 256,
+};
+Scene make_cornell_box(unsigned mask, int width, int height);
+
+}  // namespace pathspace

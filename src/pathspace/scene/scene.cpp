@@ -1,0 +1,163 @@
+// Scene construction helpers and finalisation (bounds, light-selection distribution).
+#include "pathspace/scene/scene.h"
+
+#include <string>
+
+#include "pathspace/base/error.h"
+
+namespace pathspace {
+
+uint32_t Scene::add_material(const Material& m) {
+  materials.push_back(m);
+  return uint32_t(materials.size() - 1);
+}
+
+uint32_t Scene::add_vertex(const Vec3& p) {
+  positions.push_back(p);
+  return uint32_t(positions.size() - 1);
+}
+
+uint32_t Scene::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, uint32_t material, const Rgb& emission,
+                             bool two_sided_emission) {
+  Triangle t{{add_vertex(p0), add_vertex(p1), add_vertex(p2)}, material, kNoLight};
+  const uint32_t index = uint32_t(triangles.size());
+  if (!is_black(emission)) {
+    Light l;
+    l.type = LightType::area_triangle;
+    l.shape = index;
+    l.value = emission;
+    l.two_sided = two_sided_emission;
+    t.light = int32_t(lights.size());
+    lights.push_back(l);
+  }
+  triangles.push_back(t);
+  return index;
+}
+
+void Scene::add_quad(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, uint32_t material,
+                     const Rgb& emission, bool two_sided_emission) {
+  add_triangle(p0, p1, p2, material, emission, two_sided_emission);
+  add_triangle(p2, p3, p0, material, emission, two_sided_emission);
+}
+
+uint32_t Scene::add_sphere(const Vec3& center, float radius, uint32_t material, const Rgb& emission,
+                           bool inward_normals) {
+  Sphere s{center, radius, material, kNoLight, inward_normals};
+  const uint32_t index = uint32_t(spheres.size());
+  if (!is_black(emission)) {
+    Light l;
+    l.type = LightType::area_sphere;
+    l.shape = index;
+    l.value = emission;
+    s.light = int32_t(lights.size());
+    lights.push_back(l);
+  }
+  spheres.push_back(s);
+  return index;
+}
+
+void Scene::add_point_light(const Vec3& position, const Rgb& intensity) {
+  Light l;
+  l.type = LightType::point;
+  l.position = position;
+  l.value = intensity;
+  lights.push_back(l);
+}
+
+void Scene::add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance) {
+  Light l;
+  l.type = LightType::directional;
+  l.direction = normalize(propagation_direction);
+  l.value = irradiance;
+  lights.push_back(l);
+}
+
+void Scene::add_environment_light(const Rgb& radiance) {
+  Light l;
+  l.type = LightType::environment;
+  l.value = radiance;
+  lights.push_back(l);
+}
+
+Bounds3 Scene::geometry_bounds() const {
+  Bounds3 b;
+  for (const Triangle& t : triangles)
+    for (uint32_t v : t.v) b.expand(positions[v]);
+  for (const Sphere& s : spheres) {
+    b.expand(s.center - Vec3(s.radius));
+    b.expand(s.center + Vec3(s.radius));
+  }
+  return b;
+}
+
+float Scene::light_power(size_t i) const {
+  const Light& l = lights[i];
+  const float r = bounds_.radius;
+  switch (l.type) {
+    case LightType::area_triangle: {
+      const Triangle& t = triangles[l.shape];
+      const float area = triangle_area(positions[t.v[0]], positions[t.v[1]], positions[t.v[2]]);
+      return kPi * area * luminance(l.value) * (l.two_sided ? 2.f : 1.f);
+    }
+    case LightType::area_sphere: {
+      const float rs = spheres[l.shape].radius;
+      return kPi * kFourPi * rs * rs * luminance(l.value);
+    }
+    case LightType::point: return kFourPi * luminance(l.value);
+    case LightType::directional: return kPi * r * r * luminance(l.value);
+    case LightType::environment: return kFourPi * kPi * r * r * luminance(l.value);
+  }
+  return 0.f;
+}
+
+void Scene::finalize() {
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i];
+    for (uint32_t v : t.v)
+      if (v >= positions.size()) throw Error("triangle " + std::to_string(i) + " references vertex " + std::to_string(v) + " of " + std::to_string(positions.size()));
+    if (t.material >= materials.size()) throw Error("triangle " + std::to_string(i) + " has no material " + std::to_string(t.material));
+  }
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    if (!(spheres[i].radius > 0.f)) throw Error("sphere " + std::to_string(i) + " has radius " + std::to_string(spheres[i].radius) + " (must be > 0)");
+    if (spheres[i].material >= materials.size()) throw Error("sphere " + std::to_string(i) + " has no material");
+  }
+  if (camera.width <= 0 || camera.height <= 0) throw Error("scene has no camera resolution");
+
+  const Bounds3 b = geometry_bounds();
+  bounds_ = has_bounds_override ? bounds_override : (b.empty() ? BoundingSphere{Vec3(), 1.f} : bounding_sphere(b));
+
+  environment_light_ = -1;
+  std::vector<float> weights(lights.size(), 1.f);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].type == LightType::environment) {
+      if (environment_light_ >= 0) throw Error("a scene can hold at most one environment light");
+      environment_light_ = int32_t(i);
+    }
+    if (light_selection == LightSelection::power) weights[i] = light_power(i);
+  }
+  light_distribution_.build(weights);
+  finalized_ = true;
+}
+
+SceneView Scene::view() const {
+  if (!finalized_) throw Error("Scene::view() called before finalize()");
+  SceneView v;
+  v.positions = positions.data();
+  v.triangles = triangles.data();
+  v.num_triangles = uint32_t(triangles.size());
+  v.spheres = spheres.data();
+  v.num_spheres = uint32_t(spheres.size());
+  v.materials = materials.data();
+  v.num_materials = uint32_t(materials.size());
+  v.lights = lights.data();
+  v.num_lights = uint32_t(lights.size());
+  v.light_selection = light_distribution_.view();
+  v.environment_light = environment_light_;
+  v.camera = camera;
+  v.bounds = bounds_;
+  v.ray_epsilon = ray_epsilon;
+  v.max_path_segments = max_path_segments;
+  return v;
+}
+
+}  // namespace pathspace

@@ -1,0 +1,63 @@
+// Scene: owns the flat arrays (vertices, triangles, spheres, materials, lights) and the camera.
+// Builders (built-in scenes, file loaders) append through the add_* helpers, then call finalize(),
+// which derives bounds and the light-selection distribution. Kernels see only view().
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pathspace/scene/scene_view.h"
+
+namespace pathspace {
+
+enum class LightSelection { uniform, power };
+
+class Scene {
+ public:
+  std::string name;
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  std::vector<Sphere> spheres;
+  std::vector<Material> materials;
+  std::vector<Light> lights;
+  PinholeCamera camera;
+  float ray_epsilon = 1e-4f;
+  int max_path_segments = 10;
+  LightSelection light_selection = LightSelection::uniform;
+  // When set, infinite lights use this bounding sphere instead of the geometry's.
+  bool has_bounds_override = false;
+  BoundingSphere bounds_override;
+
+  uint32_t add_material(const Material& m);
+  uint32_t add_vertex(const Vec3& p);
+  // Adds triangle (p0, p1, p2); its geometric normal is normalize(cross(p1 - p0, p2 - p0)).
+  // A non-black emission makes it an area light (radiance, front side unless two_sided).
+  uint32_t add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, uint32_t material,
+                        const Rgb& emission = Rgb(), bool two_sided_emission = false);
+  // Quad p0 p1 p2 p3 (counter-clockwise around its normal) as triangles (p0,p1,p2), (p2,p3,p0).
+  void add_quad(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, uint32_t material,
+                const Rgb& emission = Rgb(), bool two_sided_emission = false);
+  uint32_t add_sphere(const Vec3& center, float radius, uint32_t material, const Rgb& emission = Rgb(),
+                      bool inward_normals = false);
+  void add_point_light(const Vec3& position, const Rgb& intensity);
+  void add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance);
+  void add_environment_light(const Rgb& radiance);
+
+  // Validates indices and derives bounds and the light distribution. Throws pathspace::Error.
+  void finalize();
+
+  Bounds3 geometry_bounds() const;
+  BoundingSphere bounds() const { return bounds_; }
+  const DiscreteDistribution& light_distribution() const { return light_distribution_; }
+  // Total emitted power of light i (luminance), the weight of power-proportional selection.
+  float light_power(size_t i) const;
+  SceneView view() const;
+
+ private:
+  BoundingSphere bounds_;
+  DiscreteDistribution light_distribution_;
+  int32_t environment_light_ = -1;
+  bool finalized_ = false;
+};
+
+}  // namespace pathspace

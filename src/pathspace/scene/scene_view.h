@@ -1,0 +1,34 @@
+// SceneView: the device-safe, read-only view of a Scene (raw pointers and counts into the owning
+// Scene's flat arrays). Kernels and PS_HD code take a SceneView, never a Scene.
+#pragma once
+
+#include <cstdint>
+
+#include "pathspace/camera/pinhole.h"
+#include "pathspace/geometry/shapes.h"
+#include "pathspace/lights/light.h"
+#include "pathspace/materials/material.h"
+#include "pathspace/math/bbox.h"
+#include "pathspace/sampling/discrete.h"
+
+namespace pathspace {
+
+struct SceneView {
+  const Vec3* positions = nullptr;
+  const Triangle* triangles = nullptr;
+  uint32_t num_triangles = 0;
+  const Sphere* spheres = nullptr;
+  uint32_t num_spheres = 0;
+  const Material* materials = nullptr;
+  uint32_t num_materials = 0;
+  const Light* lights = nullptr;
+  uint32_t num_lights = 0;
+  DiscreteView light_selection;     // probability of choosing each light for NEE
+  int32_t environment_light = -1;   // index of the environment light, or -1
+  PinholeCamera camera;
+  BoundingSphere bounds;            // of the geometry; used by infinite lights
+  float ray_epsilon = 1e-4f;        // ray offset (scene scale)
+  int max_path_segments = 10;       // the scene's path length limit (camera ray = segment 1)
+};
+
+}  // namespace pathspace

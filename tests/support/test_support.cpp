@@ -1,0 +1,130 @@
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+
+#include "support/statistics.h"
+
+namespace pathspace::testing {
+
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+double normal_two_sided_p(double z) { return std::erfc(std::fabs(z) / std::sqrt(2.0)); }
+
+namespace {
+// Series for P(a, x) (Numerical Recipes 6.2), good for x < a + 1.
+double gamma_p_series(double a, double x) {
+  double sum = 1.0 / a, term = sum;
+  for (int n = 1; n < 10000; ++n) {
+    term *= x / (a + n);
+    sum += term;
+    if (std::fabs(term) < std::fabs(sum) * 1e-15) break;
+  }
+  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
+}
+// Continued fraction for Q(a, x) (Lentz), good for x >= a + 1.
+double gamma_q_fraction(double a, double x) {
+  const double tiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 10000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::fabs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::fabs(del - 1.0) < 1e-15) break;
+  }
+  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
+}
+// Regularised incomplete beta I_x(a, b) by continued fraction (Numerical Recipes 6.4).
+double beta_fraction(double a, double b, double x) {
+  const double tiny = 1e-300;
+  double c = 1.0, d = 1.0 - (a + b) * x / (a + 1.0);
+  if (std::fabs(d) < tiny) d = tiny;
+  d = 1.0 / d;
+  double h = d;
+  for (int m = 1; m < 10000; ++m) {
+    const int m2 = 2 * m;
+    double aa = m * (b - m) * x / ((a - 1.0 + m2) * (a + m2));
+    d = 1.0 + aa * d;
+    if (std::fabs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    h *= d * c;
+    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + 1.0 + m2));
+    d = 1.0 + aa * d;
+    if (std::fabs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::fabs(del - 1.0) < 1e-15) break;
+  }
+  return h;
+}
+double incomplete_beta(double a, double b, double x) {
+  if (x <= 0.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x));
+  if (x < (a + 1.0) / (a + b + 2.0)) return front * beta_fraction(a, b, x) / a;
+  return 1.0 - front * beta_fraction(b, a, 1.0 - x) / b;
+}
+}  // namespace
+
+double gamma_q(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  if (x < a + 1.0) return 1.0 - gamma_p_series(a, x);
+  return gamma_q_fraction(a, x);
+}
+
+double chi2_survival(double x, double dof) { return gamma_q(0.5 * dof, 0.5 * x); }
+
+double student_t_two_sided_p(double t, double dof) {
+  if (!std::isfinite(t)) return 0.0;
+  return incomplete_beta(0.5 * dof, 0.5, dof / (dof + t * t));
+}
+
+double sidak(double alpha, int m) { return 1.0 - std::pow(1.0 - alpha, 1.0 / double(m)); }
+
+MeanTest t_test_mean(double sum, double sum_sq, double n, double expected) {
+  MeanTest r;
+  r.mean = sum / n;
+  const double var = std::max(0.0, (sum_sq - n * r.mean * r.mean) / (n - 1.0));
+  r.std_error = std::sqrt(var / n);
+  if (r.std_error == 0.0) {
+    r.t = (r.mean == expected) ? 0.0 : std::numeric_limits<double>::infinity();
+    r.p = (r.mean == expected) ? 1.0 : 0.0;
+    return r;
+  }
+  r.t = (r.mean - expected) / r.std_error;
+  r.p = student_t_two_sided_p(r.t, n - 1.0);
+  return r;
+}
+
+ImageZTest image_z_test(const Image& mean_a, const Image& var_a, const Image& mean_b, const Image& var_b,
+                        double alpha_pixel, double variance_floor) {
+  ImageZTest r;
+  for (size_t i = 0; i < mean_a.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const double diff = double(mean_a.pixels[i][c]) - double(mean_b.pixels[i][c]);
+      const double var = double(var_a.pixels[i][c]) + double(var_b.pixels[i][c]) + variance_floor;
+      ++r.channels;
+      if (normal_two_sided_p(diff / std::sqrt(var)) < alpha_pixel) ++r.failed;
+    }
+  }
+  return r;
+}
+
+std::string evidence_dir() {
+  const char* env = std::getenv("PATHSPACE_TEST_EVIDENCE");
+  std::filesystem::path dir = env ? env : (std::filesystem::temp_directory_path() / "pathspace-test-evidence");
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+}  // namespace pathspace::testing
