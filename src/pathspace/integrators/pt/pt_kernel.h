@@ -78,7 +78,7 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
         const Vec3 wi = frame.to_local(ls.wi);
         const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
         if (!is_black(f)) {
-          Ray shadow{hit.p, ls.wi, scene.ray_epsilon, isinf(ls.dist) ? kInfinity : ls.dist - scene.ray_epsilon};
+          const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon);
           ++counters->rays;
           ++counters->shadow_rays;
           if (!tracer.occluded(shadow)) {
@@ -105,7 +105,7 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
       if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) break;
       beta *= 1.f / q;
     }
-    ray = spawn_ray(hit.p, frame.to_world(bs.wi), scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
   }
   return radiance;
 }
