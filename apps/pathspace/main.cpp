@@ -1,21 +1,63 @@
-// PLACEHOLDER CLI (being implemented): renders the default scene to check the build.
+// pathspace command line: `render` and `info` (docs/cli.md). Usage mistakes exit with status 2 and
+// one line on stderr; failures while running exit with status 1.
 #include <cstdio>
+#include <exception>
+#include <string>
 
-#include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
-#include "pathspace/scene/builtin_scenes.h"
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
-int main() {
-  using namespace pathspace;
-  Scene scene = make_builtin_scene(kDefaultSceneName, 128, 128);
-  Accel accel(scene);
-  Film film(128, 128);
-  RenderRequest req;
-  req.spp = 4;
-  RenderStats st = render(scene, accel, req, film);
-  Image img = film.mean();
-  double sum = 0;
-  for (auto& p : img.pixels) sum += p.r + p.g + p.b;
-  std::printf("%.3f s, %.2f Mrays/s, mean %.5f\n", st.wall_s, st.mrays_per_s(), sum / (3.0 * img.size()));
+#include "info_command.h"
+#include "render_command.h"
+#include "usage_error.h"
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+// CLI11 messages can span lines; the contract is one line per error.
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace pathspace::cli;
+  CLI::App app("pathspace: path space filtering and pixel cache light tracing renderer", "pathspace");
+  app.require_subcommand(1);
+  RenderOptions render_options;
+  InfoOptions info_options;
+  CLI::App* render_cmd = add_render_command(app, &render_options);
+  CLI::App* info_cmd = add_info_command(app, &info_options);
+
+  std::string command = "pathspace";
+  try {
+    app.parse(argc, argv);
+    if (render_cmd->parsed()) {
+      command = "pathspace render";
+      return run_render_command(render_options);
+    }
+    if (info_cmd->parsed()) return run_info_command(info_options);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const std::string sub = render_cmd->parsed() ? " render" : info_cmd->parsed() ? " info" : "";
+    fmt::print(stderr, "pathspace{}: error: {} (run 'pathspace{} --help' for usage)\n", sub, one_line(e.what()), sub);
+    return kExitUsage;
+  } catch (const UsageError& e) {
+    const std::string hint = e.hint().empty() ? "run '" + command + " --help' for usage" : e.hint();
+    fmt::print(stderr, "{}: error: {} ({})\n", command, one_line(e.what()), hint);
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: error: {}\n", command, one_line(e.what()));
+    return kExitFailure;
+  }
   return 0;
 }

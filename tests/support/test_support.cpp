@@ -97,8 +97,12 @@ MeanTest t_test_mean(double sum, double sum_sq, double n, double expected) {
   const double var = std::max(0.0, (sum_sq - n * r.mean * r.mean) / (n - 1.0));
   r.std_error = std::sqrt(var / n);
   if (r.std_error == 0.0) {
-    r.t = (r.mean == expected) ? 0.0 : std::numeric_limits<double>::infinity();
-    r.p = (r.mean == expected) ? 1.0 : 0.0;
+    // A zero-variance estimator (e.g. BSDF sampling in a white furnace) is deterministic: the
+    // t-test degenerates and the mean must equal the expectation up to float32 path arithmetic
+    // (a few operations of relative rounding 6e-8 each).
+    const bool equal = std::abs(r.mean - expected) <= 1e-6 * std::max(1.0, std::abs(expected));
+    r.t = equal ? 0.0 : std::numeric_limits<double>::infinity();
+    r.p = equal ? 1.0 : 0.0;
     return r;
   }
   r.t = (r.mean - expected) / r.std_error;

@@ -1,10 +1,340 @@
-// PLACEHOLDER: being implemented.
+// Image files. Every format is encoded into memory first and then written through
+// write_file_atomically (io/atomic_file.h), so all formats share one failure handling.
+// Non-finite pixels: EXR and PFM store them unchanged; PNG stores NaN as 0 and clamps ±Inf
+// (film/tonemap.h, to_srgb8).
 #include "pathspace/io/image_io.h"
 
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string_view>
+
+#include <OpenEXR/IexBaseExc.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
+
+// stb is compiled here, with static linkage so another library bundling stb (tinygltf) cannot
+// clash with it. Its own warnings are not ours.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wall"
+#pragma GCC diagnostic ignored "-Wextra"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image.h>
+#include <stb_image_write.h>
+#pragma GCC diagnostic pop
+
 #include "pathspace/base/error.h"
+#include "pathspace/film/tonemap.h"
+#include "pathspace/io/atomic_file.h"
 
 namespace pathspace {
-ImageFormat image_format_from_path(const std::string&) { throw Error("image io not implemented"); }
-void write_image(const std::string&, const Image&) { throw Error("image io not implemented"); }
-Image read_image(const std::string&) { throw Error("image io not implemented"); }
+namespace {
+
+namespace fs = std::filesystem;
+
+static_assert(sizeof(Rgb) == 3 * sizeof(float), "EXR slices and PFM rows assume packed Rgb");
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) { throw Error(path + ": " + why); }
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// ---- writing ---------------------------------------------------------------------------------
+
+// Writes bytes to the temporary file given by write_file_atomically, checking every step; fsync so
+// that after a crash the renamed file is never an empty or partial one.
+void write_bytes(const std::string& path, const std::string& temp, const std::string& bytes) {
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) fail(path, "cannot create temporary file '" + temp + "': " + std::strerror(errno));
+  int err = 0;  // first errno seen
+  auto check = [&](bool ok) { if (!ok && err == 0) err = errno ? errno : EIO; };
+  check(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
+  check(std::fflush(f) == 0);
+  check(fsync(fileno(f)) == 0);
+  check(std::fclose(f) == 0);
+  if (err != 0) fail(path, std::string("write failed: ") + std::strerror(err));
+}
+
+std::string encode_exr(const Image& image) {
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  Imf::FrameBuffer frame;
+  // OpenEXR's Slice takes a non-const pointer but only reads through it when writing.
+  char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels.data()));
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Rgb),
+                                      sizeof(Rgb) * size_t(image.width)));
+  }
+  Imf::StdOSStream out;
+  {
+    Imf::OutputFile file(out, header);  // the destructor writes the line offset table
+    file.setFrameBuffer(frame);
+    file.writePixels(image.height);
+  }
+  return out.str();
+}
+
+void put_f32_le(char* dst, float v) {
+  const uint32_t bits = std::bit_cast<uint32_t>(v);
+  for (int i = 0; i < 4; ++i) dst[i] = char((bits >> (8 * i)) & 0xffu);
+}
+
+float get_f32(const char* src, bool little_endian) {
+  uint32_t bits = 0;
+  for (int i = 0; i < 4; ++i) {
+    const uint32_t byte = static_cast<unsigned char>(src[little_endian ? i : 3 - i]);
+    bits |= byte << (8 * i);
+  }
+  return std::bit_cast<float>(bits);
+}
+
+// PFM: "PF\n<w> <h>\n-1.0\n" (negative scale = little endian), then rows from the bottom up.
+std::string encode_pfm(const Image& image) {
+  std::string out = fmt::format("PF\n{} {}\n-1.0\n", image.width, image.height);
+  const size_t header = out.size(), row_bytes = size_t(image.width) * 12;
+  out.resize(header + row_bytes * size_t(image.height));
+  for (int y = 0; y < image.height; ++y) {
+    char* dst = out.data() + header + row_bytes * size_t(image.height - 1 - y);
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) put_f32_le(dst + 12 * size_t(x) + 4 * size_t(c), image.at(x, y)[c]);
+  }
+  return out;
+}
+
+std::string encode_png(const std::string& path, const Image& image) {
+  std::vector<unsigned char> px(image.size() * 3);
+  for (size_t i = 0; i < image.size(); ++i)
+    for (int c = 0; c < 3; ++c) px[3 * i + size_t(c)] = to_srgb8(image.pixels[i][c]);
+  std::string out;
+  auto sink = [](void* ctx, void* data, int size) {
+    static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
+  };
+  if (image.width > INT_MAX / 3 || !stbi_write_png_to_func(sink, &out, image.width, image.height, 3, px.data(),
+                                                           image.width * 3))
+    fail(path, "PNG encoding failed");
+  return out;
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) fail(path, "cannot read: is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) fail(path, "read error");
+  return bytes;
+}
+
+// OpenEXR input from bytes already in memory, named after the file for OpenEXR's messages.
+class MemoryIStream : public Imf::IStream {
+ public:
+  MemoryIStream(const std::string& name, const std::string& bytes) : Imf::IStream(name.c_str()), bytes_(bytes) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || pos_ > bytes_.size() || size_t(n) > bytes_.size() - pos_)
+      throw Iex::InputExc("early end of file (truncated data)");
+    std::memcpy(c, bytes_.data() + pos_, size_t(n));
+    pos_ += size_t(n);
+    return pos_ < bytes_.size();
+  }
+  uint64_t tellg() override { return pos_; }
+  void seekg(uint64_t pos) override { pos_ = size_t(pos); }
+
+ private:
+  const std::string& bytes_;
+  size_t pos_ = 0;
+};
+
+Image decode_exr(const std::string& path, const std::string& bytes) {
+  try {
+    MemoryIStream in(path, bytes);
+    Imf::InputFile file(in);
+    const Imath::Box2i dw = file.header().dataWindow();
+    const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
+    if (w <= 0 || h <= 0 || w > INT_MAX || h > INT_MAX) fail(path, "bad EXR data window");
+    const Imf::ChannelList& channels = file.header().channels();
+    const bool rgb = channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
+    if (!rgb && !channels.findChannel("Y")) fail(path, "EXR has no R, G, B or Y channel");
+    Image image(static_cast<int>(w), static_cast<int>(h));
+    char* base = reinterpret_cast<char*>(image.pixels.data());
+    Imf::FrameBuffer frame;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < (rgb ? 3 : 1); ++c)  // missing channels are filled with 0
+      frame.insert(rgb ? names[c] : "Y", Imf::Slice::Make(Imf::FLOAT, base + c * sizeof(float), dw, sizeof(Rgb),
+                                                          sizeof(Rgb) * size_t(w)));
+    file.setFrameBuffer(frame);
+    file.readPixels(dw.min.y, dw.max.y);
+    if (!rgb)
+      for (Rgb& p : image.pixels) p.g = p.b = p.r;
+    return image;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {  // OpenEXR's Iex exceptions and bad_alloc
+    fail(path, std::string("bad EXR file: ") + e.what());
+  }
+}
+
+// PFM: "PF" (RGB) or "Pf" (grey), whitespace, width, height, scale (its sign gives the byte order:
+// negative = little endian; its magnitude scales the values), one whitespace byte, then float rows
+// from the bottom of the image to the top.
+Image decode_pfm(const std::string& path, const std::string& b) {
+  auto bad = [&](const std::string& why) { fail(path, "bad PFM header: " + why); };
+  if (b.size() < 3 || b[0] != 'P' || (b[1] != 'F' && b[1] != 'f')) bad("expected 'PF' or 'Pf'");
+  const int channels = b[1] == 'F' ? 3 : 1;
+  size_t pos = 2;
+  auto is_space = [](char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; };
+  auto token = [&](const char* what) {
+    if (pos >= b.size() || !is_space(b[pos])) bad(std::string("expected whitespace before ") + what);
+    while (pos < b.size() && is_space(b[pos])) ++pos;
+    const size_t start = pos;
+    while (pos < b.size() && !is_space(b[pos])) ++pos;
+    if (start == pos) bad(std::string("missing ") + what);
+    return std::string_view(b).substr(start, pos - start);
+  };
+  auto parse_size = [&](const char* what) {
+    const std::string_view t = token(what);
+    int v = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || v <= 0 || v > (1 << 24))
+      bad(fmt::format("bad {} '{}'", what, t));
+    return v;
+  };
+  const int w = parse_size("width"), h = parse_size("height");
+  const std::string_view st = token("scale");
+  double scale = 0;
+  const auto [end, ec] = std::from_chars(st.data(), st.data() + st.size(), scale);
+  if (ec != std::errc() || end != st.data() + st.size() || scale == 0 || !std::isfinite(scale))
+    bad(fmt::format("bad scale '{}'", st));
+  if (pos >= b.size() || !is_space(b[pos])) bad("expected a newline after the scale");
+  ++pos;  // exactly one whitespace byte separates header and data
+
+  const size_t row_bytes = size_t(w) * size_t(channels) * 4, expected = row_bytes * size_t(h);
+  if (b.size() - pos < expected)
+    fail(path, fmt::format("truncated data: expected {} bytes of pixels, found {}", expected, b.size() - pos));
+  const bool little = scale < 0;
+  const float factor = float(std::abs(scale));
+  Image image(w, h);
+  for (int row = 0; row < h; ++row) {
+    const char* src = b.data() + pos + row_bytes * size_t(row);
+    for (int x = 0; x < w; ++x) {
+      Rgb& p = image.at(x, h - 1 - row);  // file row 0 is the bottom one
+      for (int c = 0; c < 3; ++c) {
+        const float v = get_f32(src + 4 * size_t(x * channels + (channels == 3 ? c : 0)), little);
+        p[c] = factor == 1.f ? v : v * factor;  // the usual |scale| 1: bit exact, NaN payloads kept
+      }
+    }
+  }
+  return image;
+}
+
+// 1-4 channels (grey, grey+alpha, RGB, RGBA; alpha ignored) of type T, converted by to_linear.
+template <class T, class F>
+Image image_from_channels(const T* px, int w, int h, int n, F to_linear) {
+  Image image(w, h);
+  for (size_t i = 0; i < image.size(); ++i) {
+    const T* p = px + i * size_t(n);
+    image.pixels[i] = n >= 3 ? Rgb(to_linear(p[0]), to_linear(p[1]), to_linear(p[2])) : Rgb(to_linear(p[0]));
+  }
+  return image;
+}
+
+// Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded.
+// (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
+Image decode_stb(const std::string& path, const std::string& bytes) {
+  if (bytes.size() > size_t(INT_MAX)) fail(path, "file too large");
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int len = int(bytes.size());
+  int w = 0, h = 0, n = 0;
+  auto check = [&](const void* px) {
+    if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+  };
+  if (stbi_is_hdr_from_memory(data, len)) {
+    std::unique_ptr<float, void (*)(void*)> px(stbi_loadf_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
+    check(px.get());
+    return image_from_channels(px.get(), w, h, n, [](float v) { return v; });
+  }
+  if (stbi_is_16_bit_from_memory(data, len)) {
+    std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w, &h, &n, 0),
+                                                 stbi_image_free);
+    check(px.get());
+    return image_from_channels(px.get(), w, h, n, [](stbi_us v) { return linear_from_srgb(v / 65535.f); });
+  }
+  std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
+  check(px.get());
+  float lut[256];
+  for (int i = 0; i < 256; ++i) lut[i] = linear_from_srgb(float(i) / 255.f);
+  return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return lut[v]; });
+}
+
+}  // namespace
+
+ImageFormat image_format_from_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".exr") return ImageFormat::exr;
+  if (ext == ".pfm") return ImageFormat::pfm;
+  if (ext == ".png") return ImageFormat::png;
+  fail(path, "unsupported image extension '" + ext + "' (supported: .exr, .pfm, .png)");
+}
+
+void write_image(const std::string& path, const Image& image) {
+  const ImageFormat format = image_format_from_path(path);
+  if (image.width <= 0 || image.height <= 0)
+    fail(path, fmt::format("cannot write an empty image ({}x{})", image.width, image.height));
+  if (image.pixels.size() != size_t(image.width) * size_t(image.height))
+    fail(path, "pixel count does not match the image size");
+  std::string bytes;
+  try {
+    switch (format) {
+      case ImageFormat::exr: bytes = encode_exr(image); break;
+      case ImageFormat::pfm: bytes = encode_pfm(image); break;
+      case ImageFormat::png: bytes = encode_png(path, image); break;
+    }
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(path, std::string("encoding failed: ") + e.what());
+  }
+  // Temporary file next to the target, renamed into place; removed on any failure.
+  write_file_atomically(path, [&](const std::string& temp) { write_bytes(path, temp, bytes); });
+}
+
+Image read_image(const std::string& path) {
+  const std::string bytes = read_file(path);
+  const std::string ext = lower_extension(path);
+  // The content decides where it can; the extension picks the decoder whose error message fits.
+  const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
+  const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
+  if (exr_magic || (ext == ".exr" && !pfm_magic)) return decode_exr(path, bytes);
+  if (pfm_magic || ext == ".pfm") return decode_pfm(path, bytes);
+  return decode_stb(path, bytes);
+}
+
 }  // namespace pathspace

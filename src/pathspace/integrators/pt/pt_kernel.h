@@ -4,9 +4,12 @@
 //   nee && bsdf_sampling : MIS of light sampling and BSDF sampling (default)
 //   nee only             : emission reached by BSDF rays is ignored except after delta bounces
 //   bsdf_sampling only   : no light sampling; emission found by BSDF rays counts with weight 1
+// The path is split at its selected vertices (common/path_sample.h) so that a path space filter can
+// replace their contributions; PathSample::value() is the plain path-tracing estimate.
 #pragma once
 
 #include "pathspace/integrators/common/dimensions.h"
+#include "pathspace/integrators/common/path_sample.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/lights/light_sampling.h"
@@ -20,16 +23,85 @@ PS_INLINE float combine_mis(const PtSettings& s, float pdf_this, float pdf_other
   if (!(s.nee && s.bsdf_sampling)) return 1.f;
   return mis_weight(s.mis, pdf_this, pdf_other);
 }
+
+// A selected vertex while its path is still being traced.
+struct OpenVertex {
+  FilterVertex geometry;  // p, normals, wo, prev_p, prefix_distance, segments, selected
+  BsdfLayers layers;
+  Rgb throughput;                      // camera to vertex (before its BSDF)
+  Rgb nee[kMaxBsdfLayers];             // next event estimation per layer
+  Rgb continuation[kMaxBsdfLayers];    // f_l |cos| / pdf of the sampled direction per layer
+  Rgb after;                           // radiance gathered after the vertex, relative to it
+};
+
+// Merges all layers into one when layers are not filtered separately.
+PS_INLINE void merge_layers(BsdfLayers* l) {
+  if (l->count < 2) return;
+  l->albedo[0] += l->albedo[1];
+  l->roughness[0] = fminf(l->roughness[0], l->roughness[1]);
+  l->id[0] = kLayerGlossy;
+  l->count = 1;
+}
+
+PS_INLINE bool is_selectable(const BsdfLayers& l, const VertexSelection& s) {
+  if (l.count == 0) return false;
+  for (int i = 0; i < l.count; ++i)
+    if (l.roughness[i] < s.min_roughness) return false;
+  return true;
+}
+
+PS_INLINE bool wants_vertex(const VertexSelection& s, int diffuse_index, int selected) {
+  switch (s.mode) {
+    case VertexSelectionMode::first: return selected == 0;
+    case VertexSelectionMode::nth: return diffuse_index == s.n;
+    case VertexSelectionMode::all: return selected < s.max_vertices && selected < kMaxSelectedVertices;
+  }
+  return false;
+}
+
+PS_INLINE void eval_layers(const Material& m, const BsdfLayers& layers, bool split, const Vec3& wo, const Vec3& wi,
+                           Rgb f[kMaxBsdfLayers]) {
+  if (split) {
+    bsdf_eval_layers(m, layers, wo, wi, TransportMode::radiance, f);
+  } else {
+    f[0] = bsdf_eval(m, wo, wi, TransportMode::radiance);
+  }
+}
+
+// Demodulates the closed vertices into records: contribution = C / albedo, throughput = T albedo.
+PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out) {
+  for (int k = 0; k < count; ++k) {
+    const OpenVertex& v = open[k];
+    for (int l = 0; l < v.layers.count; ++l) {
+      const Rgb a = v.layers.albedo[l];
+      const Rgb c = v.nee[l] + v.continuation[l] * v.after;
+      FilterVertex& r = out->records[out->count++];
+      r = v.geometry;
+      r.layer = v.layers.id[l];
+      r.roughness = v.layers.roughness[l];
+      r.throughput = v.throughput * a;
+      for (int ch = 0; ch < 3; ++ch) r.contribution[ch] = a[ch] > 0.f ? c[ch] / a[ch] : 0.f;
+    }
+  }
+}
 }  // namespace pt_detail
 
 template <typename Tracer>
-PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
-                        const PtSettings& settings, PathCounters* counters) {
+PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
+                         const PtSettings& settings, PathCounters* counters, PathSample* out) {
+  using namespace pt_detail;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
-  Rgb radiance, beta(1.f);
+  const VertexSelection& selection = settings.selection;
+  OpenVertex open[kMaxSelectedVertices];
+  int selected = 0, diffuse_index = 0;
+  Rgb prefix;
+  Rgb* radiance = &prefix;  // where gathered radiance goes: the prefix, or the last selected vertex
+  Rgb beta(1.f);            // throughput relative to that owner
+  Rgb abs_beta(1.f);        // throughput from the camera (Russian roulette)
   bool after_delta = true;  // the camera "bounce" counts as delta: directly seen emission always counts
   float prev_bsdf_pdf = 0.f;
   Vec3 prev_p = ray.o;
+  float path_distance = 0.f, prev_distance = 0.f;
 
   for (int segments = 1;; ++segments) {
     SurfaceHit hit;
@@ -38,25 +110,27 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
       if (scene.environment_light >= 0) {
         const Light& env = scene.lights[scene.environment_light];
         if (after_delta || !settings.nee) {
-          radiance += beta * env.value;
+          *radiance += beta * env.value;
         } else if (settings.bsdf_sampling) {
           const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * uniform_sphere_pdf();
-          radiance += beta * env.value * pt_detail::combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
+          *radiance += beta * env.value * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
         }
       }
       break;
     }
+    prev_distance = path_distance;
+    path_distance += hit.t;
 
     if (hit.light != kNoLight) {
       const Light& light = scene.lights[hit.light];
       const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
       if (!is_black(le)) {
         if (after_delta || !settings.nee) {
-          radiance += beta * le;
+          *radiance += beta * le;
         } else if (settings.bsdf_sampling) {
           const float light_pdf_w =
               scene.light_selection.probability(uint32_t(hit.light)) * light_pdf(scene, light, prev_p, hit.p, hit.ng);
-          radiance += beta * le * pt_detail::combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
+          *radiance += beta * le * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
         }
       }
     }
@@ -66,6 +140,31 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t v = uint32_t(segments - 1);
+
+    // Vertex selection for filtering.
+    OpenVertex* sel = nullptr;
+    BsdfLayers layers = bsdf_layers(mat);
+    if (!selection.split_layers) merge_layers(&layers);
+    if (is_selectable(layers, selection)) {
+      ++diffuse_index;
+      if (wants_vertex(selection, diffuse_index, selected)) {
+        sel = &open[selected];
+        FilterVertex& g = sel->geometry;
+        g.p = hit.p;
+        g.ng = hit.ng;
+        g.ns = hit.ns;
+        g.wo = -ray.d;
+        g.prev_p = prev_p;
+        g.prefix_distance = prev_distance;
+        g.segments = uint8_t(segments);
+        g.selected = uint8_t(selected);
+        sel->layers = layers;
+        sel->throughput = abs_beta;
+        for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
+        sel->after = Rgb();
+        ++selected;
+      }
+    }
 
     // Next event estimation: one light, one point on it.
     if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat)) {
@@ -83,8 +182,15 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
           ++counters->shadow_rays;
           if (!tracer.occluded(shadow)) {
             const float pdf_light = select_prob * ls.pdf_w;
-            const float w = ls.delta ? 1.f : pt_detail::combine_mis(settings, pdf_light, bsdf_pdf(mat, wo, wi, TransportMode::radiance));
-            radiance += beta * f * ls.li * (fabsf(wi.z) * w / pdf_light);
+            const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, bsdf_pdf(mat, wo, wi, TransportMode::radiance));
+            const float scale = fabsf(wi.z) * w / pdf_light;
+            if (sel) {
+              Rgb fl[kMaxBsdfLayers];
+              eval_layers(mat, layers, selection.split_layers, wo, wi, fl);
+              for (int l = 0; l < layers.count; ++l) sel->nee[l] = fl[l] * ls.li * scale;
+            } else {
+              *radiance += beta * f * ls.li * scale;
+            }
           }
         }
       }
@@ -94,20 +200,41 @@ PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Samp
     BsdfSample bs;
     const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
     if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) break;
-    beta *= bs.weight;
-    if (is_black(beta)) break;
+    abs_beta *= bs.weight;
+    if (sel) {
+      Rgb fl[kMaxBsdfLayers];
+      eval_layers(mat, layers, selection.split_layers, wo, bs.wi, fl);
+      for (int l = 0; l < layers.count; ++l) sel->continuation[l] = fl[l] * (fabsf(bs.wi.z) / bs.pdf_w);
+      radiance = &sel->after;
+      beta = Rgb(1.f);
+    } else {
+      beta *= bs.weight;
+    }
+    if (is_black(abs_beta)) break;
     after_delta = bs.delta;
     prev_bsdf_pdf = bs.pdf_w;
     prev_p = hit.p;
 
     if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
-      const float q = fminf(1.f, max_component(beta));
+      const float q = fminf(1.f, max_component(abs_beta));
       if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) break;
       beta *= 1.f / q;
+      abs_beta *= 1.f / q;
     }
     ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
   }
-  return radiance;
+  out->prefix = prefix;
+  out->count = 0;
+  close_vertices(open, selected, out);
+}
+
+// Plain path tracing: the unfiltered estimate of one path.
+template <typename Tracer>
+PS_HD Rgb pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const Ray& ray,
+                        const PtSettings& settings, PathCounters* counters) {
+  PathSample sample;
+  pt_trace_path(scene, tracer, sampler, ray, settings, counters, &sample);
+  return sample.value();
 }
 
 }  // namespace pathspace

@@ -1,6 +1,7 @@
 // Path tracing parameters and their defaults.
 #pragma once
 
+#include "pathspace/integrators/common/vertex_selection.h"
 #include "pathspace/sampling/mis.h"
 
 namespace pathspace {
@@ -11,6 +12,7 @@ struct PtSettings {
   bool bsdf_sampling = true;        // count emission found by BSDF-sampled rays (after non-delta bounces)
   MisHeuristic mis = MisHeuristic::power;
   int roulette_start = 3;           // Russian roulette from this many segments on; < 0 disables it
+  VertexSelection selection;        // where the path is split for path space filtering
 };
 
 }  // namespace pathspace

@@ -1,0 +1,55 @@
+#include "progress_reporter.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace pathspace::cli {
+
+namespace {
+
+std::string format_duration(double seconds) {
+  const auto s = static_cast<long>(std::max(0.0, seconds) + 0.5);
+  if (s >= 3600) return fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60);
+  return fmt::format("{}:{:02}", s / 60, s % 60);
+}
+
+}  // namespace
+
+ProgressReporter::ProgressReporter(std::FILE* out, uint64_t pixels, bool quiet)
+    : out_(out), pixels_(pixels), quiet_(quiet), tty_(::isatty(::fileno(out)) != 0) {}
+
+void ProgressReporter::update(const RenderProgress& p) {
+  if (quiet_) return;
+  const double percent = 100.0 * p.fraction;
+  const double samples_per_s = p.elapsed_s > 0 ? double(p.passes_done) * double(pixels_) / p.elapsed_s : 0.0;
+  const double mrays_per_s = p.elapsed_s > 0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0;
+  const double eta = p.fraction > 0 ? p.elapsed_s * (1.0 - p.fraction) / p.fraction : 0.0;
+  const std::string numbers =
+      fmt::format("{:5.1f}%  {} elapsed, ETA {}  {:.3g} Msamples/s  {:.1f} Mrays/s  ({} spp)", percent,
+                  format_duration(p.elapsed_s), format_duration(eta), samples_per_s * 1e-6, mrays_per_s,
+                  p.passes_done);
+  if (tty_) {
+    constexpr int kBarWidth = 30;
+    const int filled = std::clamp(static_cast<int>(p.fraction * kBarWidth + 0.5), 0, kBarWidth);
+    fmt::print(out_, "\r[{}{}] {}\x1b[K", std::string(size_t(filled), '#'), std::string(size_t(kBarWidth - filled), '.'),
+               numbers);
+    drew_ = true;
+  } else if (percent + 1e-9 >= next_plain_percent_) {
+    fmt::print(out_, "{}\n", numbers);
+    while (next_plain_percent_ <= percent + 1e-9) next_plain_percent_ += 25;
+  }
+  std::fflush(out_);
+}
+
+void ProgressReporter::finish() {
+  if (quiet_ || !drew_) return;
+  fmt::print(out_, "\n");
+  std::fflush(out_);
+  drew_ = false;
+}
+
+}  // namespace pathspace::cli

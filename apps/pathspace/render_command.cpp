@@ -1,0 +1,146 @@
+#include "render_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/render.h"
+#include "pathspace/io/atomic_file.h"
+#include "pathspace/io/image_io.h"
+#include "pathspace/scene/builtin_scenes.h"
+#include "progress_reporter.h"
+#include "render_stats_json.h"
+#include "usage_error.h"
+
+namespace pathspace::cli {
+
+namespace {
+
+constexpr int kMaxResolution = 16384;
+constexpr const char* kDefaultOutputFolder = "pathspace-out";
+
+struct Resolution {
+  int width = 512, height = 512;
+};
+
+Resolution parse_resolution(const std::string& text) {
+  Resolution r;
+  if (text.empty()) return r;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &r.width, &x, &r.height, &extra) != 3 || (x != 'x' && x != 'X'))
+    throw UsageError("--resolution expects WxH, e.g. 512x512, not '" + text + "'");
+  if (r.width < 1 || r.height < 1 || r.width > kMaxResolution || r.height > kMaxResolution)
+    throw UsageError(fmt::format("--resolution {}: width and height must be between 1 and {}", text, kMaxResolution));
+  return r;
+}
+
+// The output files: --out as given, else pathspace-out/<scene>.exr and .png.
+std::vector<std::string> output_paths(const RenderOptions& o, const std::string& scene_name) {
+  if (!o.outputs.empty()) return o.outputs;
+  std::filesystem::create_directories(kDefaultOutputFolder);
+  const std::string base = std::string(kDefaultOutputFolder) + "/" + scene_name;
+  return {base + ".exr", base + ".png"};
+}
+
+void check_integrator(const std::string& name) {
+  const auto& names = integrator_names();
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  throw UsageError(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(names, ", ")));
+}
+
+IntegratorSettings integrator_settings(const RenderOptions& o) {
+  IntegratorSettings s;
+  s.seed = o.seed;
+  s.pt.max_segments = o.max_depth > 0 ? o.max_depth : -1;
+  s.pt.nee = !o.no_nee;
+  s.pt.bsdf_sampling = !o.no_bsdf_sampling;
+  s.pt.mis = o.mis == "balance" ? MisHeuristic::balance : MisHeuristic::power;
+  if (!s.pt.nee && !s.pt.bsdf_sampling) throw UsageError("--no-nee and --no-bsdf-sampling together would render black");
+  return s;
+}
+
+}  // namespace
+
+CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
+  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes')")
+      ->default_str(kDefaultSceneName);
+  cmd->add_option("-i,--integrator", o->integrator, "Integrator (see 'pathspace info --integrators')")
+      ->capture_default_str();
+  CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16)")->check(CLI::Range(1u, 1u << 24));
+  cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp")
+      ->check(CLI::Range(1e-3, 1e7))
+      ->excludes(spp);
+  cmd->add_option("-r,--resolution", o->resolution, "Image size WxH (default 512x512)");
+  cmd->add_option("-d,--max-depth", o->max_depth, "Path length limit in segments, camera ray included (default: the scene's)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
+  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)");
+  cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+  cmd->add_flag("--no-nee", o->no_nee, "PT: no next event estimation (BSDF sampling only)");
+  cmd->add_flag("--no-bsdf-sampling", o->no_bsdf_sampling, "PT: emission only through next event estimation");
+  cmd->add_option("--mis", o->mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
+  cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
+      ->check(CLI::IsMember({"uniform", "power"}))
+      ->capture_default_str();
+  return cmd;
+}
+
+int run_render_command(const RenderOptions& o) {
+  // Validate everything before the (possibly long) render.
+  const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
+  const BuiltinSceneInfo* info = find_builtin_scene(scene_name);
+  if (!info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list");
+  check_integrator(o.integrator);
+  const Resolution res = parse_resolution(o.resolution);
+  const IntegratorSettings settings = integrator_settings(o);
+  const std::vector<std::string> outputs = output_paths(o, info->name);
+  for (const std::string& path : outputs) {
+    try {
+      image_format_from_path(path);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    check_output_writable(path);
+  }
+  if (!o.stats_path.empty()) check_output_writable(o.stats_path);
+
+  Scene scene = make_builtin_scene(info->name, res.width, res.height);
+  scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
+  scene.finalize();
+  Accel accel(scene);
+  Film film(res.width, res.height);
+
+  RenderRequest request;
+  request.integrator = o.integrator;
+  request.spp = o.spp > 0 ? o.spp : 16;
+  request.time_limit_s = o.time_s;
+  request.threads = o.threads;
+  request.settings = settings;
+  ProgressReporter progress(stdout, film.pixel_count(), o.quiet);
+  request.on_progress = [&](const RenderProgress& p) { progress.update(p); };
+  if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", info->name, info->id, res.width, res.height, o.integrator);
+  const RenderStats stats = render(scene, accel, request, film);
+  progress.finish();
+
+  const Image image = film.mean();
+  for (const std::string& path : outputs) write_image(path, image);
+  RenderRunInfo run{info->name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
+                    fmt::format("{}", fmt::join(outputs, ","))};
+  if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
+  if (!o.quiet) {
+    fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
+               stats.paths_per_s(), stats.threads);
+    if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
+    fmt::print("\nwrote {}\n", fmt::join(outputs, ", "));
+  }
+  return 0;
+}
+
+}  // namespace pathspace::cli

@@ -1,0 +1,36 @@
+// `pathspace render`: options, their validation, and the run (scene -> render -> files).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace pathspace::cli {
+
+struct RenderOptions {
+  std::string scene;  // built-in scene name or id
+  std::string integrator = "pt";
+  uint32_t spp = 0;        // 0: unset
+  double time_s = 0.0;     // 0: unset
+  std::string resolution;  // "WxH"; empty: 512x512
+  int max_depth = 0;       // path segments; 0: the scene's limit
+  uint64_t seed = 0;
+  int threads = 0;
+  std::vector<std::string> outputs;
+  std::string stats_path;
+  bool quiet = false;
+  // Integrator switches (mostly for experiments and tests).
+  bool no_nee = false;
+  bool no_bsdf_sampling = false;
+  std::string mis = "power";
+  std::string light_selection = "uniform";
+};
+
+// Adds the `render` subcommand to app; the options are stored in *options.
+CLI::App* add_render_command(CLI::App& app, RenderOptions* options);
+// Runs the command. Throws UsageError for invalid options, pathspace::Error for failures.
+int run_render_command(const RenderOptions& options);
+
+}  // namespace pathspace::cli

@@ -1,0 +1,30 @@
+#include "render_stats_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace pathspace::cli {
+
+std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run) {
+  nlohmann::ordered_json j;
+  j["scene"] = run.scene;
+  j["integrator"] = stats.integrator;
+  j["width"] = run.width;
+  j["height"] = run.height;
+  j["max_segments"] = run.max_segments;
+  j["spp"] = stats.spp;
+  j["wall_time_s"] = stats.wall_s;
+  j["rays"] = stats.rays;
+  j["shadow_rays"] = stats.shadow_rays;
+  j["paths"] = stats.paths;
+  j["mrays_per_s"] = stats.mrays_per_s();
+  j["paths_per_s"] = stats.paths_per_s();
+  j["samples_per_s"] = stats.wall_s > 0 ? double(stats.spp) * run.width * run.height / stats.wall_s : 0.0;
+  j["dropped_nan_inf_samples"] = stats.dropped_samples;
+  j["threads"] = stats.threads;
+  j["seed"] = stats.seed;
+  j["build_type"] = build_type();
+  j["outputs"] = run.outputs;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace pathspace::cli

@@ -1,0 +1,23 @@
+// Which vertices of a camera path are handed to a path space filter (Binder et al. 2021, sec. 3 and
+// fig. 10): the first sufficiently diffuse vertex, the n-th one (final-gather style), or several.
+// A vertex is "sufficiently diffuse" when its material is filterable (materials/bsdf_layers.h) and
+// every layer is at least min_roughness rough; delta surfaces are never selected.
+#pragma once
+
+#include <cstdint>
+
+namespace pathspace {
+
+inline constexpr int kMaxSelectedVertices = 4;
+
+enum class VertexSelectionMode : uint8_t { first, nth, all };
+
+struct VertexSelection {
+  VertexSelectionMode mode = VertexSelectionMode::first;
+  int n = 1;                   // nth: the n-th sufficiently diffuse vertex (1-based)
+  int max_vertices = 2;        // all: at most this many per path (<= kMaxSelectedVertices)
+  float min_roughness = 0.1f;  // Phong exponent 90 ~ 0.15, Lambert = 1
+  bool split_layers = true;    // one average per material layer (sec. 3.1.2); false: one merged layer
+};
+
+}  // namespace pathspace

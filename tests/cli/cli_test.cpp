@@ -1,0 +1,172 @@
+// Runs the pathspace binary as a user would: bad input must give a non-zero exit, one clear line on
+// stderr and no output file; a good run must write every requested file and a parsable --stats JSON.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pathspace-cli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `pathspace ARGS` inside the test's own folder.
+  CliResult run(const std::string& args) {
+    const std::string cmd = "cd '" + dir_.string() + "' && '" PATHSPACE_BINARY "' " + args + " >stdout.txt 2>stderr.txt";
+    const int status = std::system(cmd.c_str());
+    CliResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_all(dir_ / "stdout.txt");
+    r.err = read_all(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    return r;
+  }
+
+  // Files the run left in the test folder (recursively).
+  int file_count() const {
+    int n = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir_)) n += e.is_regular_file();
+    return n;
+  }
+
+  void expect_usage_error(const std::string& args, const std::string& message_part) {
+    SCOPED_TRACE(args);
+    const CliResult r = run(args);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(message_part), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("run '"), std::string::npos) << "no usage hint: " << r.err;
+    EXPECT_EQ(file_count(), 0) << "a failed run left files behind";
+  }
+
+  fs::path dir_;
+};
+
+constexpr const char* kSmall = "--resolution 16x12 --spp 2 --quiet";
+
+TEST_F(CliTest, UnknownSceneIsAUsageError) { expect_usage_error(std::string("render no-such-scene ") + kSmall, "no-such-scene"); }
+
+TEST_F(CliTest, UnknownIntegratorIsAUsageError) {
+  expect_usage_error(std::string("render --integrator nope ") + kSmall, "unknown integrator 'nope'");
+}
+
+TEST_F(CliTest, BadNumbersAreUsageErrors) {
+  expect_usage_error("render --spp 0", "--spp");
+  expect_usage_error("render --spp abc", "--spp");
+  expect_usage_error("render --spp -3", "--spp");
+  expect_usage_error("render --time 0", "--time");
+  expect_usage_error("render --resolution 64", "--resolution");
+  expect_usage_error("render --resolution 64x0", "--resolution");
+  expect_usage_error("render --resolution 64x64x2", "--resolution");
+  expect_usage_error("render --threads -1", "--threads");
+  expect_usage_error("render --max-depth 0", "--max-depth");
+  expect_usage_error("render --spp 4 --time 3", "excludes");
+  expect_usage_error("render --mis bogus", "--mis");
+  expect_usage_error("render --no-such-flag", "no-such-flag");
+}
+
+TEST_F(CliTest, UnsupportedOutputFormatIsAUsageError) { expect_usage_error(std::string("render -o out.jpg ") + kSmall, "out.jpg"); }
+
+TEST_F(CliTest, UnwritableOutputFailsBeforeRendering) {
+  for (const std::string out : {"missing-folder/out.exr", "blocker/out.png"}) {
+    SCOPED_TRACE(out);
+    std::ofstream(dir_ / "blocker") << "a file where a folder should be";
+    const CliResult r = run(std::string("render -o ") + out + " " + kSmall);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
+    EXPECT_EQ(file_count(), 1) << "only the blocker file may exist";
+    fs::remove(dir_ / "blocker");
+  }
+}
+
+TEST_F(CliTest, UnwritableStatsFileFailsBeforeRendering) {
+  const CliResult r = run(std::string("render -o img.exr --stats missing/stats.json ") + kSmall);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(file_count(), 0);
+}
+
+TEST_F(CliTest, RendersRequestedFilesAndStats) {
+  const CliResult r = run(std::string("render e_c -o a.exr -o a.pfm -o a.png --stats s.json --seed 7 --threads 2 ") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* f : {"a.exr", "a.pfm", "a.png", "s.json"}) EXPECT_GT(fs::file_size(dir_ / f), 0u) << f;
+  EXPECT_EQ(file_count(), 4) << "temporary files left behind";
+  const auto json = nlohmann::json::parse(read_all(dir_ / "s.json"));
+  EXPECT_EQ(json.at("scene"), "cornell-empty-area");
+  EXPECT_EQ(json.at("integrator"), "pt");
+  EXPECT_EQ(json.at("spp"), 2);
+  EXPECT_EQ(json.at("seed"), 7);
+  EXPECT_EQ(json.at("threads"), 2);
+  EXPECT_GT(json.at("rays").get<uint64_t>(), 16u * 12u * 2u);
+  for (const char* key : {"wall_time_s", "mrays_per_s", "paths_per_s", "dropped_nan_inf_samples", "build_type"})
+    EXPECT_TRUE(json.contains(key)) << key;
+}
+
+TEST_F(CliTest, DefaultOutputIsExrAndPngInPathspaceOut) {
+  const CliResult r = run(kSmall);  // no subcommand arguments beyond options: must still be `render`
+  EXPECT_EQ(r.exit_code, 2);        // options without a command are a usage error
+  const CliResult ok = run(std::string("render ") + kSmall);
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(dir_ / "pathspace-out/cornell-box.exr"));
+  EXPECT_TRUE(fs::exists(dir_ / "pathspace-out/cornell-box.png"));
+}
+
+TEST_F(CliTest, ProgressWithoutTerminalIsPlainLines) {
+  const CliResult r = run("render --resolution 16x16 --spp 8 -o a.exr");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << "a progress bar was drawn into a pipe";
+  EXPECT_NE(r.out.find("100.0%"), std::string::npos) << r.out;
+  EXPECT_LE(count_lines(r.out), 8);
+}
+
+TEST_F(CliTest, InfoListsEveryBuiltinSceneById) {
+  const CliResult r = run("info --scenes");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* id : {"e_c", "e_p", "bs_c", "gbs_c", "glm_c", "gbs_p", "gbs_b", "gbs_s"})
+    EXPECT_NE(r.out.find(id), std::string::npos) << id;
+}
+
+TEST_F(CliTest, HelpOnEveryCommand) {
+  for (const char* args : {"--help", "render --help", "info --help"}) {
+    const CliResult r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << args;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << args;
+  }
+}
+
+}  // namespace
