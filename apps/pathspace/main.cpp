@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "compare_command.h"
 #include "info_command.h"
 #include "render_command.h"
 #include "usage_error.h"
@@ -32,8 +33,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderOptions render_options;
   InfoOptions info_options;
+  CompareOptions compare_options;
   CLI::App* render_cmd = add_render_command(app, &render_options);
   CLI::App* info_cmd = add_info_command(app, &info_options);
+  CLI::App* compare_cmd = add_compare_command(app, &compare_options);
 
   std::string command = "pathspace";
   try {
@@ -43,12 +46,19 @@ int main(int argc, char** argv) {
       return run_render_command(render_options);
     }
     if (info_cmd->parsed()) return run_info_command(info_options);
+    if (compare_cmd->parsed()) {
+      command = "pathspace compare";
+      return run_compare_command(compare_options);
+    }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const std::string sub = render_cmd->parsed() ? " render" : info_cmd->parsed() ? " info" : "";
+    const std::string sub = render_cmd->parsed()    ? " render"
+                            : info_cmd->parsed()    ? " info"
+                            : compare_cmd->parsed() ? " compare"
+                                                    : "";
     fmt::print(stderr, "pathspace{}: error: {} (run 'pathspace{} --help' for usage)\n", sub, one_line(e.what()), sub);
     return kExitUsage;
   } catch (const UsageError& e) {

@@ -60,6 +60,7 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
   s.pt.bsdf_sampling = !o.no_bsdf_sampling;
   s.pt.mis = o.mis == "balance" ? MisHeuristic::balance : MisHeuristic::power;
   if (!s.pt.nee && !s.pt.bsdf_sampling) throw UsageError("--no-nee and --no-bsdf-sampling together would render black");
+  apply_filter_options(o.filter, &s);
   return s;
 }
 
@@ -82,6 +83,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)");
   cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file");
+  cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
   cmd->add_flag("--no-nee", o->no_nee, "PT: no next event estimation (BSDF sampling only)");
   cmd->add_flag("--no-bsdf-sampling", o->no_bsdf_sampling, "PT: emission only through next event estimation");
@@ -89,6 +91,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
       ->check(CLI::IsMember({"uniform", "power"}))
       ->capture_default_str();
+  add_filter_options(cmd, &o->filter);
   return cmd;
 }
 
@@ -110,6 +113,14 @@ int run_render_command(const RenderOptions& o) {
     check_output_writable(path);
   }
   if (!o.stats_path.empty()) check_output_writable(o.stats_path);
+  if (!o.variance_path.empty()) {
+    try {
+      image_format_from_path(o.variance_path);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    check_output_writable(o.variance_path);
+  }
 
   Scene scene = make_builtin_scene(info->name, res.width, res.height);
   scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
@@ -123,6 +134,7 @@ int run_render_command(const RenderOptions& o) {
   request.time_limit_s = o.time_s;
   request.threads = o.threads;
   request.settings = settings;
+  request.want_aovs = o.filter.aovs;
   ProgressReporter progress(stdout, film.pixel_count(), o.quiet);
   request.on_progress = [&](const RenderProgress& p) { progress.update(p); };
   if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", info->name, info->id, res.width, res.height, o.integrator);
@@ -131,6 +143,17 @@ int run_render_command(const RenderOptions& o) {
 
   const Image image = film.mean();
   for (const std::string& path : outputs) write_image(path, image);
+  std::vector<std::string> written = outputs;
+  if (!o.variance_path.empty()) {
+    write_image(o.variance_path, film.variance_of_mean());
+    written.push_back(o.variance_path);
+  }
+  for (const NamedImage& aov : stats.aovs) {
+    const std::filesystem::path first(outputs.front());
+    const std::string path = (first.parent_path() / (first.stem().string() + ".aov-" + aov.name + ".exr")).string();
+    write_image(path, aov.image);
+    written.push_back(path);
+  }
   RenderRunInfo run{info->name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
                     fmt::format("{}", fmt::join(outputs, ","))};
   if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
@@ -138,7 +161,7 @@ int run_render_command(const RenderOptions& o) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    fmt::print("\nwrote {}\n", fmt::join(outputs, ", "));
+    fmt::print("\n{}wrote {}\n", stats.report, fmt::join(written, ", "));
   }
   return 0;
 }

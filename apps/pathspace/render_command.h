@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "filter_options.h"
+
 namespace pathspace::cli {
 
 struct RenderOptions {
@@ -20,12 +22,14 @@ struct RenderOptions {
   int threads = 0;
   std::vector<std::string> outputs;
   std::string stats_path;
+  std::string variance_path;  // variance-of-the-mean image
   bool quiet = false;
   // Integrator switches (mostly for experiments and tests).
   bool no_nee = false;
   bool no_bsdf_sampling = false;
   std::string mis = "power";
   std::string light_selection = "uniform";
+  FilterOptions filter;
 };
 
 // Adds the `render` subcommand to app; the options are stored in *options.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pathspace/film/film.h"
+#include "pathspace/filters/filter_settings.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 
@@ -20,6 +21,13 @@ class Scene;
 struct IntegratorSettings {
   uint64_t seed = 0;
   PtSettings pt;
+  FilterSettings filter;
+};
+
+// A named debug image an integrator can provide after rendering (e.g. the filter's voxel ids).
+struct NamedImage {
+  std::string name;
+  Image image;
 };
 
 class Integrator {
@@ -28,6 +36,10 @@ class Integrator {
   virtual const char* name() const = 0;
   // Renders pass `pass` (one sample per pixel for PT) into film; adds to counters.
   virtual void render_pass(uint32_t pass, Film& film, PathCounters& counters) = 0;
+  // Human-readable statistics beyond the common counters (e.g. hash table behaviour); may be empty.
+  virtual std::string report() const { return {}; }
+  // Debug images (AOVs) of the last pass.
+  virtual std::vector<NamedImage> aovs() const { return {}; }
 };
 
 // The integrators selectable by name ("pt").

@@ -48,6 +48,8 @@ RenderStats render(const Scene& scene, const Accel& accel, const RenderRequest& 
   stats.shadow_rays = counters.shadow_rays;
   stats.paths = counters.paths;
   stats.dropped_samples = counters.dropped;
+  stats.report = integrator->report();
+  if (request.want_aovs) stats.aovs = integrator->aovs();
   return stats;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "pathspace/film/film.h"
 #include "pathspace/integrators/integrator.h"
@@ -27,6 +28,7 @@ struct RenderRequest {
   int threads = 0;            // <= 0: all cores
   IntegratorSettings settings;
   std::function<void(const RenderProgress&)> on_progress;  // called after each pass (may be empty)
+  bool want_aovs = false;     // collect the integrator's debug images into RenderStats::aovs
 };
 
 struct RenderStats {
@@ -39,6 +41,8 @@ struct RenderStats {
   uint64_t dropped_samples = 0;
   int threads = 0;
   uint64_t seed = 0;
+  std::string report;             // integrator-specific statistics (e.g. the filter's hash table)
+  std::vector<NamedImage> aovs;   // when requested
   double mrays_per_s() const { return wall_s > 0 ? double(rays) / wall_s * 1e-6 : 0.0; }
   double paths_per_s() const { return wall_s > 0 ? double(paths) / wall_s : 0.0; }
 };

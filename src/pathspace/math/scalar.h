@@ -30,6 +30,8 @@ PS_INLINE float safe_sqrt(float x) { return sqrtf(x > 0.f ? x : 0.f); }
 PS_INLINE float safe_acos(float x) { return acosf(clamp_to(x, -1.f, 1.f)); }
 PS_INLINE float max_of(float a, float b) { return a > b ? a : b; }
 PS_INLINE float min_of(float a, float b) { return a < b ? a : b; }
+PS_INLINE int max_int(int a, int b) { return a > b ? a : b; }
+PS_INLINE int min_int(int a, int b) { return a < b ? a : b; }
 PS_INLINE bool is_finite(float x) { return isfinite(x); }
 PS_INLINE float radians(float deg) { return deg * (kPi / 180.f); }
 

@@ -3,40 +3,110 @@
 #include <atomic>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/filters/hashed_filter.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
 
+namespace {
+
+constexpr size_t kPixelGrain = 256;
+
+// Sums per-chunk counters into the pass totals (one atomic add per chunk).
+struct SharedCounters {
+  std::atomic<uint64_t> rays{0}, shadow_rays{0}, dropped{0};
+  void add(const PathCounters& c) {
+    rays += c.rays;
+    shadow_rays += c.shadow_rays;
+    dropped += c.dropped;
+  }
+  void flush(PathCounters& into, size_t paths) const {
+    into.rays += rays;
+    into.shadow_rays += shadow_rays;
+    into.dropped += dropped;
+    into.paths += paths;
+  }
+};
+
+Ray camera_ray(const SceneView& view, const Sampler& sampler, size_t pixel, int width) {
+  const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
+  const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
+  return view.camera.generate_ray(rx, ry);
+}
+
+}  // namespace
+
 PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings) {}
+    : view_(scene.view()), accel_(accel), settings_(settings) {
+  const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
+  if (settings.filter.kind == FilterKind::hashed) {
+    auto hashed = std::make_unique<HashedFilter>(settings.filter.hashed, scene.camera, pixels);
+    hashed_ = hashed.get();
+    filter_ = std::move(hashed);
+  } else if (settings.filter.force_vertex_buffer) {
+    filter_ = std::make_unique<NoFilter>();
+  }
+}
+
+PtIntegrator::~PtIntegrator() = default;
 
 void PtIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
-  const int width = film.width();
+  if (filter_) {
+    render_filtered(pass, film, counters);
+  } else {
+    render_plain(pass, film, counters);
+  }
+}
+
+void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
-  std::atomic<uint64_t> rays{0}, shadow_rays{0}, dropped{0};
-  parallel_for(n, 256, [&](size_t begin, size_t end) {
+  SharedCounters shared;
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(settings_.seed, pixel, pass);
-      const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
-      const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
-      Rgb value = pt_trace_path(view_, accel_, sampler, view_.camera.generate_ray(rx, ry), settings_.pt, &local);
+      Rgb value = pt_trace_path(view_, accel_, sampler, camera_ray(view_, sampler, pixel, film.width()), settings_.pt, &local);
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
       }
       film.add_sample(uint32_t(pixel), value);
     }
-    rays += local.rays;
-    shadow_rays += local.shadow_rays;
-    dropped += local.dropped;
+    shared.add(local);
   });
-  counters.rays += rays;
-  counters.shadow_rays += shadow_rays;
-  counters.dropped += dropped;
-  counters.paths += n;
+  shared.flush(counters, n);
+}
+
+void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& counters) {
+  const size_t n = film.pixel_count();
+  const int per_path = records_per_path(settings_.pt.selection);
+  if (buffer_.paths() != n || buffer_.records_per_path() != per_path) buffer_.resize(n, per_path);
+  SharedCounters shared;
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+    PathCounters local;
+    PathSample sample;
+    for (size_t pixel = begin; pixel < end; ++pixel) {
+      const Sampler sampler(settings_.seed, pixel, pass);
+      pt_trace_path(view_, accel_, sampler, camera_ray(view_, sampler, pixel, film.width()), settings_.pt, &local, &sample);
+      buffer_.store(pixel, uint32_t(pixel), sample);
+    }
+    shared.add(local);
+  });
+  shared.flush(counters, n);
+  filter_->filter(buffer_, settings_.seed, pass, &filtered_);
+  resolve_filtered_pass(buffer_, filtered_, film, &counters);
+}
+
+std::string PtIntegrator::report() const { return filter_ ? filter_->report() : std::string(); }
+
+std::vector<NamedImage> PtIntegrator::aovs() const {
+  if (!hashed_) return {};
+  return {{"voxel", hashed_->aov(FilterAov::voxel)},
+          {"count", hashed_->aov(FilterAov::count)},
+          {"level", hashed_->aov(FilterAov::level)},
+          {"probes", hashed_->aov(FilterAov::probes)}};
 }
 
 }  // namespace pathspace

@@ -1,0 +1,246 @@
+#include "pathspace/filters/hashed_filter.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "pathspace/base/error.h"
+#include "pathspace/parallel/parallel_for.h"
+
+namespace pathspace {
+
+namespace {
+
+constexpr size_t kGrain = 2048;
+constexpr int64_t kNotInserted = -1;  // probe limit reached
+constexpr int64_t kNotAccumulated = -2;  // contribution not representable (NaN, negative, huge)
+
+double milliseconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Counters gathered per parallel_for chunk and summed once per chunk.
+struct AccumulateCounters {
+  std::atomic<uint64_t> vertices{0}, failures{0}, not_accumulated{0}, probes{0}, probes_max{0};
+  void add(uint64_t v, uint64_t f, uint64_t na, uint64_t p, uint64_t pmax) {
+    vertices += v;
+    failures += f;
+    not_accumulated += na;
+    probes += p;
+    uint64_t seen = probes_max.load();
+    while (pmax > seen && !probes_max.compare_exchange_weak(seen, pmax)) {
+    }
+  }
+};
+
+Rgb voxel_colour(const VoxelKey& k) {
+  const uint64_t h = hash_voxel_key(k, NormalKeyMode::key).index;
+  return {0.1f + 0.9f * bits_to_unit_float(h), 0.1f + 0.9f * bits_to_unit_float(h << 24),
+          0.1f + 0.9f * bits_to_unit_float(mix64(h))};
+}
+
+}  // namespace
+
+HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PinholeCamera& camera, size_t pixels)
+    : settings_(settings),
+      width_(camera.width),
+      height_(camera.height),
+      table_(uint64_t(std::max(1.0, double(settings.table_factor) * double(pixels))), settings.max_probes) {
+  if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
+  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1) throw Error("bin counts must be at least 1");
+  // The projected size of one pixel at distance 1 (sec. 3.1.1: "s-times the projected size of a pixel").
+  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
+  if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
+  stats_.cells = table_.cells();
+  stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0);
+}
+
+VoxelKey HashedFilter::key_of(const VertexBuffer& b, size_t i, uint64_t seed, uint32_t pass) const {
+  // Jitter is a pure function of (seed, pass, record slot): identical for any thread count.
+  const uint64_t h = hash_combine(hash_combine(mix64(seed ^ 0x4a17e5ull), pass), i);
+  const VoxelKeyInput in{b.position[i],        b.geometric_normal[i], b.shading_normal[i], b.incident[i],
+                         b.previous_position[i], b.prefix_distance[i], b.roughness[i],     b.layer[i],
+                         b.selected[i]};
+  return make_voxel_key(settings_.key, in, bits_to_unit_float(h), bits_to_unit_float(mix64(h)));
+}
+
+void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
+  const size_t slots = buffer.paths() * size_t(buffer.records_per_path());
+  keys_.resize(slots);
+  slots_.resize(slots);
+  coarse_slots_.resize(slots);
+  probes_.resize(slots);
+  counts_.resize(slots);
+  filtered->resize(slots);
+
+  auto t0 = std::chrono::steady_clock::now();
+  table_.clear();
+  if (coarse_table_) coarse_table_->clear();
+  stats_.clear_ms += milliseconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  accumulate(buffer, seed, pass);
+  stats_.accumulate_ms += milliseconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  lookup(buffer, filtered);
+  stats_.lookup_ms += milliseconds_since(t0);
+
+  const VoxelTableOccupancy occ = table_.occupancy();
+  stats_.occupied_cells_last = occ.occupied;
+  stats_.expected_fingerprint_collisions_last = occ.expected_fingerprint_collisions;
+  ++stats_.passes;
+
+  first_slot_of_pixel_.assign(size_t(width_) * size_t(height_), UINT32_MAX);
+  for (size_t path = 0; path < buffer.paths(); ++path)
+    if (buffer.count[path] > 0 && buffer.pixel[path] < first_slot_of_pixel_.size())
+      first_slot_of_pixel_[buffer.pixel[path]] = uint32_t(buffer.slot(path, 0));
+}
+
+void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
+  const VoxelHashTableView view = table_.view();
+  const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
+  AccumulateCounters counters;
+  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+    uint64_t vertices = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
+    for (size_t path = begin; path < end; ++path) {
+      for (int r = 0; r < b.count[path]; ++r) {
+        const size_t i = b.slot(path, r);
+        ++vertices;
+        const VoxelKey key = key_of(b, i, seed, pass);
+        keys_[i] = key;
+        probes_[i] = 0;
+        uint64_t fixed[3];
+        if (!to_fixed_point(b.contribution[i], fixed)) {
+          slots_[i] = kNotAccumulated;
+          ++not_accumulated;
+          continue;
+        }
+        const ProbeResult pr = view.find_or_insert(hash_voxel_key(key, settings_.key.normal));
+        probes_[i] = uint16_t(pr.probes);
+        probes += uint64_t(pr.probes);
+        probes_max = std::max(probes_max, uint64_t(pr.probes));
+        slots_[i] = pr.slot;
+        if (pr.slot < 0) {
+          ++failures;
+          continue;
+        }
+        view.add(uint64_t(pr.slot), fixed);
+        if (coarse_table_) {
+          const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key), settings_.key.normal));
+          coarse_slots_[i] = cr.slot;
+          if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
+        }
+      }
+    }
+    counters.add(vertices, failures, not_accumulated, probes, probes_max);
+  });
+  stats_.vertices += counters.vertices;
+  stats_.probe_failures += counters.failures;
+  stats_.not_accumulated += counters.not_accumulated;
+  stats_.probes_total += counters.probes;
+  stats_.probes_max = std::max(stats_.probes_max, counters.probes_max.load());
+}
+
+Rgb HashedFilter::neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const {
+  const VoxelHashTableView view = table_.view();
+  uint64_t sum[3] = {own.sum[0], own.sum[1], own.sum[2]};
+  uint64_t count = own.count;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0 && dz == 0) continue;
+        VoxelKey n = key;
+        n.cell[0] += dx;
+        n.cell[1] += dy;
+        n.cell[2] += dz;
+        ++*lookups;
+        const ProbeResult r = view.find(hash_voxel_key(n, settings_.key.normal));
+        if (r.slot < 0) continue;
+        const VoxelCell& c = view.cells[r.slot];
+        for (int ch = 0; ch < 3; ++ch) sum[ch] += c.sum[ch];
+        count += c.count;
+      }
+  return from_fixed_point(sum, count);
+}
+
+void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
+  const VoxelHashTableView view = table_.view();
+  const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
+  const uint64_t min_count = uint64_t(std::max(0, settings_.min_count));
+  std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0};
+  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+    uint64_t low = 0, neighbour_lookups = 0, multi = 0;
+    for (size_t path = begin; path < end; ++path) {
+      for (int r = 0; r < b.count[path]; ++r) {
+        const size_t i = b.slot(path, r);
+        const int64_t s = slots_[i];
+        if (s < 0) {
+          (*filtered)[i] = b.contribution[i];
+          counts_[i] = 0;
+          continue;
+        }
+        const VoxelCell& cell = view.cells[s];
+        counts_[i] = uint32_t(std::min<uint64_t>(cell.count, UINT32_MAX));
+        Rgb average = from_fixed_point(cell.sum, cell.count);
+        if (cell.count < min_count) {
+          ++low;
+          if (settings_.neighbour_search) {
+            average = neighbourhood_average(keys_[i], cell, &neighbour_lookups);
+          } else if (coarse_table_ && coarse_slots_[i] >= 0) {
+            const VoxelCell& c = coarse.cells[coarse_slots_[i]];
+            if (c.count > cell.count) {
+              average = from_fixed_point(c.sum, c.count);
+              ++multi;
+            }
+          }
+        }
+        (*filtered)[i] = average;
+      }
+    }
+    low_total += low;
+    neighbour_total += neighbour_lookups;
+    multi_total += multi;
+  });
+  stats_.low_count += low_total;
+  stats_.neighbour_lookups += neighbour_total;
+  stats_.multi_level_used += multi_total;
+}
+
+Image HashedFilter::aov(FilterAov which) const {
+  Image img(width_, height_);
+  for (size_t p = 0; p < first_slot_of_pixel_.size() && p < img.size(); ++p) {
+    const uint32_t i = first_slot_of_pixel_[p];
+    if (i == UINT32_MAX) continue;
+    switch (which) {
+      case FilterAov::voxel: img.pixels[p] = voxel_colour(keys_[i]); break;
+      case FilterAov::count: img.pixels[p] = Rgb(float(counts_[i])); break;
+      case FilterAov::level: img.pixels[p] = Rgb(float(keys_[i].level)); break;
+      case FilterAov::probes: img.pixels[p] = Rgb(float(probes_[i])); break;
+    }
+  }
+  return img;
+}
+
+std::string HashedFilter::report() const {
+  const HashedFilterStats& s = stats_;
+  const double passes = double(std::max<uint64_t>(1, s.passes));
+  const double per_vertex_ns = s.vertices ? 1e6 / (double(s.vertices) / passes) : 0.0;
+  std::string r;
+  r += fmt::format("hashed filter: {} passes, {:.3g} vertices per pass, table {} cells ({:.1f} MiB)\n", s.passes,
+                   double(s.vertices) / passes, s.cells, double(s.table_bytes) / (1 << 20));
+  r += fmt::format("  occupancy {:.2f}% (last pass), mean probes {:.3f}, max {}, probe-limit fallbacks {}, not accumulated {}\n",
+                   100.0 * double(s.occupied_cells_last) / double(std::max<uint64_t>(1, s.cells)), s.mean_probes(),
+                   s.probes_max, s.probe_failures, s.not_accumulated);
+  r += fmt::format("  expected fingerprint collisions per pass {:.2e}\n", s.expected_fingerprint_collisions_last);
+  r += fmt::format("  low-count vertices {} ({:.2f}%), neighbour lookups {}, coarse level used {}\n", s.low_count,
+                   s.vertices ? 100.0 * double(s.low_count) / double(s.vertices) : 0.0, s.neighbour_lookups, s.multi_level_used);
+  r += fmt::format("  per pass: clear {:.2f} ms, accumulate {:.2f} ms ({:.1f} ns/vertex), lookup {:.2f} ms ({:.1f} ns/vertex)\n",
+                   s.clear_ms / passes, s.accumulate_ms / passes, s.accumulate_ms * per_vertex_ns / passes,
+                   s.lookup_ms / passes, s.lookup_ms * per_vertex_ns / passes);
+  return r;
+}
+
+}  // namespace pathspace

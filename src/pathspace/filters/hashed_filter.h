@@ -1,0 +1,71 @@
+// Hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1-3.3): per pass, every selected
+// vertex is quantised to a jittered voxel key (algorithm 1), accumulated into a hash table by atomic
+// adds (sec. 3.2), and then looks up its voxel's average; low-count voxels optionally use a
+// neighbourhood search (3.3.1) or a coarser level (3.3.2); vertices that cannot be inserted keep their
+// unfiltered contribution. Statistics and debug images (AOVs) show what the table did.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "pathspace/camera/pinhole.h"
+#include "pathspace/film/image.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/path_space_filter.h"
+#include "pathspace/hashing/voxel_hash_table.h"
+
+namespace pathspace {
+
+struct HashedFilterStats {
+  uint64_t passes = 0, vertices = 0;
+  uint64_t probe_failures = 0;   // table window full: vertex kept its own contribution
+  uint64_t not_accumulated = 0;  // NaN/Inf/negative/huge contribution: kept its own contribution
+  uint64_t probes_total = 0, probes_max = 0;  // over insertions
+  uint64_t low_count = 0;        // vertices whose voxel had fewer than min_count vertices
+  uint64_t neighbour_lookups = 0, multi_level_used = 0;
+  uint64_t occupied_cells_last = 0, cells = 0;
+  double expected_fingerprint_collisions_last = 0.0;
+  double clear_ms = 0, accumulate_ms = 0, lookup_ms = 0;  // summed over passes
+  size_t table_bytes = 0;
+
+  double mean_probes() const { return vertices ? double(probes_total) / double(vertices) : 0.0; }
+};
+
+// Debug images of the first record of each path (sec. 3.1, fig. 3 and 5 style visualisations).
+enum class FilterAov { voxel, count, level, probes };
+
+class HashedFilter final : public PathSpaceFilter {
+ public:
+  HashedFilter(const HashedFilterSettings& settings, const PinholeCamera& camera, size_t pixels);
+
+  const char* name() const override { return "hashed"; }
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  std::string report() const override;
+
+  const HashedFilterStats& stats() const { return stats_; }
+  const VoxelHashTable& table() const { return table_; }
+  // AOV of the last filtered pass (width x height of the camera).
+  Image aov(FilterAov which) const;
+
+  // Key of a record (exposed for tests and benchmarks).
+  VoxelKey key_of(const VertexBuffer& buffer, size_t slot, uint64_t seed, uint32_t pass) const;
+
+ private:
+  void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
+  void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
+  Rgb neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const;
+
+  HashedFilterSettings settings_;
+  int width_, height_;
+  VoxelHashTable table_;
+  std::unique_ptr<VoxelHashTable> coarse_table_;  // multi-level accumulation
+  // Per record slot, for the lookup phase and the AOVs.
+  std::vector<VoxelKey> keys_;
+  std::vector<int64_t> slots_, coarse_slots_;
+  std::vector<uint16_t> probes_;
+  std::vector<uint32_t> counts_;
+  std::vector<uint32_t> first_slot_of_pixel_;
+  HashedFilterStats stats_;
+};
+
+}  // namespace pathspace

@@ -1,0 +1,40 @@
+// PathSpaceFilter: replaces the contributions of a pass's selected vertices by filtered estimates
+// (Binder et al. 2021 sec. 3; Keller et al. 2014). The integrator then resolves each path as
+// prefix + sum throughput * filtered contribution (resolve_filtered_pass).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pathspace/film/film.h"
+#include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/integrators/common/path_counters.h"
+
+namespace pathspace {
+
+class PathSpaceFilter {
+ public:
+  virtual ~PathSpaceFilter() = default;
+  virtual const char* name() const = 0;
+  // filtered[slot] receives the filtered contribution of every valid record slot of `buffer`.
+  // `pass` and `seed` make jitter a pure function of the vertex's path (determinism).
+  virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) = 0;
+  // One-line-per-entry human-readable statistics accumulated over all passes so far.
+  virtual std::string report() const { return {}; }
+};
+
+// `--filter none`: every vertex keeps its own contribution (the image equals plain PT bit for bit).
+class NoFilter final : public PathSpaceFilter {
+ public:
+  const char* name() const override { return "none"; }
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+};
+
+// Adds every path of the pass to the film: prefix + sum_i throughput_i * filtered_i, summed in
+// record order exactly as PathSample::value(). Paths with a NaN/Inf result are dropped and counted.
+void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,
+                           PathCounters* counters);
+
+}  // namespace pathspace

@@ -1,0 +1,44 @@
+// VertexBuffer: the selected vertices of one sample pass in structure-of-arrays form (Binder et al.
+// 2021, sec. 3: "the first phase generates paths and stores all necessary information"). Path p owns
+// the record slots [p * records_per_path, p * records_per_path + count[p]); each path writes only its
+// own slots, so filling is race-free and the layout is independent of the thread schedule.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/integrators/common/path_sample.h"
+
+namespace pathspace {
+
+class VertexBuffer {
+ public:
+  void resize(size_t paths, int records_per_path);
+  size_t paths() const { return prefix.size(); }
+  int records_per_path() const { return records_per_path_; }
+  size_t slot(size_t path, int record) const { return path * size_t(records_per_path_) + size_t(record); }
+  size_t total_records() const;  // valid records (sum of count)
+
+  // Stores one path's sample (drops records beyond records_per_path; the caller sizes it right).
+  void store(size_t path, uint32_t pixel_index, const PathSample& s);
+  // The record in slot i as the kernel produced it.
+  FilterVertex record(size_t i) const;
+
+  // Per path.
+  std::vector<Rgb> prefix;
+  std::vector<uint32_t> pixel;
+  std::vector<uint8_t> count;
+  // Per record slot.
+  std::vector<Vec3> position, geometric_normal, shading_normal, incident, previous_position;
+  std::vector<float> prefix_distance, roughness;
+  std::vector<Rgb> throughput, contribution;
+  std::vector<uint8_t> layer, segments, selected;
+
+ private:
+  int records_per_path_ = 0;
+};
+
+// Slots per path for a vertex selection (vertices per path times layers).
+int records_per_path(const VertexSelection& selection);
+
+}  // namespace pathspace

@@ -1,0 +1,43 @@
+// The owning voxel hash table (host side): storage aligned to cache lines, clearing, and the
+// occupancy/probing statistics the filter reports (Binder et al. 2021, sec. 3.2; 2019 fig. 7).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "pathspace/hashing/voxel_hash_table_view.h"
+
+namespace pathspace {
+
+struct VoxelTableOccupancy {
+  uint64_t cells = 0, occupied = 0;
+  // Expected number of pairs of different keys sharing a fingerprint within one probe window:
+  // sum over windows of C(n_w, 2) / 2^32 (sec. 3.2.1).
+  double expected_fingerprint_collisions = 0.0;
+  double occupancy() const { return cells ? double(occupied) / double(cells) : 0.0; }
+};
+
+class VoxelHashTable {
+ public:
+  // cells is rounded up to a power of two (at least one cache line of fingerprints).
+  VoxelHashTable(uint64_t cells, int max_probes);
+
+  VoxelHashTableView view() const { return view_; }
+  uint64_t cells() const { return view_.mask + 1; }
+  size_t bytes() const { return size_t(cells()) * (sizeof(uint32_t) + sizeof(VoxelCell)); }
+  void clear();  // parallel
+  VoxelTableOccupancy occupancy() const;
+
+ private:
+  struct FreeDeleter {
+    void operator()(void* p) const;
+  };
+  std::unique_ptr<uint32_t[], FreeDeleter> fingerprints_;
+  std::unique_ptr<VoxelCell[], FreeDeleter> cells_;
+  VoxelHashTableView view_;
+};
+
+uint64_t next_power_of_two(uint64_t x);
+
+}  // namespace pathspace

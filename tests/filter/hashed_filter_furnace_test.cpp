@@ -1,0 +1,88 @@
+// Furnace tests with the hashed filter on: in a closed scene with a constant radiance field every
+// vertex's contribution has the same expectation, so a voxel average is unbiased and the image mean
+// must stay exact ("a constant radiance field is a fixed point of averaging"). Voxel averages
+// correlate pixels within a pass, so the samples of the t-test are whole passes (independent seeds).
+// alpha = 0.01, Sidak-corrected over the tests in this file.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "filter_render.h"
+#include "support/statistics.h"
+#include "support/test_scenes.h"
+
+namespace pathspace {
+namespace {
+
+constexpr int kPasses = 40;
+constexpr int kVariants = 9;
+constexpr int kScenes = 2;
+const double kAlpha = testing::sidak(0.01, kVariants * kScenes);
+
+struct Variant {
+  const char* name;
+  std::function<void(IntegratorSettings*)> apply;
+};
+
+const Variant kVariantList[kVariants] = {
+    {"default", [](IntegratorSettings*) {}},
+    {"no_jitter", [](IntegratorSettings* s) { s->filter.hashed.key.jitter = false; }},
+    {"normal_in_fingerprint", [](IntegratorSettings* s) { s->filter.hashed.key.normal = NormalKeyMode::fingerprint; }},
+    {"neighbour_search", [](IntegratorSettings* s) {
+       s->filter.hashed.neighbour_search = true;
+       s->filter.hashed.min_count = 64;
+     }},
+    {"multi_level", [](IntegratorSettings* s) {
+       s->filter.hashed.multi_level = true;
+       s->filter.hashed.min_count = 64;
+     }},
+    {"all_vertices", [](IntegratorSettings* s) {
+       s->pt.selection.mode = VertexSelectionMode::all;
+       s->pt.selection.max_vertices = 3;
+     }},
+    {"second_vertex", [](IntegratorSettings* s) {
+       s->pt.selection.mode = VertexSelectionMode::nth;
+       s->pt.selection.n = 2;
+     }},
+    {"large_voxels", [](IntegratorSettings* s) { s->filter.hashed.key.psf_scale = 40.f; }},
+    {"tiny_table", [](IntegratorSettings* s) {
+       s->filter.hashed.table_factor = 1.f / 64.f;
+       s->filter.hashed.max_probes = 2;
+     }},
+};
+
+// Image means of independent single-pass renders.
+void expect_exact_mean(const Scene& scene, const Variant& v, double expected) {
+  double sum = 0, sum_sq = 0;
+  for (int p = 0; p < kPasses; ++p) {
+    IntegratorSettings s = testing::hashed_settings(1000 + uint64_t(p));
+    v.apply(&s);
+    const auto r = testing::render_with(scene, s, 1);
+    double m = 0;
+    for (const Rgb& px : r.mean.pixels) m += px.r;
+    m /= double(r.mean.size());
+    sum += m;
+    sum_sq += m * m;
+  }
+  const testing::MeanTest t = testing::t_test_mean(sum, sum_sq, kPasses, expected);
+  EXPECT_GT(t.p, kAlpha) << v.name << ": mean " << t.mean << " +- " << t.std_error << ", expected " << expected;
+}
+
+class HashedFilterFurnace : public ::testing::TestWithParam<int> {};
+
+TEST_P(HashedFilterFurnace, ClosedBoxStaysExact) {
+  const float le = 0.8f, albedo = 0.6f;
+  expect_exact_mean(testing::make_furnace_box(le, albedo, 32), kVariantList[GetParam()], le / (1.0 - albedo));
+}
+
+TEST_P(HashedFilterFurnace, SphereWithPointLightStaysExact) {
+  const float radius = 2.f, albedo = 0.5f, intensity = 3.f;
+  const double expected = albedo / kPi * intensity / (radius * radius) / (1.0 - albedo);
+  expect_exact_mean(testing::make_sphere_with_point_light(radius, albedo, intensity, 32), kVariantList[GetParam()], expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, HashedFilterFurnace, ::testing::Range(0, kVariants),
+                         [](const ::testing::TestParamInfo<int>& i) { return std::string(kVariantList[i.param].name); });
+
+}  // namespace
+}  // namespace pathspace
