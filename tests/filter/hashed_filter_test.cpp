@@ -16,6 +16,7 @@ using testing::hashed_settings;
 using testing::render_with;
 
 struct SelectionCase {
+  const char* name;
   const char* scene;
   VertexSelectionMode mode;
   int n;
@@ -43,11 +44,12 @@ TEST_P(FilterNone, EqualsPlainPathTracingBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Selections, FilterNone,
-                         ::testing::Values(SelectionCase{"cornell-box", VertexSelectionMode::first, 1, true},
-                                           SelectionCase{"gbs_c", VertexSelectionMode::first, 1, true},
-                                           SelectionCase{"gbs_c", VertexSelectionMode::first, 1, false},
-                                           SelectionCase{"gbs_c", VertexSelectionMode::nth, 2, true},
-                                           SelectionCase{"gbs_b", VertexSelectionMode::all, 3, true}));
+                         ::testing::Values(SelectionCase{"bs_c_first", "cornell-box", VertexSelectionMode::first, 1, true},
+                                           SelectionCase{"gbs_c_first", "gbs_c", VertexSelectionMode::first, 1, true},
+                                           SelectionCase{"gbs_c_merged_layers", "gbs_c", VertexSelectionMode::first, 1, false},
+                                           SelectionCase{"gbs_c_second", "gbs_c", VertexSelectionMode::nth, 2, true},
+                                           SelectionCase{"gbs_b_all3", "gbs_b", VertexSelectionMode::all, 3, true}),
+                         [](const ::testing::TestParamInfo<SelectionCase>& i) { return std::string(i.param.name); });
 
 TEST(HashedFilter, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 64, 48);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "pathspace/sampling/warps.h"
 #include "support/chi2.h"
@@ -26,6 +27,7 @@ testing::Chi2Options options(const char* name, uint64_t seed) {
 }
 
 void expect_pass(const testing::Chi2Result& r) {
+  std::printf("chi2 %.1f dof %.0f p %.4f\n", r.statistic, r.dof, r.p_value);
   EXPECT_TRUE(r.passed(kAlpha)) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.p_value << " < "
                                 << kAlpha << " " << r.error << "; evidence: " << r.evidence;
 }

@@ -1,4 +1,4 @@
-// Chi-square goodness-of-fit tests of sampling routines against their densities (../notes/testing.md,
+// Chi-square goodness-of-fit tests of sampling routines against their densities (testing notes,
 // after Mitsuba's chi2.py): samples are binned on a 2D grid, expected counts come from adaptive
 // Simpson integration of the density over each bin, cells with expected count < 5 are pooled, and
 // a sample in a cell of zero expected mass fails at once. Extra outcomes (discrete lobes, sample
@@ -22,9 +22,10 @@ struct Chi2Result {
   bool passed(double alpha) const { return error.empty() && p_value >= alpha; }
 };
 
-// Pearson chi-square with pooling of cells whose expected count is below min_expected.
+// Pearson chi-square with pooling of cells whose expected count is below min_expected. An expected
+// count's uncertainty d (e.g. quadrature error; may be empty) widens its cell's variance to e + d^2.
 Chi2Result chi2_test(const std::vector<double>& observed, const std::vector<double>& expected,
-                     double min_expected = 5.0);
+                     const std::vector<double>& uncertainty = {}, double min_expected = 5.0);
 
 // A rectangle [x0, x1) x [y0, y1) split into nx * ny bins.
 struct Grid2 {
@@ -34,12 +35,15 @@ struct Grid2 {
   int bin(double x, double y) const;  // -1 outside
 };
 
-// Integral of density(x, y) over every bin (adaptive Simpson to a relative tolerance per bin, or
-// the absolute one where the bin is nearly empty; depth is capped for jumps inside bins). The
-// density is never evaluated on a bin's edge (points are nudged inwards), so a jump that lies on
-// an edge costs no accuracy.
-std::vector<double> integrate_bins(const Grid2& grid, const std::function<double(double, double)>& density,
-                                   double rel_tolerance = 1e-5, double abs_tolerance = 1e-11);
+// Integral of density(x, y) over every bin and an estimate of its error: adaptive Simpson
+// to a relative tolerance per bin (or the absolute one where the bin is nearly empty), depth capped
+// for jumps inside bins. The density is never evaluated on a bin's edge, so a jump that lies on an
+// edge costs no accuracy. min_depth forces uniform refinement (for slivers of support).
+struct BinIntegrals {
+  std::vector<double> mass, error;
+};
+BinIntegrals integrate_bins(const Grid2& grid, const std::function<double(double, double)>& density,
+                            double rel_tolerance = 1e-4, double abs_tolerance = 1e-11, int min_depth = 1);
 
 // What one call of a sampler produced.
 struct Outcome {

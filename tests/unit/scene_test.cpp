@@ -72,7 +72,9 @@ TEST(Accel, HitsBoxWallsAndSpheresFromBothSides) {
   for (int i = 0; i < 3; ++i) {
     SurfaceHit single;
     EXPECT_EQ(found[i], accel.intersect(rays[i], &single));
-    if (found[i]) EXPECT_EQ(hits[i].t, single.t);
+    if (found[i]) {
+      EXPECT_EQ(hits[i].t, single.t);
+    }
   }
 }
 

@@ -57,6 +57,11 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PinholeCa
   stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0);
 }
 
+void HashedFilter::reset_stats() {
+  const HashedFilterStats fresh{.cells = stats_.cells, .table_bytes = stats_.table_bytes};
+  stats_ = fresh;
+}
+
 VoxelKey HashedFilter::key_of(const VertexBuffer& b, size_t i, uint64_t seed, uint32_t pass) const {
   // Jitter is a pure function of (seed, pass, record slot): identical for any thread count.
   const uint64_t h = hash_combine(hash_combine(mix64(seed ^ 0x4a17e5ull), pass), i);
@@ -99,26 +104,68 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
       first_slot_of_pixel_[buffer.pixel[path]] = uint32_t(buffer.slot(path, 0));
 }
 
+// Per-thread combining of consecutive vertices that fall into the same voxel: camera paths are
+// processed in scanline order, so neighbouring vertices usually share a voxel (tens of vertices per
+// voxel by design). Their sums are combined locally and added to the table with one set of atomics
+// when the entry is evicted; integer sums make the result identical to adding one by one.
+struct LocalVoxelCache {
+  static constexpr int kEntries = 32;
+  struct Entry {
+    uint64_t index = 0;
+    uint32_t fingerprint = kEmptyFingerprint;
+    int64_t slot = -1;
+    uint64_t sum[3] = {0, 0, 0};
+    uint64_t count = 0;
+  };
+  Entry entries[kEntries];
+
+  Entry& entry_for(const VoxelHash& h) { return entries[(h.index ^ (h.index >> 17)) & (kEntries - 1)]; }
+  static bool holds(const Entry& e, const VoxelHash& h) {
+    return e.fingerprint == h.fingerprint && e.index == h.index && e.fingerprint != kEmptyFingerprint;
+  }
+  static void flush(const VoxelHashTableView& table, Entry& e) {
+    if (e.count > 0) {
+      VoxelCell& c = table.cells[e.slot];
+      for (int i = 0; i < 3; ++i) atomic_fetch_add(&c.sum[i], e.sum[i]);
+      atomic_fetch_add(&c.count, e.count);
+    }
+    e = Entry{};
+  }
+  void flush_all(const VoxelHashTableView& table) {
+    for (Entry& e : entries) flush(table, e);
+  }
+};
+
 void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   AccumulateCounters counters;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
-    for (size_t path = begin; path < end; ++path) {
-      for (int r = 0; r < b.count[path]; ++r) {
-        const size_t i = b.slot(path, r);
-        ++vertices;
-        const VoxelKey key = key_of(b, i, seed, pass);
-        keys_[i] = key;
-        probes_[i] = 0;
-        uint64_t fixed[3];
-        if (!to_fixed_point(b.contribution[i], fixed)) {
-          slots_[i] = kNotAccumulated;
-          ++not_accumulated;
+    LocalVoxelCache local;
+    // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
+    // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
+    // is memory bound; ../shared/notes/performance.md).
+    constexpr int kBatch = 16;
+    size_t batch[kBatch];
+    VoxelHash hashes[kBatch];
+    uint64_t fixed_batch[kBatch][3];
+    int n = 0;
+    auto add_to_entry = [](LocalVoxelCache::Entry& e, const uint64_t fixed[3]) {
+      for (int c = 0; c < 3; ++c) e.sum[c] += fixed[c];
+      ++e.count;
+    };
+    auto process_batch = [&] {
+      for (int j = 0; j < n; ++j) {
+        const size_t i = batch[j];
+        LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
+        if (LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
+          slots_[i] = e.slot;
+          probes_[i] = 0;
+          add_to_entry(e, fixed_batch[j]);
           continue;
         }
-        const ProbeResult pr = view.find_or_insert(hash_voxel_key(key, settings_.key.normal));
+        const ProbeResult pr = view.find_or_insert(hashes[j]);
         probes_[i] = uint16_t(pr.probes);
         probes += uint64_t(pr.probes);
         probes_max = std::max(probes_max, uint64_t(pr.probes));
@@ -127,14 +174,50 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           ++failures;
           continue;
         }
-        view.add(uint64_t(pr.slot), fixed);
+        LocalVoxelCache::flush(view, e);
+        e.index = hashes[j].index;
+        e.fingerprint = hashes[j].fingerprint;
+        e.slot = pr.slot;
+        add_to_entry(e, fixed_batch[j]);
+      }
+      n = 0;
+    };
+    for (size_t path = begin; path < end; ++path) {
+      for (int r = 0; r < b.count[path]; ++r) {
+        const size_t i = b.slot(path, r);
+        ++vertices;
+        keys_[i] = key_of(b, i, seed, pass);
+        uint64_t fixed[3];
+        if (!to_fixed_point(b.contribution[i], fixed)) {
+          slots_[i] = kNotAccumulated;
+          probes_[i] = 0;
+          ++not_accumulated;
+          continue;
+        }
         if (coarse_table_) {
-          const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key), settings_.key.normal));
+          const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(keys_[i]), settings_.key.normal));
           coarse_slots_[i] = cr.slot;
           if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
         }
+        const VoxelHash h = hash_voxel_key(keys_[i], settings_.key.normal);
+        LocalVoxelCache::Entry& e = local.entry_for(h);
+        if (LocalVoxelCache::holds(e, h)) {
+          slots_[i] = e.slot;
+          probes_[i] = 0;
+          add_to_entry(e, fixed);
+          continue;
+        }
+        const uint64_t home = h.index & view.mask;
+        __builtin_prefetch(&view.fingerprints[home], 1, 3);
+        __builtin_prefetch(&view.cells[home], 1, 3);
+        hashes[n] = h;
+        for (int c = 0; c < 3; ++c) fixed_batch[n][c] = fixed[c];
+        batch[n++] = i;
+        if (n == kBatch) process_batch();
       }
     }
+    process_batch();
+    local.flush_all(view);
     counters.add(vertices, failures, not_accumulated, probes, probes_max);
   });
   stats_.vertices += counters.vertices;

@@ -43,6 +43,7 @@ class HashedFilter final : public PathSpaceFilter {
   std::string report() const override;
 
   const HashedFilterStats& stats() const { return stats_; }
+  void reset_stats();
   const VoxelHashTable& table() const { return table_; }
   // AOV of the last filtered pass (width x height of the camera).
   Image aov(FilterAov which) const;

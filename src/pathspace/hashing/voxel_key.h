@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/hash.h"
@@ -59,15 +60,27 @@ PS_INLINE uint16_t octahedral_bin(const Vec3& v, int bins) {
   return uint16_t(1 + iu * bins + iw);
 }
 
-// Level of detail: the power-of-two voxel edge nearest to psf_scale projected pixels at distance d.
+// Level of detail: the power-of-two voxel edge nearest to psf_scale projected pixels at distance d,
+// i.e. round(log2(target)) = floor(log2(target * sqrt 2)), read off the float's exponent bits (this
+// runs for every vertex; log2f was a visible part of the filter's cost).
 PS_INLINE int level_of_detail(const VoxelKeySettings& s, float distance) {
-  const float target = s.psf_scale * s.pixel_angle * fmaxf(distance, 1e-6f);
-  return max_int(-60, min_int(60, int(floorf(log2f(target) + 0.5f))));
+  const float target = s.psf_scale * s.pixel_angle * fmaxf(distance, 1e-6f) * 1.41421356f;
+  uint32_t bits;
+  memcpy(&bits, &target, sizeof bits);
+  return max_int(-60, min_int(60, int((bits >> 23) & 0xffu) - 127));
 }
 
-PS_INLINE float level_edge(int level) { return ldexpf(1.f, level); }
+// 2^level for |level| <= 126, built from the exponent bits.
+PS_INLINE float power_of_two(int level) {
+  const uint32_t bits = uint32_t(127 + level) << 23;
+  float f;
+  memcpy(&f, &bits, sizeof f);
+  return f;
+}
 
-PS_INLINE int32_t quantize(float x, int level) { return int32_t(floorf(ldexpf(x, -level))); }
+PS_INLINE float level_edge(int level) { return power_of_two(level); }
+
+PS_INLINE int32_t quantize(float x, int level) { return int32_t(floorf(x * power_of_two(-level))); }
 
 struct VoxelKeyInput {
   Vec3 p, ng, ns, wo, prev_p;

@@ -1,0 +1,189 @@
+// Hashed path space filter speed (Binder et al. 2021, sec. 4: 1920x1080 vertices in ~3 ms on a
+// Titan V). Vertices come from a real 1920x1080 render of cornell-box: primary hits (first diffuse
+// vertex) and incoherent second-bounce hits (second diffuse vertex). Reported side by side, in one
+// process, on the same vertices:
+//   BM_HashedFilter      accumulate (keys + insert + atomic add) and lookup, ns per vertex
+//   BM_RandomRmw         a plain random read-modify-write loop over a table of the same size:
+//                        this machine's random-access limit for the same memory footprint
+//   BM_RadiusSearch      nanoflann kd-tree radius queries with the radius that gives the same
+//                        mean neighbour count as the filter's voxels (the classic path space filter)
+// Arguments: {vertex set (0 primary, 1 second bounce), threads}.
+#include <benchmark/benchmark.h>
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/integrators/pt/pt_integrator.h"
+#include "pathspace/parallel/parallel_for.h"
+#include "pathspace/scene/builtin_scenes.h"
+
+namespace pathspace {
+namespace {
+
+constexpr int kWidth = 1920, kHeight = 1080;
+
+struct VertexSet {
+  std::unique_ptr<Scene> scene;
+  VertexBuffer buffer;
+  std::vector<Vec3> positions;  // valid records only
+  std::vector<Rgb> contributions;
+  double mean_voxel_count = 0;  // vertex-weighted, measured with the default filter
+};
+
+const VertexSet& vertex_set(int kind) {
+  static std::unique_ptr<VertexSet> sets[2];
+  if (sets[kind]) return *sets[kind];
+  auto set = std::make_unique<VertexSet>();
+  set->scene = std::make_unique<Scene>(make_builtin_scene("cornell-box", kWidth, kHeight));
+  const Accel accel(*set->scene);
+  IntegratorSettings s;
+  s.filter.force_vertex_buffer = true;
+  s.pt.selection.split_layers = false;  // one record per path
+  if (kind == 1) {
+    s.pt.selection.mode = VertexSelectionMode::nth;
+    s.pt.selection.n = 2;
+  }
+  PtIntegrator pt(*set->scene, accel, s);
+  Film film(kWidth, kHeight);
+  PathCounters counters;
+  pt.render_pass(0, film, counters);
+  set->buffer = pt.vertex_buffer();
+  const VertexBuffer& b = set->buffer;
+  for (size_t p = 0; p < b.paths(); ++p)
+    for (int r = 0; r < b.count[p]; ++r) {
+      set->positions.push_back(b.position[b.slot(p, r)]);
+      set->contributions.push_back(b.contribution[b.slot(p, r)]);
+    }
+  HashedFilter filter(HashedFilterSettings{}, set->scene->camera, size_t(kWidth) * kHeight);
+  std::vector<Rgb> filtered;
+  filter.filter(b, 0, 0, &filtered);
+  const Image counts = filter.aov(FilterAov::count);
+  double sum = 0, n = 0;
+  for (const Rgb& c : counts.pixels)
+    if (c.r > 0) sum += c.r, n += 1;
+  set->mean_voxel_count = n > 0 ? sum / n : 0;
+  sets[kind] = std::move(set);
+  return *sets[kind];
+}
+
+void BM_HashedFilter(benchmark::State& state) {
+  const VertexSet& set = vertex_set(int(state.range(0)));
+  ThreadLimit limit(int(state.range(1)));
+  HashedFilter filter(HashedFilterSettings{}, set.scene->camera, size_t(kWidth) * kHeight);
+  std::vector<Rgb> filtered;
+  uint32_t pass = 0;
+  filter.filter(set.buffer, 0, pass++, &filtered);  // warm-up: first touch of the per-vertex arrays
+  filter.reset_stats();
+  for (auto _ : state) filter.filter(set.buffer, 0, pass++, &filtered);
+  const HashedFilterStats& st = filter.stats();
+  const double per_vertex = 1e6 / double(st.vertices);  // ms summed over passes -> ns per vertex
+  state.counters["vertices"] = double(st.vertices) / double(st.passes);
+  state.counters["accumulate_ns"] = st.accumulate_ms * per_vertex;
+  state.counters["lookup_ns"] = st.lookup_ms * per_vertex;
+  state.counters["clear_ms"] = st.clear_ms / double(st.passes);
+  state.counters["mean_probes"] = st.mean_probes();
+  state.counters["mean_voxel_count"] = set.mean_voxel_count;
+  state.counters["occupancy_pct"] = 100.0 * double(st.occupied_cells_last) / double(st.cells);
+}
+
+void BM_RandomRmw(benchmark::State& state) {
+  const VertexSet& set = vertex_set(int(state.range(0)));
+  ThreadLimit limit(int(state.range(1)));
+  const VoxelHashTable table(uint64_t(kWidth) * kHeight, 16);  // same cells, same bytes as the filter's
+  const VoxelHashTableView view = table.view();
+  const size_t n = set.positions.size();
+  uint64_t round = 0;
+  for (auto _ : state) {
+    ++round;
+    parallel_for(n, 2048, [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) {
+        const uint64_t slot = mix64(i ^ (round << 40)) & view.mask;
+        VoxelCell& c = view.cells[slot];
+        c.sum[0] += 1;
+        c.sum[1] += 2;
+        c.sum[2] += 3;
+        c.count += 1;
+        view.fingerprints[slot] = uint32_t(i);
+      }
+    });
+  }
+  state.counters["update_ns"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                  benchmark::Counter::kInvert);
+  state.counters["update_ns"] = state.counters["update_ns"] * 1e9;
+}
+
+// nanoflann adaptor over the vertex positions.
+struct PointCloud {
+  const std::vector<Vec3>* points;
+  size_t kdtree_get_point_count() const { return points->size(); }
+  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][int(dim)]; }
+  template <class B>
+  bool kdtree_get_bbox(B&) const { return false; }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointCloud>, PointCloud, 3, uint32_t>;
+const nanoflann::SearchParams kUnsorted(32, 0.f, false);
+
+void BM_RadiusSearch(benchmark::State& state) {
+  const VertexSet& set = vertex_set(int(state.range(0)));
+  ThreadLimit limit(int(state.range(1)));
+  const PointCloud cloud{&set.positions};
+  KdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  // Queries: a fixed pseudo-random subset (a full 2M-query pass takes many seconds).
+  constexpr size_t kQueries = 1 << 15;
+  std::vector<size_t> queries(kQueries);
+  for (size_t q = 0; q < kQueries; ++q) queries[q] = mix64(q) % set.positions.size();
+  auto mean_neighbours = [&](float radius) {
+    std::vector<std::pair<uint32_t, float>> found;
+    double sum = 0;
+    for (size_t q = 0; q < 512; ++q) {
+      const Vec3& p = set.positions[queries[q]];
+      const float pt[3] = {p.x, p.y, p.z};
+      sum += double(tree.radiusSearch(pt, radius * radius, found, kUnsorted));
+    }
+    return sum / 512.0;
+  };
+  // Bisection for the radius with the filter's mean vertex count per voxel.
+  float lo = 1e-5f, hi = 1.f;
+  for (int it = 0; it < 30; ++it) {
+    const float mid = std::sqrt(lo * hi);
+    (mean_neighbours(mid) < set.mean_voxel_count ? lo : hi) = mid;
+  }
+  const float radius = std::sqrt(lo * hi);
+  for (auto _ : state) {
+    parallel_for(kQueries, 256, [&](size_t begin, size_t end) {
+      std::vector<std::pair<uint32_t, float>> found;
+      for (size_t q = begin; q < end; ++q) {
+        const Vec3& p = set.positions[queries[q]];
+        const float pt[3] = {p.x, p.y, p.z};
+        tree.radiusSearch(pt, radius * radius, found, kUnsorted);
+        Rgb sum;
+        for (const auto& f : found) sum += set.contributions[f.first];
+        benchmark::DoNotOptimize(sum);
+      }
+    });
+  }
+  state.counters["query_ns"] = benchmark::Counter(double(kQueries) * 1e9, benchmark::Counter::kIsIterationInvariantRate |
+                                                                             benchmark::Counter::kInvert);
+  state.counters["radius"] = radius;
+  state.counters["mean_neighbours"] = mean_neighbours(radius);
+}
+
+void vertex_sets_and_threads(benchmark::internal::Benchmark* b) {
+  for (int kind : {0, 1})
+    for (int threads : {1, 2}) b->Args({kind, threads});
+}
+
+BENCHMARK(BM_HashedFilter)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_RandomRmw)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_RadiusSearch)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+}  // namespace
+}  // namespace pathspace
+
+BENCHMARK_MAIN();

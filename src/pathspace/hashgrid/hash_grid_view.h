@@ -1,0 +1,125 @@
+// Device-safe chained hash grid (PCLT sec. 4, listing 1): an append buffer of records and an
+// open-addressing map from 64-bit cell keys to the head of each cell's record list. A cell is
+// claimed by CAS on its key, a record is pushed by exchanging the head (lock-free, one pass).
+// The owning host class is HashGrid (hash_grid.h); this view is what kernels receive.
+#pragma once
+
+#include <cstdint>
+
+#include "pathspace/hashgrid/grid_cell.h"
+#include "pathspace/parallel/atomics.h"
+
+namespace pathspace {
+
+inline constexpr uint32_t kNoRecord = ~0u;
+
+// One stored point: the caller's payload index (into its own arrays) and the list link.
+struct GridRecord {
+  Vec3 position;
+  uint32_t payload = 0;
+  uint32_t next = kNoRecord;
+};
+
+// Key and list head side by side: a probe that finds its key has the head in the same line.
+struct GridSlot {
+  uint64_t key = kEmptyCellKey;
+  uint32_t head = kNoRecord;
+  uint32_t unused = 0;
+};
+
+// Written atomically by inserts, read by the host after the build (never a silent failure).
+struct GridCounters {
+  uint32_t status = kGridOk;   // GridStatusBits
+  uint32_t appended = 0;       // records taken from the append buffer (may exceed capacity: see full)
+  uint32_t probe_failures = 0; // records whose cell found no slot
+  uint32_t dropped = 0;        // records not stored at all (full buffer, non-finite position)
+};
+
+struct HashGridView {
+  GridSlot* slots = nullptr;
+  uint32_t slot_mask = 0;  // table size - 1 (power of two)
+  GridRecord* records = nullptr;
+  uint32_t record_capacity = 0;
+  GridCounters* counters = nullptr;
+  GridGeometry geometry;
+  Probing probing = Probing::quadratic;
+  uint32_t max_probes = 64;
+
+  // Links the already written record `index` into its cell's list. On a probe failure the record
+  // stays in the buffer unlinked and the failure is counted.
+  PS_HD bool link(uint32_t index) const {
+    GridRecord& rec = records[index];
+    const uint64_t key = geometry.key_of(rec.position);
+    const uint32_t home = uint32_t(hash_cell_key(key)) & slot_mask;
+    for (uint32_t i = 0; i < max_probes; ++i) {
+      GridSlot& slot = slots[probe_slot(home, i, probing, slot_mask)];
+      // Keys never change during a build, so a plain read that already shows our key (the common
+      // case when many records share a cell) saves the locked CAS.
+      uint64_t seen = atomic_load_relaxed(&slot.key);
+      if (seen == kEmptyCellKey) seen = atomic_cas(&slot.key, kEmptyCellKey, key);
+      if (seen == kEmptyCellKey || seen == key) {
+        rec.next = atomic_exchange(&slot.head, index);
+        return true;
+      }
+    }
+    rec.next = kNoRecord;
+    atomic_fetch_or(&counters->status, kGridProbeLimit);
+    atomic_fetch_add(&counters->probe_failures, 1u);
+    return false;
+  }
+
+  // Listing 1 in full: take a record from the append buffer, store it, link it.
+  PS_HD bool insert(const Vec3& position, uint32_t payload) const {
+    if (!all_finite(position)) return drop(kGridInvalidPosition);
+    const uint32_t index = atomic_fetch_add(&counters->appended, 1u);
+    if (index >= record_capacity) return drop(kGridFull);
+    records[index].position = position;
+    records[index].payload = payload;
+    return link(index);
+  }
+
+  PS_HD bool drop(uint32_t bit) const {
+    atomic_fetch_or(&counters->status, bit);
+    atomic_fetch_add(&counters->dropped, 1u);
+    return false;
+  }
+
+  // Head of the list of the cell with this key, kNoRecord if the cell holds nothing. Stopping at
+  // the first empty slot is exact: there are no deletions, so every slot before a key's own slot in
+  // its probe sequence was occupied when that key was inserted and still is.
+  PS_HD uint32_t find_head(uint64_t key) const {
+    const uint32_t home = uint32_t(hash_cell_key(key)) & slot_mask;
+    for (uint32_t i = 0; i < max_probes; ++i) {
+      const GridSlot& slot = slots[probe_slot(home, i, probing, slot_mask)];
+      if (slot.key == key) return slot.head;
+      if (slot.key == kEmptyCellKey) return kNoRecord;
+    }
+    return kNoRecord;
+  }
+
+  // Every record in the cells a ball of `radius` around p can touch, without a distance test (for
+  // callers with per-record radii, e.g. SPPM hit points built with the largest radius).
+  template <typename F>
+  PS_HD void for_each_candidate(const Vec3& p, float radius, F&& f) const {
+    CellCoord lo, hi;
+    geometry.cell_range(p, radius, &lo, &hi);
+    for (int32_t x = lo.x; x <= hi.x; ++x)
+      for (int32_t y = lo.y; y <= hi.y; ++y)
+        for (int32_t z = lo.z; z <= hi.z; ++z)
+          for (uint32_t r = find_head(pack_cell_key(x, y, z)); r != kNoRecord; r = records[r].next) f(records[r]);
+  }
+
+  // f(const GridRecord&, float distance_squared) for every record with |x - p| <= radius.
+  // radius <= geometry.cell_size / 2 visits at most the 8 cells around p; larger radii stay
+  // correct and visit more cells.
+  template <typename F>
+  PS_HD void for_each_in_radius(const Vec3& p, float radius, F&& f) const {
+    const float r2 = radius * radius;
+    for_each_candidate(p, radius, [&](const GridRecord& rec) {
+      const float d2 = distance_squared(rec.position, p);
+      if (d2 <= r2) f(rec, d2);
+    });
+  }
+};
+
+}  // namespace pathspace
