@@ -7,7 +7,7 @@
 //                        this machine's random-access limit for the same memory footprint
 //   BM_RadiusSearch      nanoflann kd-tree radius queries with the radius that gives the same
 //                        mean neighbour count as the filter's voxels (the classic path space filter)
-// Arguments: {vertex set (0 primary, 1 second bounce), threads}.
+// Arguments: {vertex set (0 primary, 1 second bounce), threads[, local combining on/off]}.
 #include <benchmark/benchmark.h>
 
 #include <nanoflann.hpp>
@@ -16,11 +16,9 @@
 #include <memory>
 #include <vector>
 
-#include "pathspace/accel/accel.h"
 #include "pathspace/filters/hashed_filter.h"
-#include "pathspace/integrators/pt/pt_integrator.h"
 #include "pathspace/parallel/parallel_for.h"
-#include "pathspace/scene/builtin_scenes.h"
+#include "support/vertex_sets.h"
 
 namespace pathspace {
 namespace {
@@ -28,38 +26,26 @@ namespace {
 constexpr int kWidth = 1920, kHeight = 1080;
 
 struct VertexSet {
-  std::unique_ptr<Scene> scene;
-  VertexBuffer buffer;
+  std::unique_ptr<bench::VertexSet> source;
   std::vector<Vec3> positions;  // valid records only
   std::vector<Rgb> contributions;
   double mean_voxel_count = 0;  // vertex-weighted, measured with the default filter
+  const Scene& scene() const { return *source->scene; }
+  const VertexBuffer& buffer() const { return source->buffer; }
 };
 
 const VertexSet& vertex_set(int kind) {
   static std::unique_ptr<VertexSet> sets[2];
   if (sets[kind]) return *sets[kind];
   auto set = std::make_unique<VertexSet>();
-  set->scene = std::make_unique<Scene>(make_builtin_scene("cornell-box", kWidth, kHeight));
-  const Accel accel(*set->scene);
-  IntegratorSettings s;
-  s.filter.force_vertex_buffer = true;
-  s.pt.selection.split_layers = false;  // one record per path
-  if (kind == 1) {
-    s.pt.selection.mode = VertexSelectionMode::nth;
-    s.pt.selection.n = 2;
-  }
-  PtIntegrator pt(*set->scene, accel, s);
-  Film film(kWidth, kHeight);
-  PathCounters counters;
-  pt.render_pass(0, film, counters);
-  set->buffer = pt.vertex_buffer();
-  const VertexBuffer& b = set->buffer;
+  set->source = bench::make_vertex_set(bench::VertexSetKind(kind), kWidth, kHeight);
+  const VertexBuffer& b = set->buffer();
   for (size_t p = 0; p < b.paths(); ++p)
     for (int r = 0; r < b.count[p]; ++r) {
       set->positions.push_back(b.position[b.slot(p, r)]);
       set->contributions.push_back(b.contribution[b.slot(p, r)]);
     }
-  HashedFilter filter(HashedFilterSettings{}, set->scene->camera, size_t(kWidth) * kHeight);
+  HashedFilter filter(HashedFilterSettings{}, set->scene().camera, size_t(kWidth) * kHeight);
   std::vector<Rgb> filtered;
   filter.filter(b, 0, 0, &filtered);
   const Image counts = filter.aov(FilterAov::count);
@@ -74,12 +60,14 @@ const VertexSet& vertex_set(int kind) {
 void BM_HashedFilter(benchmark::State& state) {
   const VertexSet& set = vertex_set(int(state.range(0)));
   ThreadLimit limit(int(state.range(1)));
-  HashedFilter filter(HashedFilterSettings{}, set.scene->camera, size_t(kWidth) * kHeight);
+  HashedFilterSettings settings;
+  settings.local_combining = state.range(2) != 0;
+  HashedFilter filter(settings, set.scene().camera, size_t(kWidth) * kHeight);
   std::vector<Rgb> filtered;
   uint32_t pass = 0;
-  filter.filter(set.buffer, 0, pass++, &filtered);  // warm-up: first touch of the per-vertex arrays
+  filter.filter(set.buffer(), 0, pass++, &filtered);  // warm-up: first touch of the per-vertex arrays
   filter.reset_stats();
-  for (auto _ : state) filter.filter(set.buffer, 0, pass++, &filtered);
+  for (auto _ : state) filter.filter(set.buffer(), 0, pass++, &filtered);
   const HashedFilterStats& st = filter.stats();
   const double per_vertex = 1e6 / double(st.vertices);  // ms summed over passes -> ns per vertex
   state.counters["vertices"] = double(st.vertices) / double(st.passes);
@@ -179,7 +167,13 @@ void vertex_sets_and_threads(benchmark::internal::Benchmark* b) {
     for (int threads : {1, 2}) b->Args({kind, threads});
 }
 
-BENCHMARK(BM_HashedFilter)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+void filter_variants(benchmark::internal::Benchmark* b) {
+  for (int kind : {0, 1})
+    for (int threads : {1, 2})
+      for (int combining : {1, 0}) b->Args({kind, threads, combining});
+}
+
+BENCHMARK(BM_HashedFilter)->Apply(filter_variants)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(BM_RandomRmw)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(BM_RadiusSearch)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 

@@ -16,7 +16,7 @@ struct FilterOptions {
   int max_vertices = 2;
   float min_roughness = 0.1f;
   bool no_layers = false;
-  float scale = 6.f;
+  float scale = 12.f;
   bool no_jitter = false;
   std::string normal = "key";
   float table_factor = 1.f;

@@ -61,6 +61,8 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
   s.pt.mis = o.mis == "balance" ? MisHeuristic::balance : MisHeuristic::power;
   if (!s.pt.nee && !s.pt.bsdf_sampling) throw UsageError("--no-nee and --no-bsdf-sampling together would render black");
   apply_filter_options(o.filter, &s);
+  apply_lt_options(o.lt, o.integrator, &s);
+  apply_sppm_options(o.sppm, o.integrator, &s);
   return s;
 }
 
@@ -92,6 +94,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(CLI::IsMember({"uniform", "power"}))
       ->capture_default_str();
   add_filter_options(cmd, &o->filter);
+  add_lt_options(cmd, &o->lt);
+  add_sppm_options(cmd, &o->sppm);
   return cmd;
 }
 

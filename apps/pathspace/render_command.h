@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "filter_options.h"
+#include "lt_options.h"
+#include "sppm_options.h"
 
 namespace pathspace::cli {
 
@@ -30,6 +32,8 @@ struct RenderOptions {
   std::string mis = "power";
   std::string light_selection = "uniform";
   FilterOptions filter;
+  LtOptions lt;
+  SppmOptions sppm;
 };
 
 // Adds the `render` subcommand to app; the options are stored in *options.

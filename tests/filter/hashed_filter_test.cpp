@@ -64,6 +64,15 @@ TEST(HashedFilter, BitIdenticalForOneAndTwoThreadsAndReruns) {
   EXPECT_FALSE(bit_identical(two.mean, render_with(scene, s, 2, 2).mean)) << "the seed must matter";
 }
 
+TEST(HashedFilter, LocalCombiningDoesNotChangeTheResult) {
+  // Integer sums: combining vertices before the atomics must give exactly the same averages.
+  const Scene scene = make_builtin_scene("gbs_c", 64, 48);
+  IntegratorSettings s = hashed_settings(4);
+  const auto combined = render_with(scene, s, 2);
+  s.filter.hashed.local_combining = false;
+  EXPECT_TRUE(bit_identical(combined.mean, render_with(scene, s, 2).mean));
+}
+
 TEST(HashedFilter, FilteringChangesTheImageButNotItsBrightness) {
   const Scene scene = make_builtin_scene("cornell-empty-area", 64, 64);
   IntegratorSettings plain;

@@ -23,9 +23,10 @@ double milliseconds_since(std::chrono::steady_clock::time_point t0) {
 
 // Counters gathered per parallel_for chunk and summed once per chunk.
 struct AccumulateCounters {
-  std::atomic<uint64_t> vertices{0}, failures{0}, not_accumulated{0}, probes{0}, probes_max{0};
-  void add(uint64_t v, uint64_t f, uint64_t na, uint64_t p, uint64_t pmax) {
+  std::atomic<uint64_t> vertices{0}, insertions{0}, failures{0}, not_accumulated{0}, probes{0}, probes_max{0};
+  void add(uint64_t v, uint64_t ins, uint64_t f, uint64_t na, uint64_t p, uint64_t pmax) {
     vertices += v;
+    insertions += ins;
     failures += f;
     not_accumulated += na;
     probes += p;
@@ -140,8 +141,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   AccumulateCounters counters;
+  const bool combine = settings_.local_combining;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
-    uint64_t vertices = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
+    uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache local;
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
@@ -159,13 +161,14 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       for (int j = 0; j < n; ++j) {
         const size_t i = batch[j];
         LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
-        if (LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
+        if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
           slots_[i] = e.slot;
           probes_[i] = 0;
           add_to_entry(e, fixed_batch[j]);
           continue;
         }
         const ProbeResult pr = view.find_or_insert(hashes[j]);
+        ++insertions;
         probes_[i] = uint16_t(pr.probes);
         probes += uint64_t(pr.probes);
         probes_max = std::max(probes_max, uint64_t(pr.probes));
@@ -179,6 +182,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         e.fingerprint = hashes[j].fingerprint;
         e.slot = pr.slot;
         add_to_entry(e, fixed_batch[j]);
+        if (!combine) LocalVoxelCache::flush(view, e);
       }
       n = 0;
     };
@@ -201,7 +205,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         }
         const VoxelHash h = hash_voxel_key(keys_[i], settings_.key.normal);
         LocalVoxelCache::Entry& e = local.entry_for(h);
-        if (LocalVoxelCache::holds(e, h)) {
+        if (combine && LocalVoxelCache::holds(e, h)) {
           slots_[i] = e.slot;
           probes_[i] = 0;
           add_to_entry(e, fixed);
@@ -218,9 +222,10 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     }
     process_batch();
     local.flush_all(view);
-    counters.add(vertices, failures, not_accumulated, probes, probes_max);
+    counters.add(vertices, insertions, failures, not_accumulated, probes, probes_max);
   });
   stats_.vertices += counters.vertices;
+  stats_.insertions += counters.insertions;
   stats_.probe_failures += counters.failures;
   stats_.not_accumulated += counters.not_accumulated;
   stats_.probes_total += counters.probes;
@@ -314,9 +319,11 @@ std::string HashedFilter::report() const {
   std::string r;
   r += fmt::format("hashed filter: {} passes, {:.3g} vertices per pass, table {} cells ({:.1f} MiB)\n", s.passes,
                    double(s.vertices) / passes, s.cells, double(s.table_bytes) / (1 << 20));
-  r += fmt::format("  occupancy {:.2f}% (last pass), mean probes {:.3f}, max {}, probe-limit fallbacks {}, not accumulated {}\n",
-                   100.0 * double(s.occupied_cells_last) / double(std::max<uint64_t>(1, s.cells)), s.mean_probes(),
-                   s.probes_max, s.probe_failures, s.not_accumulated);
+  r += fmt::format("  occupancy {:.2f}% (last pass), {:.1f}% of vertices combined locally, mean probes per insertion {:.3f}, "
+                   "max {}, probe-limit fallbacks {}, not accumulated {}\n",
+                   100.0 * double(s.occupied_cells_last) / double(std::max<uint64_t>(1, s.cells)),
+                   s.vertices ? 100.0 * (1.0 - double(s.insertions) / double(s.vertices)) : 0.0, s.mean_probes(), s.probes_max,
+                   s.probe_failures, s.not_accumulated);
   r += fmt::format("  expected fingerprint collisions per pass {:.2e}\n", s.expected_fingerprint_collisions_last);
   r += fmt::format("  low-count vertices {} ({:.2f}%), neighbour lookups {}, coarse level used {}\n", s.low_count,
                    s.vertices ? 100.0 * double(s.low_count) / double(s.vertices) : 0.0, s.neighbour_lookups, s.multi_level_used);

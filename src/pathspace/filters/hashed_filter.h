@@ -20,7 +20,8 @@ struct HashedFilterStats {
   uint64_t passes = 0, vertices = 0;
   uint64_t probe_failures = 0;   // table window full: vertex kept its own contribution
   uint64_t not_accumulated = 0;  // NaN/Inf/negative/huge contribution: kept its own contribution
-  uint64_t probes_total = 0, probes_max = 0;  // over insertions
+  uint64_t insertions = 0;       // table probes started (vertices not combined locally)
+  uint64_t probes_total = 0, probes_max = 0;  // cells inspected by those insertions
   uint64_t low_count = 0;        // vertices whose voxel had fewer than min_count vertices
   uint64_t neighbour_lookups = 0, multi_level_used = 0;
   uint64_t occupied_cells_last = 0, cells = 0;
@@ -28,7 +29,8 @@ struct HashedFilterStats {
   double clear_ms = 0, accumulate_ms = 0, lookup_ms = 0;  // summed over passes
   size_t table_bytes = 0;
 
-  double mean_probes() const { return vertices ? double(probes_total) / double(vertices) : 0.0; }
+  // Mean cells inspected per insertion (1 = found or claimed the home cell).
+  double mean_probes() const { return insertions ? double(probes_total) / double(insertions) : 0.0; }
 };
 
 // Debug images of the first record of each path (sec. 3.1, fig. 3 and 5 style visualisations).

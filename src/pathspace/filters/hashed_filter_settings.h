@@ -12,6 +12,7 @@ struct HashedFilterSettings {
   int min_count = 4;            // voxels with fewer vertices count as low-count (sec. 3.3)
   bool neighbour_search = false;  // sec. 3.3.1: add the 26 neighbouring voxels of a low-count voxel
   bool multi_level = false;       // sec. 3.3.2: also accumulate one level coarser, use it when low-count
+  bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
 };
 
 }  // namespace pathspace

@@ -18,7 +18,7 @@ namespace pathspace {
 enum class NormalKeyMode : uint8_t { off, key, fingerprint };
 
 struct VoxelKeySettings {
-  float psf_scale = 6.f;          // voxel edge in projected pixels at the vertex's path distance
+  float psf_scale = 12.f;         // voxel edge in projected pixels at the path distance (docs/benchmarks.md: relMSE study)
   float pixel_angle = 1e-3f;      // projected size of one pixel at distance 1 (camera)
   bool jitter = true;             // sec. 3.1.4; off reproduces the block artefacts of fig. 6c
   NormalKeyMode normal = NormalKeyMode::key;

@@ -11,7 +11,9 @@
 #include "pathspace/film/film.h"
 #include "pathspace/filters/filter_settings.h"
 #include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
 
 namespace pathspace {
 
@@ -21,7 +23,9 @@ class Scene;
 struct IntegratorSettings {
   uint64_t seed = 0;
   PtSettings pt;
+  LtSettings lt;
   FilterSettings filter;
+  SppmSettings sppm;
 };
 
 // A named debug image an integrator can provide after rendering (e.g. the filter's voxel ids).

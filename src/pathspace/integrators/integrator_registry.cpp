@@ -3,18 +3,22 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/lt/lt_integrator.h"
 #include "pathspace/integrators/pt/pt_integrator.h"
+#include "pathspace/integrators/sppm/sppm_integrator.h"
 
 namespace pathspace {
 
 const std::vector<std::string>& integrator_names() {
-  static const std::vector<std::string> names = {"pt"};
+  static const std::vector<std::string> names = {"pt", "lt", "sppm"};
   return names;
 }
 
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, const Accel& accel,
                                             const IntegratorSettings& settings) {
   if (name == "pt") return std::make_unique<PtIntegrator>(scene, accel, settings);
+  if (name == "lt") return std::make_unique<LtIntegrator>(scene, accel, settings);
+  if (name == "sppm") return std::make_unique<SppmIntegrator>(scene, accel, settings);
   throw Error(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(integrator_names(), ", ")));
 }
 

@@ -1,0 +1,45 @@
+// Filter input taken from real renders (shared by the filter benchmark and the figure studies):
+// the selected vertices of one 1920x1080 pass of cornell-box, either the first diffuse vertex of
+// each camera path (primary hits, coherent) or the second one (incoherent second-bounce hits).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/integrators/pt/pt_integrator.h"
+#include "pathspace/scene/builtin_scenes.h"
+
+namespace pathspace::bench {
+
+enum class VertexSetKind { primary = 0, second_bounce = 1 };
+
+struct VertexSet {
+  std::unique_ptr<Scene> scene;
+  VertexBuffer buffer;
+};
+
+inline std::unique_ptr<VertexSet> make_vertex_set(VertexSetKind kind, int width = 1920, int height = 1080) {
+  auto set = std::make_unique<VertexSet>();
+  set->scene = std::make_unique<Scene>(make_builtin_scene("cornell-box", width, height));
+  const Accel accel(*set->scene);
+  IntegratorSettings s;
+  s.filter.force_vertex_buffer = true;
+  s.pt.selection.split_layers = false;  // one record per path
+  if (kind == VertexSetKind::second_bounce) {
+    s.pt.selection.mode = VertexSelectionMode::nth;
+    s.pt.selection.n = 2;
+  }
+  PtIntegrator pt(*set->scene, accel, s);
+  Film film(width, height);
+  PathCounters counters;
+  pt.render_pass(0, film, counters);
+  set->buffer = pt.vertex_buffer();
+  return set;
+}
+
+inline const char* vertex_set_name(VertexSetKind kind) {
+  return kind == VertexSetKind::primary ? "primary" : "second_bounce";
+}
+
+}  // namespace pathspace::bench

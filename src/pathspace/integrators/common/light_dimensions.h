@@ -1,0 +1,25 @@
+// Fixed layout of sampler dimensions along a light path (LT now; BPT and PCLT light subpaths
+// later), the counterpart of dimensions.h for camera paths: a dimension is a pure function of
+// (path index, pass, vertex index, purpose), so switching options never reshuffles the others.
+#pragma once
+
+#include <cstdint>
+
+#include "pathspace/base/platform.h"
+
+namespace pathspace::light_dims {
+
+inline constexpr uint32_t kLightSelect = 0;
+inline constexpr uint32_t kEmitPos = 1;  // and kEmitPos + 1
+inline constexpr uint32_t kEmitDir = 3;  // and kEmitDir + 1
+inline constexpr uint32_t kFirstVertex = 5;
+inline constexpr uint32_t kPerVertex = 4;
+
+// Offsets inside a vertex's block.
+inline constexpr uint32_t kLobe = 0;
+inline constexpr uint32_t kBsdfU = 1;  // and kBsdfU + 1
+inline constexpr uint32_t kRoulette = 3;
+
+PS_HD inline constexpr uint32_t vertex(uint32_t index, uint32_t offset) { return kFirstVertex + index * kPerVertex + offset; }
+
+}  // namespace pathspace::light_dims

@@ -1,0 +1,190 @@
+// One light-traced path (device-safe, templated on the ray caster "Tracer" like pt_trace_path):
+// emit from a light (lights/light_emission.h), scatter with the adjoint BSDF (TransportMode::
+// importance) and connect every vertex to the pinhole camera by projection (PCLT paper eq. 4),
+// splatting into a SplatFilmView through the box pixel filter or a wider reconstruction kernel
+// (PCLT sec. 5.2). Shading normals use Veach's adjoint correction (Veach 1997 §5.3, eq. 5.17):
+// a light-path vertex scales by |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|) on top of f |wi.ns|.
+#pragma once
+
+#include "pathspace/film/splat_film.h"
+#include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/integrators/lt/lt_settings.h"
+#include "pathspace/lights/light_emission.h"
+#include "pathspace/materials/bsdf.h"
+#include "pathspace/sampling/sampler.h"
+
+namespace pathspace {
+
+namespace lt_detail {
+
+// A point projected onto the image plane. Unlike PinholeCamera::connect, the raster position is
+// not clipped to the image: a wide filter lets points just outside it reach border pixels.
+struct Projection {
+  float rx = 0.f, ry = 0.f;
+  Vec3 wi;            // unit, from the point towards the camera
+  float dist = 0.f;
+  float factor = 0.f; // We cos_cam / dist^2 = 1 / (A_pixel cos^3 theta dist^2) (eq. 4 with A_p)
+};
+
+PS_INLINE bool project(const PinholeCamera& cam, const Vec3& p, Projection* out) {
+  const Vec3 to_cam = cam.position - p;
+  const float d2 = length_squared(to_cam);
+  if (!(d2 > 0.f)) return false;
+  const float d = sqrtf(d2);
+  const Vec3 dir = -to_cam / d;  // from the camera to p
+  const float c = dot(dir, cam.forward);
+  if (c <= 0.f) return false;
+  const float sx = dot(dir, cam.right) / c, sy = dot(dir, cam.up) / c;
+  out->rx = (sx / cam.tan_x + 1.f) * 0.5f * float(cam.width);
+  out->ry = (1.f - sy / cam.tan_y) * 0.5f * float(cam.height);
+  out->wi = to_cam / d;
+  out->dist = d;
+  out->factor = 1.f / (cam.pixel_area() * c * c * c * d2);
+  return isfinite(out->rx) && isfinite(out->ry) && isfinite(out->factor);
+}
+
+// The filter's 1D profile at offset x (pixels) and its integral over [-r, r]; the 2D kernel is
+// the separable product, normalised to integrate to one pixel area so that a constant image stays
+// constant. The gaussian has sigma = r / 2 and is truncated at r.
+PS_INLINE float filter_1d(LtFilter f, float x, float r) {
+  const float a = fabsf(x);
+  if (a >= r) return 0.f;
+  if (f == LtFilter::tent) return 1.f - a / r;
+  const float sigma = 0.5f * r;
+  return expf(-a * a / (2.f * sigma * sigma));
+}
+PS_INLINE float filter_1d_integral(LtFilter f, float r) {
+  if (f == LtFilter::tent) return r;
+  const float sigma = 0.5f * r;
+  return sigma * sqrtf(kTwoPi) * erff(r / (sigma * 1.41421356f));
+}
+
+// Distributes value (already divided by the path count; box-filter units) over the pixels whose
+// filter support contains (rx, ry).
+PS_INLINE void splat(const SplatFilmView& film, const LtSettings& s, float rx, float ry, const Rgb& value) {
+  if (s.filter == LtFilter::box) {
+    if (!(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return;
+    const int i = min_int(int(rx), film.width - 1), j = min_int(int(ry), film.height - 1);
+    film.add(uint32_t(i) + uint32_t(j) * uint32_t(film.width), value);
+    return;
+  }
+  const float r = s.filter_radius;
+  const float norm = filter_1d_integral(s.filter, r);
+  const float inv_norm2 = 1.f / (norm * norm);
+  // Pixel centres (i + 0.5) strictly within r of the sample.
+  const int i0 = max_int(0, int(ceilf(rx - r - 0.5f))), i1 = min_int(film.width - 1, int(floorf(rx + r - 0.5f)));
+  const int j0 = max_int(0, int(ceilf(ry - r - 0.5f))), j1 = min_int(film.height - 1, int(floorf(ry + r - 0.5f)));
+  for (int j = j0; j <= j1; ++j) {
+    const float wy = filter_1d(s.filter, float(j) + 0.5f - ry, r);
+    if (wy <= 0.f) continue;
+    for (int i = i0; i <= i1; ++i) {
+      const float wx = filter_1d(s.filter, float(i) + 0.5f - rx, r);
+      if (wx <= 0.f) continue;
+      film.add(uint32_t(i) + uint32_t(j) * uint32_t(film.width), value * (wx * wy * inv_norm2));
+    }
+  }
+}
+
+// Whether any pixel can receive a splat at (rx, ry): saves the shadow ray for points far outside.
+PS_INLINE bool reaches_image(const SplatFilmView& film, const LtSettings& s, float rx, float ry) {
+  const float r = s.filter == LtFilter::box ? 0.f : s.filter_radius;
+  return rx > -r && rx < float(film.width) + r && ry > -r && ry < float(film.height) + r;
+}
+
+}  // namespace lt_detail
+
+// Traces one light path and splats all its camera connections; inv_paths = 1 / (light paths per
+// pass), which turns the sum of splats into the pass's pixel estimate.
+template <typename Tracer>
+PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const LtSettings& settings,
+                         float inv_paths, const SplatFilmView& film, PathCounters* counters) {
+  using namespace lt_detail;
+  if (scene.num_lights == 0) return;
+  const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
+  const PinholeCamera& cam = scene.camera;
+
+  float select_prob;
+  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
+  if (!(select_prob > 0.f)) return;
+  const Light& light = scene.lights[li];
+  EmissionSample e;
+  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
+  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
+  if (!sample_emission(scene, light, up, ud, &e)) return;
+  const float inv_select = 1.f / select_prob;
+
+  // Path length 1: the emitter seen by the camera. Only area lights have a visible surface; point,
+  // directional and environment lights are never hit by camera rays either (PT agrees).
+  if (!settings.skip_emitter && is_area_light(light)) {
+    Projection pr;
+    if (project(cam, e.p, &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+      const Rgb le = area_light_radiance(light, e.ng, pr.wi);
+      if (!is_black(le)) {
+        ++counters->rays;
+        ++counters->shadow_rays;
+        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+          const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
+          splat(film, settings, pr.rx, pr.ry, le * scale);
+        }
+      }
+    }
+  }
+  if (max_segments < 2) return;
+
+  Rgb beta = e.weight * inv_select;
+  const float beta0 = max_component(beta);  // Russian roulette looks at the throughput relative to this
+  Ray ray = e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
+
+  // The vertex reached after `segments` segments; its camera connection makes segments + 1.
+  for (int segments = 1; segments < max_segments; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) break;
+    const Material& mat = scene.materials[hit.material];
+    const Frame frame(hit.ns);
+    const Vec3 wo_world = -ray.d;  // towards the light side (the previous vertex)
+    const Vec3 wo = frame.to_local(wo_world);
+    const float wo_ng = fabsf(dot(wo_world, hit.ng));
+    if (!(wo_ng > 0.f)) break;
+    const uint32_t v = uint32_t(segments - 1);
+
+    // Camera connection: beta f(wo, wi) |wo.ns| |wi.ng| / |wo.ng| We cos_cam / d^2, the adjoint
+    // shading-normal factor times |wi.ns| (Veach eq. 5.17).
+    if (bsdf_has_non_delta(mat)) {
+      Projection pr;
+      if (project(cam, hit.p, &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+        const Vec3 wi = frame.to_local(pr.wi);
+        const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
+        if (!is_black(f)) {
+          ++counters->rays;
+          ++counters->shadow_rays;
+          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+            const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
+            splat(film, settings, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));
+          }
+        }
+      }
+    }
+    if (segments + 1 >= max_segments) break;  // a further vertex could not connect within the limit
+
+    BsdfSample bs;
+    const Point2 ub{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)), sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
+    if (!bsdf_sample(mat, wo, sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub, TransportMode::importance, &bs)) break;
+    const Vec3 wi_world = frame.to_world(bs.wi);
+    const float wi_ns = fabsf(bs.wi.z);
+    if (!(wi_ns > 0.f)) break;
+    // bs.weight = f |wi.ns| / pdf; the adjoint correction turns it into f |wo.ns| |wi.ng| / (|wo.ng| pdf).
+    beta *= bs.weight * (fabsf(wo.z) * fabsf(dot(wi_world, hit.ng)) / (wo_ng * wi_ns));
+    if (is_black(beta) || !all_finite(beta)) break;
+
+    if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
+      const float q = fminf(1.f, max_component(beta) / beta0);
+      if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) break;
+      beta *= 1.f / q;
+    }
+    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+  }
+}
+
+}  // namespace pathspace

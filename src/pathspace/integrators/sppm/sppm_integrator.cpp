@@ -1,0 +1,180 @@
+// SPPM host orchestration (sppm_integrator.h): the four phases of one iteration, each a
+// parallel_for whose result does not depend on the thread count (visible point i belongs to pixel
+// i; flux is summed in fixed point, which is associative).
+#include "pathspace/integrators/sppm/sppm_integrator.h"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/base/error.h"
+#include "pathspace/parallel/parallel_for.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace {
+
+namespace {
+constexpr size_t kPixelGrain = 256;
+constexpr size_t kPhotonGrain = 256;
+// Separates the photon random stream from the camera stream (both are indexed from 0).
+constexpr uint64_t kPhotonStream = 0x70686f746f6e73ULL;
+
+struct SharedCounters {
+  std::atomic<uint64_t> rays{0}, dropped{0}, deposits{0}, gathered{0}, points{0};
+  void add(const PathCounters& c) {
+    rays += c.rays;
+    dropped += c.dropped;
+  }
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+}  // namespace
+
+SppmIntegrator::SppmIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
+    : view_(scene.view()), accel_(accel), settings_(settings) {
+  const SppmSettings& s = settings.sppm;
+  if (!(s.alpha > 0.f && s.alpha <= 1.f)) throw Error(fmt::format("SPPM alpha must be in (0, 1], not {}", s.alpha));
+  const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
+  r0_ = s.initial_radius > 0.f ? s.initial_radius : s.radius_fraction * view_.bounds.radius;
+  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("SPPM initial radius must be positive, not {}", r0_));
+  photons_ = s.photons > 0 ? s.photons : pixels;
+  max_segments_ = s.max_segments > 0 ? s.max_segments : view_.max_path_segments;
+  reference_power_ = max_photon_power(view_);
+  points_.resize(pixels);
+  direct_.resize(pixels);
+  flux_.resize(3 * pixels);
+  cached_r2_ = double(r0_) * double(r0_);
+}
+
+float SppmIntegrator::radius(uint32_t pass) {
+  if (pass < cached_pass_) {
+    cached_pass_ = 0;
+    cached_r2_ = double(r0_) * double(r0_);
+  }
+  const double alpha = settings_.sppm.alpha;
+  for (; cached_pass_ < pass; ++cached_pass_) {
+    const double i = double(cached_pass_) + 1.0;
+    cached_r2_ *= (i + alpha) / (i + 1.0);
+  }
+  return float(std::sqrt(cached_r2_));
+}
+
+void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
+  const size_t n = film.pixel_count();
+  const int width = film.width();
+  const SppmSettings& s = settings_.sppm;
+  const float r = radius(pass);
+  last_radius_ = r;
+  SharedCounters shared;
+
+  // (a) Eye pass: one jittered camera path per pixel to its visible point.
+  auto t = std::chrono::steady_clock::now();
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+    PathCounters local;
+    uint64_t points = 0;
+    for (size_t pixel = begin; pixel < end; ++pixel) {
+      const Sampler sampler(settings_.seed, pixel, pass);
+      const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
+      const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
+      sppm_trace_eye(view_, accel_, sampler, view_.camera.generate_ray(rx, ry), s, max_segments_, &local, &direct_[pixel],
+                     &points_[pixel]);
+      points += points_[pixel].valid;
+      flux_[3 * pixel] = flux_[3 * pixel + 1] = flux_[3 * pixel + 2] = 0;
+    }
+    shared.add(local);
+    shared.points += points;
+  });
+  eye_s_ += seconds_since(t);
+
+  // (b) Hash grid over this iteration's visible points, cells 2r. Records go through the append
+  // buffer in arbitrary order; that order never reaches the image (fixed-point sums).
+  t = std::chrono::steady_clock::now();
+  grid_.prepare(n, r);
+  const HashGridView grid = grid_.view();
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+    for (size_t pixel = begin; pixel < end; ++pixel)
+      if (points_[pixel].valid) grid.insert(points_[pixel].p, uint32_t(pixel));
+  });
+  const HashGridStats gs = grid_.stats();
+  grid_failures_ += gs.probe_failures + gs.dropped;
+  grid_s_ += seconds_since(t);
+
+  // (c) Photon pass.
+  t = std::chrono::steady_clock::now();
+  SppmGatherView gather;
+  gather.grid = grid;
+  gather.points = points_.data();
+  gather.flux = flux_.data();
+  gather.radius = r;
+  gather.inv_quantum = reference_power_ > 0.f ? float(kFluxFixedScale / double(reference_power_)) : 0.f;
+  gather.max_segments = max_segments_;
+  const uint64_t photon_seed = settings_.seed ^ kPhotonStream;
+  if (reference_power_ > 0.f) {
+    parallel_for(size_t(photons_), kPhotonGrain, [&](size_t begin, size_t end) {
+      PathCounters local;
+      PhotonCounters pc;
+      for (size_t i = begin; i < end; ++i) {
+        const Sampler sampler(photon_seed, i, pass);
+        sppm_trace_photon(view_, accel_, sampler, s, gather, &local, &pc);
+      }
+      shared.add(local);
+      shared.deposits += pc.deposits;
+      shared.gathered += pc.gathered;
+    });
+  }
+  photon_s_ += seconds_since(t);
+
+  // (d) Resolve: L = direct + tau * sum(f Phi) / (pi r^2 N), one film sample per pixel.
+  t = std::chrono::steady_clock::now();
+  const double to_radiance = double(reference_power_) / kFluxFixedScale / (double(kPi) * double(r) * double(r) * double(photons_));
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+    uint64_t dropped = 0;
+    for (size_t pixel = begin; pixel < end; ++pixel) {
+      Rgb value = direct_[pixel];
+      const VisiblePoint& vp = points_[pixel];
+      if (vp.valid) {
+        for (int c = 0; c < 3; ++c)
+          value[c] += float(double(vp.throughput[c]) * double(flux_[3 * pixel + c]) * to_radiance);
+      }
+      if (!all_finite(value)) {
+        ++dropped;
+        value = Rgb();
+      }
+      film.add_sample(uint32_t(pixel), value);
+    }
+    shared.dropped += dropped;
+  });
+  resolve_s_ += seconds_since(t);
+
+  counters.rays += shared.rays;
+  counters.dropped += shared.dropped;
+  counters.paths += n + photons_;
+  ++passes_;
+  eye_paths_ += n;
+  photon_paths_ += photons_;
+  visible_points_ += shared.points;
+  deposits_ += shared.deposits;
+  gathered_ += shared.gathered;
+}
+
+std::string SppmIntegrator::report() const {
+  if (passes_ == 0) return {};
+  const double eye_rate = eye_s_ > 0 ? double(eye_paths_) / eye_s_ : 0.0;
+  const double photon_rate = photon_s_ > 0 ? double(photon_paths_) / photon_s_ : 0.0;
+  std::string out = fmt::format(
+      "sppm: {} iterations, {} eye paths, {} photons ({} per iteration), radius {:.5g} -> {:.5g} (alpha {:.3g})\n"
+      "sppm: {:.1f}% of pixels had a visible point; {:.3g} photon vertices, {:.3g} gathers per iteration\n"
+      "sppm: time eye {:.3f} s ({:.3g} eye paths/s), grid {:.3f} s, photons {:.3f} s ({:.3g} photons/s), resolve {:.3f} s\n",
+      passes_, eye_paths_, photon_paths_, photons_, r0_, last_radius_, settings_.sppm.alpha,
+      100.0 * double(visible_points_) / double(eye_paths_), double(deposits_) / double(passes_),
+      double(gathered_) / double(passes_), eye_s_, eye_rate, grid_s_, photon_s_, photon_rate, resolve_s_);
+  if (grid_failures_) out += fmt::format("sppm: WARNING {} visible points not stored in the hash grid\n", grid_failures_);
+  return out;
+}
+
+}  // namespace pathspace

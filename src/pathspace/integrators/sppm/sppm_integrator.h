@@ -1,0 +1,55 @@
+// Stochastic progressive photon mapping on the CPU (Hachisuka & Jensen 2009) with the Knaus-Zwicker
+// global radius update (PCLT paper eq. 1). One render pass = one SPPM iteration: eye pass, hash grid
+// over the visible points (PCLT sec. 4), photon pass, resolve. Each iteration is an independent
+// estimate with its own radius and the film averages them, so memory is bounded by the pixel count
+// whatever the number of iterations.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/hashgrid/hash_grid.h"
+#include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/sppm/sppm_kernel.h"
+#include "pathspace/scene/scene_view.h"
+
+namespace pathspace {
+
+class SppmIntegrator final : public Integrator {
+ public:
+  SppmIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  const char* name() const override { return "sppm"; }
+  void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
+  std::string report() const override;
+
+  // Gathering radius of iteration `pass` (0-based): r_0 and r_{i+1} = r_i sqrt((i + alpha) / (i + 1))
+  // with the 1-based iteration number i = pass + 1.
+  float radius(uint32_t pass);
+  float initial_radius() const { return r0_; }
+  uint64_t photons_per_pass() const { return photons_; }
+
+ private:
+  SceneView view_;
+  const Accel& accel_;
+  IntegratorSettings settings_;
+  float r0_ = 0.f;
+  uint64_t photons_ = 0;
+  int max_segments_ = 0;
+  float reference_power_ = 0.f;
+  // Radius recurrence cache: r^2 of iteration cached_pass_.
+  uint32_t cached_pass_ = 0;
+  double cached_r2_ = 0.0;
+
+  std::vector<VisiblePoint> points_;
+  std::vector<Rgb> direct_;
+  std::vector<uint64_t> flux_;
+  HashGrid grid_;
+
+  // Totals for report().
+  uint64_t passes_ = 0, eye_paths_ = 0, photon_paths_ = 0, visible_points_ = 0, deposits_ = 0, gathered_ = 0;
+  uint64_t grid_failures_ = 0;
+  double eye_s_ = 0, grid_s_ = 0, photon_s_ = 0, resolve_s_ = 0;
+  float last_radius_ = 0.f;
+};
+
+}  // namespace pathspace

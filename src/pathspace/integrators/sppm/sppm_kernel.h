@@ -1,0 +1,241 @@
+// Stochastic progressive photon mapping, per-path logic (device-safe, templated on the ray caster
+// "Tracer" like pt_trace_path). Hachisuka & Jensen 2009: every iteration traces one camera path per
+// pixel to its first gathering vertex (the visible point; redistributed every iteration, which
+// anti-aliases and resolves glossy chains), then photons from all lights; each photon vertex on a
+// non-delta surface adds f(wo_vp, wi) Phi to the visible points within the iteration's global
+// radius (Knaus & Zwicker 2011, PCLT eq. 1), front side only. No next event estimation: direct
+// light is the photons' first hit. Flux sums are 64-bit fixed point, so atomic accumulation is
+// order-independent and a render is bit-identical for every thread count.
+#pragma once
+
+#include "pathspace/hashgrid/hash_grid_view.h"
+#include "pathspace/integrators/common/dimensions.h"
+#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
+#include "pathspace/lights/light_emission.h"
+#include "pathspace/materials/bsdf_layers.h"
+#include "pathspace/parallel/atomics.h"
+#include "pathspace/sampling/sampler.h"
+
+namespace pathspace {
+
+// The gathering vertex of one camera path (one per pixel per iteration).
+struct VisiblePoint {
+  Vec3 p;
+  Vec3 n_front;       // geometric normal turned to the side the camera path arrived from
+  Vec3 ns;            // shading normal (the BSDF frame)
+  Vec3 wo;            // unit, towards the previous camera-path vertex
+  Rgb throughput;     // camera to here, including 1 / P(non-delta lobe chosen)
+  uint32_t material = 0;
+  uint32_t segments = 0;  // camera path length to p (camera ray = 1)
+  bool valid = false;
+};
+
+// Photons use the light-path dimension layout of light tracing (common/light_dimensions.h).
+
+// Fixed-point flux: quantum = reference photon power * 2^-32 keeps ~9 decimal digits per deposit
+// relative to an unscattered photon, and 2^32 such photons per visible point before overflow.
+inline constexpr double kFluxFixedScale = 4294967296.0;   // 2^32
+inline constexpr double kFluxFixedMax = 4503599627370496.0;  // 2^52 per deposit (saturates)
+
+namespace sppm_detail {
+// Whether a camera path stops at this vertex (has a lobe a density estimate can gather).
+PS_INLINE bool stores_visible_point(const Material& m, float glossy_roughness) {
+  if (!bsdf_has_non_delta(m)) return false;
+  if (glossy_roughness <= 0.f) return true;
+  switch (m.type) {
+    case MaterialType::standard:
+      return !is_black(m.diffuse) || phong_roughness(m.exponent) >= glossy_roughness;
+    case MaterialType::rough_conductor:
+    case MaterialType::rough_dielectric: return m.alpha >= glossy_roughness;
+  }
+  return true;
+}
+
+// Probability that bsdf_sample picks a non-delta lobe for wo (the complement continues through a
+// delta lobe): a mixed vertex chooses stochastically between gathering and going on.
+PS_INLINE float non_delta_probability(const Material& m, Vec3 wo) {
+  if (m.type != MaterialType::standard) return 1.f;
+  detail::flip_for_two_sided(m, &wo, nullptr);
+  const standard::LobeProbabilities p = standard::lobe_probabilities(m, wo);
+  return p.diffuse + p.glossy;
+}
+}  // namespace sppm_detail
+
+// Eye pass of one pixel: emission seen along the path (through delta and smooth-glossy bounces)
+// goes to *direct; the first gathering vertex becomes *vp (vp->valid = false when there is none).
+template <typename Tracer>
+PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
+                          const SppmSettings& settings, int max_segments, PathCounters* counters, Rgb* direct,
+                          VisiblePoint* vp) {
+  using namespace sppm_detail;
+  vp->valid = false;
+  Rgb beta(1.f);
+  Rgb radiance;
+  for (int segments = 1;; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) {
+      if (scene.environment_light >= 0) radiance += beta * scene.lights[scene.environment_light].value;
+      break;
+    }
+    // Without next event estimation emission always counts with weight 1.
+    if (hit.light != kNoLight) radiance += beta * area_light_radiance(scene.lights[hit.light], hit.ng, -ray.d);
+    if (segments >= max_segments) break;  // a photon needs at least one more segment
+
+    const Material& mat = scene.materials[hit.material];
+    const Frame frame(hit.ns);
+    const Vec3 wo = frame.to_local(-ray.d);
+    const uint32_t v = uint32_t(segments - 1);
+    const float u_lobe = sampler.at(dims::vertex(v, dims::kLobe));
+    if (stores_visible_point(mat, settings.glossy_roughness)) {
+      const float p_gather = non_delta_probability(mat, wo);
+      if (u_lobe < p_gather) {
+        vp->p = hit.p;
+        vp->n_front = dot(hit.ng, -ray.d) >= 0.f ? hit.ng : -hit.ng;
+        vp->ns = hit.ns;
+        vp->wo = -ray.d;
+        vp->throughput = beta * (1.f / p_gather);
+        vp->material = hit.material;
+        vp->segments = uint32_t(segments);
+        vp->valid = true;
+        break;
+      }
+      // u_lobe >= p_gather: bsdf_sample below picks a delta lobe with the same number.
+    }
+    BsdfSample bs;
+    const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
+    if (!bsdf_sample(mat, wo, u_lobe, ub, TransportMode::radiance, &bs)) break;
+    beta *= bs.weight;
+    if (is_black(beta)) break;
+    if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
+      const float q = fminf(1.f, max_component(beta));
+      if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) break;
+      beta *= 1.f / q;
+    }
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+  }
+  *direct = radiance;
+}
+
+// What a photon deposit needs: the visible points of this iteration in a hash grid (payload =
+// pixel), their per-channel fixed-point flux sums, and the global radius.
+struct SppmGatherView {
+  HashGridView grid;
+  const VisiblePoint* points = nullptr;
+  uint64_t* flux = nullptr;     // 3 per visible point
+  float radius = 0.f;
+  float inv_quantum = 0.f;      // 1 / (reference photon power * 2^-32)
+  int max_segments = 0;
+};
+
+// Adds a photon arriving at p from direction wi (unit, pointing away from the surface towards where
+// the photon came from) after `segments` light-path segments to every visible point in range.
+PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g, const Vec3& p, const Vec3& wi,
+                                const Rgb& power, int segments) {
+  uint32_t gathered = 0;
+  g.grid.for_each_in_radius(p, g.radius, [&](const GridRecord& rec, float) {
+    const VisiblePoint& vp = g.points[rec.payload];
+    if (int(vp.segments) + segments > g.max_segments) return;  // the joined path would be too long
+    if (dot(vp.n_front, wi) <= 0.f) return;                    // photons from the back side do not count
+    const Frame frame(vp.ns);
+    const Rgb f = bsdf_eval(scene.materials[vp.material], frame.to_local(vp.wo), frame.to_local(wi), TransportMode::radiance);
+    if (is_black(f)) return;
+    const Rgb c = f * power;
+    if (!all_finite(c)) return;
+    uint64_t* dst = g.flux + 3 * size_t(rec.payload);
+    for (int ch = 0; ch < 3; ++ch) {
+      const double q = fmin(double(c[ch]) * double(g.inv_quantum) + 0.5, kFluxFixedMax);
+      if (q >= 1.0) atomic_fetch_add(dst + ch, uint64_t(q));
+    }
+    ++gathered;
+  });
+  return gathered;
+}
+
+// Largest power of an unscattered photon over all lights (flux / selection probability): the
+// reference of the fixed-point flux quantum. Evaluated on the host once per render.
+PS_INLINE float max_photon_power(const SceneView& scene) {
+  float m = 0.f;
+  for (uint32_t i = 0; i < scene.num_lights; ++i) {
+    const Light& l = scene.lights[i];
+    const float p = scene.light_selection.probability(i);
+    if (!(p > 0.f)) continue;
+    float scale = 0.f;
+    const float disk = kPi * scene.bounds.radius * scene.bounds.radius;
+    switch (l.type) {
+      case LightType::area_triangle: {
+        const Triangle& tri = scene.triangles[l.shape];
+        scale = kPi * triangle_area(scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]]);
+        break;
+      }
+      case LightType::area_sphere: scale = kPi * kFourPi * scene.spheres[l.shape].radius * scene.spheres[l.shape].radius; break;
+      case LightType::point: scale = kFourPi; break;
+      case LightType::directional: scale = disk; break;
+      case LightType::environment: scale = kFourPi * disk; break;
+    }
+    if (l.two_sided && is_area_light(l)) scale *= 2.f;
+    m = fmaxf(m, max_component(l.value) * scale / p);
+  }
+  return m;
+}
+
+struct PhotonCounters {
+  uint64_t deposits = 0;  // photon vertices that queried the grid
+  uint64_t gathered = 0;  // (photon vertex, visible point) pairs that added flux
+};
+
+// One photon path: emitted by sample_emission (lights/light_emission.h), scattered with importance
+// transport, depositing at every non-delta vertex including the first (SPPM has no separate direct
+// lighting).
+template <typename Tracer>
+PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
+                             const SppmSettings& settings, const SppmGatherView& gather, PathCounters* counters,
+                             PhotonCounters* photons) {
+  if (scene.num_lights == 0) return;
+  float select_prob;
+  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
+  if (!(select_prob > 0.f)) return;
+  const Light& light = scene.lights[li];
+  EmissionSample e;
+  const Point2 u_pos{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
+  const Point2 u_dir{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
+  if (!sample_emission(scene, light, u_pos, u_dir, &e)) return;
+  Rgb beta = e.weight * (1.f / select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
+  Ray ray = is_area_light(light) ? spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon) : Ray{e.p, e.d, 0.f, kInfinity};
+  // The shortest camera side is one segment, so light paths longer than max - 1 cannot join.
+  for (int segments = 1; segments < gather.max_segments; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) break;
+    const Material& mat = scene.materials[hit.material];
+    const Vec3 wi_world = -ray.d;
+    if (bsdf_has_non_delta(mat)) {
+      ++photons->deposits;
+      photons->gathered += sppm_deposit(scene, gather, hit.p, wi_world, beta, segments);
+    }
+    if (segments + 1 >= gather.max_segments) break;
+    const Frame frame(hit.ns);
+    const uint32_t v = uint32_t(segments - 1);
+    BsdfSample bs;
+    const Point2 ub{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)),
+                    sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
+    // Importance transport: the fixed direction is where the photon came from.
+    if (!bsdf_sample(mat, frame.to_local(wi_world), sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub,
+                     TransportMode::importance, &bs))
+      break;
+    const float before = max_component(beta);
+    beta *= bs.weight;
+    if (is_black(beta) || !all_finite(beta)) break;
+    // Roulette on the change of power, so surviving photons keep roughly their emitted power.
+    if (settings.roulette_start >= 0 && segments >= settings.roulette_start - 1) {
+      const float q = fminf(1.f, max_component(beta) / before);
+      if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) break;
+      beta *= 1.f / q;
+    }
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+  }
+}
+
+}  // namespace pathspace
