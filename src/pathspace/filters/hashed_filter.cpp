@@ -50,7 +50,9 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PinholeCa
       height_(camera.height),
       table_(uint64_t(std::max(1.0, double(settings.table_factor) * double(pixels))), settings.max_probes) {
   if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
-  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1) throw Error("bin counts must be at least 1");
+  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
+      settings.key.direction_bins > kMaxKeyBins)
+    throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
   // The projected size of one pixel at distance 1 (sec. 3.1.1: "s-times the projected size of a pixel").
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
   if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
@@ -63,13 +65,21 @@ void HashedFilter::reset_stats() {
   stats_ = fresh;
 }
 
+namespace {
+// Jitter is a pure function of (seed, pass, record slot): identical for any thread count.
+uint64_t pass_jitter_hash(uint64_t seed, uint32_t pass) { return hash_combine(mix64(seed ^ 0x4a17e5ull), pass); }
+}  // namespace
+
 VoxelKey HashedFilter::key_of(const VertexBuffer& b, size_t i, uint64_t seed, uint32_t pass) const {
-  // Jitter is a pure function of (seed, pass, record slot): identical for any thread count.
-  const uint64_t h = hash_combine(hash_combine(mix64(seed ^ 0x4a17e5ull), pass), i);
+  return key_for_pass(b, i, pass_jitter_hash(seed, pass));
+}
+
+VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pass_hash) const {
+  const uint64_t h = mix64(pass_hash + uint64_t(i) * kGoldenGamma);
   const VoxelKeyInput in{b.position[i],        b.geometric_normal[i], b.shading_normal[i], b.incident[i],
                          b.previous_position[i], b.prefix_distance[i], b.roughness[i],     b.layer[i],
                          b.selected[i]};
-  return make_voxel_key(settings_.key, in, bits_to_unit_float(h), bits_to_unit_float(mix64(h)));
+  return make_voxel_key(settings_.key, in, bits_to_unit_float(h), bits_to_unit_float(h << 24));
 }
 
 void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
@@ -142,6 +152,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   AccumulateCounters counters;
   const bool combine = settings_.local_combining;
+  const uint64_t pass_hash = pass_jitter_hash(seed, pass);
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache local;
@@ -190,7 +201,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       for (int r = 0; r < b.count[path]; ++r) {
         const size_t i = b.slot(path, r);
         ++vertices;
-        keys_[i] = key_of(b, i, seed, pass);
+        keys_[i] = key_for_pass(b, i, pass_hash);
         uint64_t fixed[3];
         if (!to_fixed_point(b.contribution[i], fixed)) {
           slots_[i] = kNotAccumulated;

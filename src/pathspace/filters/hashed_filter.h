@@ -54,6 +54,7 @@ class HashedFilter final : public PathSpaceFilter {
   VoxelKey key_of(const VertexBuffer& buffer, size_t slot, uint64_t seed, uint32_t pass) const;
 
  private:
+  VoxelKey key_for_pass(const VertexBuffer& buffer, size_t slot, uint64_t pass_hash) const;
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
   Rgb neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const;

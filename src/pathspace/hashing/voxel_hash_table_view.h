@@ -14,7 +14,7 @@
 
 namespace pathspace {
 
-inline constexpr uint32_t kEmptyFingerprint = 0;
+inline constexpr uint32_t kEmptyFingerprint = kEmptyFingerprintValue;
 inline constexpr int kFingerprintsPerLine = 16;  // 64-byte line / 4-byte fingerprint
 // Fixed point: 2^-22 resolution; values above 2^18 are not accumulated (the vertex keeps its own
 // contribution) so that 2^22 vertices can never overflow a 64-bit sum.

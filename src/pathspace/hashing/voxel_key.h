@@ -41,6 +41,7 @@ struct VoxelKey {
 };
 
 // The two hashes of algorithm 1: the table index and a 32-bit fingerprint (0 is the empty sentinel).
+inline constexpr uint32_t kEmptyFingerprintValue = 0;
 struct VoxelHash {
   uint64_t index = 0;
   uint32_t fingerprint = 0;
@@ -120,18 +121,27 @@ PS_INLINE VoxelKey coarser_key(VoxelKey k) {
   return k;
 }
 
+// The key packed into two words without loss: word 0 holds cell x and y, word 1 cell z, the level
+// and the attributes (bins are limited to kMaxKeyBins per axis so they fit in 10 bits).
+inline constexpr int kMaxKeyBins = 31;
+
+PS_INLINE uint64_t key_position_word(const VoxelKey& k) { return (uint64_t(uint32_t(k.cell[0])) << 32) | uint32_t(k.cell[1]); }
+
+PS_INLINE uint64_t key_attribute_word(const VoxelKey& k, bool with_normal) {
+  return (uint64_t(uint32_t(k.cell[2])) << 32) | (uint64_t(uint8_t(k.level)) << 24) | (uint64_t(k.layer & 3u) << 22) |
+         (uint64_t(k.selected & 3u) << 20) | (uint64_t(k.direction_bin & 1023u) << 10) |
+         (with_normal ? uint64_t(k.normal_bin & 1023u) : 0u);
+}
+
 PS_INLINE VoxelHash hash_voxel_key(const VoxelKey& k, NormalKeyMode normal_mode) {
-  const uint64_t position = hash_combine(hash_combine(hash_combine(mix64(uint64_t(uint16_t(k.level)) | 0x9e3700000000ull), uint32_t(k.cell[0])),
-                                                      uint32_t(k.cell[1])),
-                                         uint32_t(k.cell[2]));
-  const uint64_t attributes = (uint64_t(k.direction_bin) << 16) | (uint64_t(k.selected) << 8) | k.layer;
-  const uint64_t with_attributes = hash_combine(position, attributes);
+  const uint64_t position = key_position_word(k);
   VoxelHash h;
-  h.index = normal_mode == NormalKeyMode::key ? hash_combine(with_attributes, k.normal_bin) : with_attributes;
-  // A second, different hash of the full key (sec. 3.2.1): a different mix of all components.
-  const uint64_t f = mix64(hash_combine(with_attributes ^ 0x5bd1e9955bd1e995ull, uint64_t(k.normal_bin) * 0x2545f4914f6cdd1dull));
+  // Table index: a fast mix of the key (with or without the normal, sec. 3.2.2).
+  h.index = mix64(position ^ mix64(key_attribute_word(k, normal_mode == NormalKeyMode::key)));
+  // Fingerprint: a second, different hash of the full key (sec. 3.2.1).
+  const uint64_t f = mix64(mix64(key_attribute_word(k, true) ^ 0x5bd1e9955bd1e995ull) + position * 0x2545f4914f6cdd1dull);
   h.fingerprint = uint32_t(f >> 32);
-  if (h.fingerprint == 0) h.fingerprint = 1;  // 0 marks empty cells
+  if (h.fingerprint == kEmptyFingerprintValue) h.fingerprint = 1;
   return h;
 }
 
