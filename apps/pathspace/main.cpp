@@ -1,4 +1,4 @@
-// pathspace command line: `render` and `info` (docs/cli.md). Usage mistakes exit with status 2 and
+// pathspace command line: `render`, `info` and `compare` (docs/cli.md). Usage mistakes exit with status 2 and
 // one line on stderr; failures while running exit with status 1.
 #include <cstdio>
 #include <exception>

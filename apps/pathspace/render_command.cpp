@@ -61,8 +61,12 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
   s.pt.mis = o.mis == "balance" ? MisHeuristic::balance : MisHeuristic::power;
   if (!s.pt.nee && !s.pt.bsdf_sampling) throw UsageError("--no-nee and --no-bsdf-sampling together would render black");
   apply_filter_options(o.filter, &s);
+  if (s.filter.kind != FilterKind::none && o.integrator != "pt")
+    throw UsageError("--filter " + o.filter.filter + " needs --integrator pt (path space filtering filters camera paths)");
   apply_lt_options(o.lt, o.integrator, &s);
+  apply_bpt_options(o.bpt, o.integrator, &s);
   apply_sppm_options(o.sppm, o.integrator, &s);
+  apply_pclt_options(o.pclt, o.integrator, &s);
   return s;
 }
 
@@ -85,7 +89,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)");
   cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file");
-  cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm)");
+  cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
   cmd->add_flag("--no-nee", o->no_nee, "PT: no next event estimation (BSDF sampling only)");
   cmd->add_flag("--no-bsdf-sampling", o->no_bsdf_sampling, "PT: emission only through next event estimation");
@@ -95,7 +99,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->capture_default_str();
   add_filter_options(cmd, &o->filter);
   add_lt_options(cmd, &o->lt);
+  add_bpt_options(cmd, &o->bpt);
   add_sppm_options(cmd, &o->sppm);
+  add_pclt_options(cmd, &o->pclt);
   return cmd;
 }
 
@@ -138,7 +144,7 @@ int run_render_command(const RenderOptions& o) {
   request.time_limit_s = o.time_s;
   request.threads = o.threads;
   request.settings = settings;
-  request.want_aovs = o.filter.aovs;
+  request.want_aovs = o.filter.aovs || bpt_wants_aovs(o.bpt);
   ProgressReporter progress(stdout, film.pixel_count(), o.quiet);
   request.on_progress = [&](const RenderProgress& p) { progress.update(p); };
   if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", info->name, info->id, res.width, res.height, o.integrator);
@@ -159,7 +165,7 @@ int run_render_command(const RenderOptions& o) {
     written.push_back(path);
   }
   RenderRunInfo run{info->name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
-                    fmt::format("{}", fmt::join(outputs, ","))};
+                    fmt::format("{}", fmt::join(written, ","))};
   if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
   if (!o.quiet) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),

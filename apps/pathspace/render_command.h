@@ -7,8 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bpt_options.h"
 #include "filter_options.h"
 #include "lt_options.h"
+#include "pclt_options.h"
 #include "sppm_options.h"
 
 namespace pathspace::cli {
@@ -33,7 +35,9 @@ struct RenderOptions {
   std::string light_selection = "uniform";
   FilterOptions filter;
   LtOptions lt;
+  BptOptions bpt;
   SppmOptions sppm;
+  PcltOptions pclt;
 };
 
 // Adds the `render` subcommand to app; the options are stored in *options.

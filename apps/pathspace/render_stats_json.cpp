@@ -24,6 +24,7 @@ std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run
   j["seed"] = stats.seed;
   j["build_type"] = build_type();
   j["outputs"] = run.outputs;
+  j["integrator_report"] = stats.report;  // e.g. the hashed filter's table statistics
   return j.dump(2) + "\n";
 }
 

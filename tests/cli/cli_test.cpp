@@ -97,6 +97,20 @@ TEST_F(CliTest, BadNumbersAreUsageErrors) {
   expect_usage_error("render --spp 4 --time 3", "excludes");
   expect_usage_error("render --mis bogus", "--mis");
   expect_usage_error("render --no-such-flag", "no-such-flag");
+  expect_usage_error("render -i lt --filter hashed", "--filter");
+  expect_usage_error("render --filter bogus", "--filter");
+  expect_usage_error("render --psf-scale 0", "--psf-scale");
+  expect_usage_error("render --aov", "--aov");
+}
+
+TEST_F(CliTest, HashedFilterWritesAovsAndReportsTheTable) {
+  const CliResult r = run(std::string("render e_c --filter hashed --aov -o f.exr --stats s.json ") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* aov : {"voxel", "count", "level", "probes"})
+    EXPECT_TRUE(fs::exists(dir_ / (std::string("f.aov-") + aov + ".exr"))) << aov;
+  const auto json = nlohmann::json::parse(read_all(dir_ / "s.json"));
+  EXPECT_NE(json.at("integrator_report").get<std::string>().find("hashed filter"), std::string::npos);
+  EXPECT_NE(json.at("outputs").get<std::string>().find("f.aov-voxel.exr"), std::string::npos);
 }
 
 TEST_F(CliTest, UnsupportedOutputFormatIsAUsageError) { expect_usage_error(std::string("render -o out.jpg ") + kSmall, "out.jpg"); }

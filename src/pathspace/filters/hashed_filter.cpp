@@ -53,7 +53,7 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PinholeCa
   if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
       settings.key.direction_bins > kMaxKeyBins)
     throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
-  // The projected size of one pixel at distance 1 (sec. 3.1.1: "s-times the projected size of a pixel").
+  // The projected size of one pixel at distance 1 (sec. 4: "s-times the projected size of a pixel").
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
   if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
   stats_.cells = table_.cells();
