@@ -73,18 +73,12 @@ TEST(HashedFilter, LocalCombiningDoesNotChangeTheResult) {
   EXPECT_TRUE(bit_identical(combined.mean, render_with(scene, s, 2).mean));
 }
 
-TEST(HashedFilter, FilteringChangesTheImageButNotItsBrightness) {
+TEST(HashedFilter, FilteringChangesTheImage) {
+  // Brightness is checked exactly by the furnace tests and image quality by the relMSE regression.
   const Scene scene = make_builtin_scene("cornell-empty-area", 64, 64);
-  IntegratorSettings plain;
-  const auto p = render_with(scene, plain, 4);
+  const auto p = render_with(scene, IntegratorSettings{}, 4);
   const auto f = render_with(scene, hashed_settings(), 4);
   EXPECT_FALSE(bit_identical(p.mean, f.mean));
-  double sp = 0, sf = 0;
-  for (size_t i = 0; i < p.mean.size(); ++i) {
-    sp += average(p.mean.pixels[i]);
-    sf += average(f.mean.pixels[i]);
-  }
-  EXPECT_NEAR(sf / sp, 1.0, 0.03) << "averaging within voxels keeps the energy (coarse check; furnace tests are exact)";
 }
 
 TEST(HashedFilter, TinyTableFallsBackToUnfilteredContributions) {
