@@ -1,4 +1,5 @@
-// CLI options of bidirectional path tracing (bpt_options.h).
+// CLI options of bidirectional path tracing (bpt_options.h): --bpt-strategy-images writes the
+// integrator's per-strategy AOVs through render_command's --aov file naming.
 #include "bpt_options.h"
 
 #include "usage_error.h"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include "pathspace/integrators/render.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "progress_reporter.h"
 #include "render_stats_json.h"
@@ -52,6 +54,22 @@ void check_integrator(const std::string& name) {
   throw UsageError(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(names, ", ")));
 }
 
+std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
+  if (text.empty()) return std::nullopt;
+  Vec3 v;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3 || !all_finite(v))
+    throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}'", option, text));
+  return v;
+}
+
+// A positional scene argument names a file when it has a scene-file extension or names an existing
+// file that is not also a built-in scene name.
+bool names_scene_file(const std::string& scene) {
+  std::error_code ec;
+  return is_scene_file(scene) || (!find_builtin_scene(scene) && std::filesystem::is_regular_file(scene, ec));
+}
+
 IntegratorSettings integrator_settings(const RenderOptions& o) {
   IntegratorSettings s;
   s.seed = o.seed;
@@ -74,7 +92,7 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
-  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes')")
+  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.ply/.obj file")
       ->default_str(kDefaultSceneName);
   cmd->add_option("-i,--integrator", o->integrator, "Integrator (see 'pathspace info --integrators')")
       ->capture_default_str();
@@ -82,7 +100,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp")
       ->check(CLI::Range(1e-3, 1e7))
       ->excludes(spp);
-  cmd->add_option("-r,--resolution", o->resolution, "Image size WxH (default 512x512)");
+  cmd->add_option("-r,--resolution", o->resolution, "Image size WxH (default 512x512, or the scene file's)");
+  cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
+  cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
+  cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
+  cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(CLI::Range(0.01, 179.0));
   cmd->add_option("-d,--max-depth", o->max_depth, "Path length limit in segments, camera ray included (default: the scene's)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
@@ -108,12 +130,22 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
 int run_render_command(const RenderOptions& o) {
   // Validate everything before the (possibly long) render.
   const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
-  const BuiltinSceneInfo* info = find_builtin_scene(scene_name);
-  if (!info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list");
+  const bool from_file = names_scene_file(scene_name);
+  const BuiltinSceneInfo* info = from_file ? nullptr : find_builtin_scene(scene_name);
+  if (!from_file && !info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.ply/.obj file");
+  SceneLoadOptions load_options;
+  load_options.camera_position = parse_vec3(o.camera_pos, "--camera-pos");
+  load_options.camera_target = parse_vec3(o.camera_target, "--camera-target");
+  load_options.camera_up = parse_vec3(o.camera_up, "--camera-up");
+  if (o.fov > 0.f) load_options.fov_degrees = o.fov;
+  if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees))
+    throw UsageError("--camera-pos, --camera-target, --camera-up and --fov apply to scene files only");
   check_integrator(o.integrator);
-  const Resolution res = parse_resolution(o.resolution);
+  Resolution res = parse_resolution(o.resolution);
+  if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   const IntegratorSettings settings = integrator_settings(o);
-  const std::vector<std::string> outputs = output_paths(o, info->name);
+  const std::string display_name = from_file ? std::filesystem::path(scene_name).stem().string() : info->name;
+  const std::vector<std::string> outputs = output_paths(o, display_name);
   for (const std::string& path : outputs) {
     try {
       image_format_from_path(path);
@@ -132,7 +164,17 @@ int run_render_command(const RenderOptions& o) {
     check_output_writable(o.variance_path);
   }
 
-  Scene scene = make_builtin_scene(info->name, res.width, res.height);
+  SceneFileSettings file_settings;
+  Scene scene;
+  if (from_file) {
+    std::vector<std::string> warnings;
+    scene = load_scene(scene_name, load_options, &warnings, &file_settings);
+    for (const std::string& w : warnings) fmt::print(stderr, "{}\n", w);
+    res.width = scene.camera.width;
+    res.height = scene.camera.height;
+  } else {
+    scene = make_builtin_scene(info->name, res.width, res.height);
+  }
   scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
   scene.finalize();
   Accel accel(scene);
@@ -140,14 +182,14 @@ int run_render_command(const RenderOptions& o) {
 
   RenderRequest request;
   request.integrator = o.integrator;
-  request.spp = o.spp > 0 ? o.spp : 16;
+  request.spp = o.spp > 0 ? o.spp : (file_settings.spp > 0 ? uint32_t(file_settings.spp) : 16);
   request.time_limit_s = o.time_s;
   request.threads = o.threads;
   request.settings = settings;
   request.want_aovs = o.filter.aovs || bpt_wants_aovs(o.bpt);
   ProgressReporter progress(stdout, film.pixel_count(), o.quiet);
   request.on_progress = [&](const RenderProgress& p) { progress.update(p); };
-  if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", info->name, info->id, res.width, res.height, o.integrator);
+  if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", display_name, from_file ? scene_name : info->id, res.width, res.height, o.integrator);
   const RenderStats stats = render(scene, accel, request, film);
   progress.finish();
 
@@ -164,14 +206,16 @@ int run_render_command(const RenderOptions& o) {
     write_image(path, aov.image);
     written.push_back(path);
   }
-  RenderRunInfo run{info->name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
+  RenderRunInfo run{display_name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
                     fmt::format("{}", fmt::join(written, ","))};
   if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
   if (!o.quiet) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    fmt::print("\n{}wrote {}\n", stats.report, fmt::join(written, ", "));
+    std::string report = stats.report;
+    if (!report.empty() && report.back() != '\n') report += '\n';
+    fmt::print("\n{}wrote {}\n", report, fmt::join(written, ", "));
   }
   return 0;
 }

@@ -16,7 +16,10 @@
 namespace pathspace::cli {
 
 struct RenderOptions {
-  std::string scene;  // built-in scene name or id
+  std::string scene;  // built-in scene name or id, or a scene file (.pbrt, .ply, .obj)
+  // Camera for scene files ("x,y,z"; empty: the file's camera, or framing the bounds for OBJ/PLY).
+  std::string camera_pos, camera_target, camera_up;
+  float fov = 0.f;  // degrees, shorter image axis; 0: the file's
   std::string integrator = "pt";
   uint32_t spp = 0;        // 0: unset
   double time_s = 0.0;     // 0: unset

@@ -14,9 +14,10 @@ struct FileLoc {
 
   std::string to_string() const {
     if (file.empty()) return {};
+    // Appended piecewise: `s += ":" + std::to_string(n)` trips GCC 12's false -Wrestrict (PR 105329).
     std::string s = file;
-    if (line > 0) s += ":" + std::to_string(line);
-    if (line > 0 && column > 0) s += ":" + std::to_string(column);
+    if (line > 0) s.append(1, ':').append(std::to_string(line));
+    if (line > 0 && column > 0) s.append(1, ':').append(std::to_string(column));
     return s;
   }
 };

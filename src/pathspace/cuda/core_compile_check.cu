@@ -3,6 +3,7 @@
 // tracing with splats) with a trivial device tracer, so code that breaks the device-safe subset
 // fails the build early. Nothing here runs; no GPU is needed.
 #include "pathspace/hashing/voxel_hash_table_view.h"
+#include "pathspace/integrators/bpt/bpt_kernel.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 
@@ -43,6 +44,14 @@ __global__ void lt_compile_check(SceneView scene, LtSettings settings, SplatFilm
   if (i >= n) return;
   PathCounters counters;
   lt_trace_path(scene, NullTracer{}, Sampler(0, i, 0), settings, 1.f / float(n), film, &counters);
+}
+
+// Bidirectional path tracing: both subpaths, all connections, t = 1 splats.
+__global__ void bpt_compile_check(SceneView scene, BptSettings settings, BptFilms films, Rgb* out, uint32_t n) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  PathCounters counters;
+  out[i] = bpt_trace_pixel(scene, NullTracer{}, Sampler(0, i, 0), Sampler(0, i, uint64_t(1) << 63), settings, i, films, &counters);
 }
 
 }  // namespace pathspace

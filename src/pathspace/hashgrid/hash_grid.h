@@ -23,6 +23,10 @@ struct HashGridConfig {
   // or more records, so 2 keeps the load factor at most 1/2.
   float slots_per_record = 2.f;
   uint32_t table_slots = 0;  // fixed table size (power of two) instead, e.g. to bound memory
+  // After build(): store each cell's records contiguously, in ascending payload order. Queries then
+  // read consecutive memory instead of chasing links scattered in insertion order, and the order
+  // within a cell (hence float sums over neighbours) no longer depends on thread timing.
+  bool compact = true;
 };
 
 struct HashGridStats {
@@ -78,6 +82,7 @@ class HashGrid {
       }
     });
     counters_.appended = uint32_t(n);
+    if (config_.compact) compact();
   }
   void build(std::span<const Vec3> positions, float radius) {
     build(positions.size(), radius, [&](size_t i) { return positions[i]; });
@@ -94,6 +99,38 @@ class HashGrid {
     view().for_each_in_radius(p, radius, f);
   }
 
+  // Rewrites the records cell by cell (see HashGridConfig::compact); links stay valid, so views and
+  // kernels are unchanged. Records left unlinked by a probe failure were unreachable and are gone.
+  void compact() {
+    const size_t table = slots_.size();
+    cell_start_.assign(table + 1, 0);
+    parallel_for(table, size_t(1) << 12, [&](size_t b, size_t e) {
+      for (size_t s = b; s < e; ++s) {
+        uint32_t count = 0;
+        for (uint32_t r = slots_[s].head; r != kNoRecord; r = records_[r].next) ++count;
+        cell_start_[s + 1] = count;
+      }
+    });
+    for (size_t s = 0; s < table; ++s) cell_start_[s + 1] += cell_start_[s];  // exclusive prefix sum
+    order_.resize(cell_start_[table]);
+    compacted_.resize(records_.size());
+    parallel_for(table, size_t(1) << 12, [&](size_t b, size_t e) {
+      for (size_t s = b; s < e; ++s) {
+        const uint32_t begin = cell_start_[s], end = cell_start_[s + 1];
+        if (begin == end) continue;
+        uint32_t k = begin;
+        for (uint32_t r = slots_[s].head; r != kNoRecord; r = records_[r].next) order_[k++] = r;
+        std::sort(order_.begin() + begin, order_.begin() + end);
+        for (uint32_t i = begin; i < end; ++i) {
+          compacted_[i] = records_[order_[i]];
+          compacted_[i].next = i + 1 < end ? i + 1 : kNoRecord;
+        }
+        slots_[s].head = begin;
+      }
+    });
+    records_.swap(compacted_);
+  }
+
   uint32_t status() const { return counters_.status; }
   size_t record_count() const { return std::min<size_t>(counters_.appended, records_.size()); }
   const GridGeometry& geometry() const { return geometry_; }
@@ -106,7 +143,8 @@ class HashGrid {
     s.probe_failures = counters_.probe_failures;
     s.dropped = counters_.dropped;
     s.status = counters_.status;
-    s.bytes = slots_.capacity() * sizeof(GridSlot) + records_.capacity() * sizeof(GridRecord);
+    s.bytes = slots_.capacity() * sizeof(GridSlot) + (records_.capacity() + compacted_.capacity()) * sizeof(GridRecord) +
+              (cell_start_.capacity() + order_.capacity()) * sizeof(uint32_t);
     const uint32_t mask = uint32_t(slots_.size() - 1);
     double probe_sum = 0.0;
     for (uint32_t slot = 0; slot < slots_.size(); ++slot) {
@@ -130,6 +168,8 @@ class HashGrid {
   std::vector<GridRecord> records_;
   GridCounters counters_;
   GridGeometry geometry_;
+  std::vector<uint32_t> cell_start_, order_;  // compaction scratch, reused
+  std::vector<GridRecord> compacted_;
 };
 
 }  // namespace pathspace

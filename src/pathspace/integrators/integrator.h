@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "pathspace/film/film.h"
+#include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/filters/filter_settings.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
+#include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
 
@@ -26,6 +28,8 @@ struct IntegratorSettings {
   LtSettings lt;
   FilterSettings filter;
   SppmSettings sppm;
+  PcltSettings pclt;
+  BptSettings bpt;
 };
 
 // A named debug image an integrator can provide after rendering (e.g. the filter's voxel ids).

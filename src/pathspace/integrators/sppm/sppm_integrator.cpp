@@ -91,17 +91,15 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   });
   eye_s_ += seconds_since(t);
 
-  // (b) Hash grid over this iteration's visible points, cells 2r. Records go through the append
-  // buffer in arbitrary order; that order never reaches the image (fixed-point sums).
+  // (b) Hash grid over this iteration's visible points, cells 2r, built with record i = pixel i
+  // (pixels without a visible point have no position and are skipped) and compacted cell by cell
+  // so that the photon pass reads each cell's points from consecutive memory.
   t = std::chrono::steady_clock::now();
-  grid_.prepare(n, r);
+  const Vec3 no_point(NAN, NAN, NAN);
+  grid_.build(n, r, [&](size_t pixel) { return points_[pixel].valid ? points_[pixel].p : no_point; });
   const HashGridView grid = grid_.view();
-  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
-    for (size_t pixel = begin; pixel < end; ++pixel)
-      if (points_[pixel].valid) grid.insert(points_[pixel].p, uint32_t(pixel));
-  });
   const HashGridStats gs = grid_.stats();
-  grid_failures_ += gs.probe_failures + gs.dropped;
+  grid_failures_ += gs.probe_failures + (gs.dropped - (n - size_t(shared.points)));
   grid_s_ += seconds_since(t);
 
   // (c) Photon pass.

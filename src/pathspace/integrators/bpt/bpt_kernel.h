@@ -1,0 +1,422 @@
+// Bidirectional path tracing for one pixel (device-safe, templated on the ray caster "Tracer" like
+// pt_trace_path): one light subpath and one camera subpath, combined by every strategy (s, t) —
+// light hits (s = 0), next event estimation (s = 1), inner connections and camera connections
+// (t = 1, splatted as in lt_kernel.h) — with MIS weights from the recursive quantities dVCM / dVC of
+// Georgiev et al. 2012 (VCM tech. report, eqs. 31-47, merging terms dropped), as SmallVCM's BPT does.
+// Throughput follows Veach 1997 (§10.2); light subpaths use the adjoint shading-normal factor (§5.3).
+#pragma once
+
+#include "pathspace/film/splat_film.h"
+#include "pathspace/integrators/bpt/bpt_settings.h"
+#include "pathspace/integrators/common/dimensions.h"
+#include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/lights/light_emission.h"
+#include "pathspace/materials/bsdf.h"
+#include "pathspace/sampling/sampler.h"
+
+namespace pathspace {
+
+// Where a pixel's contributions go. Camera-side strategies (t >= 2) are returned to the caller (one
+// camera sample per pixel); t = 1 is splatted, already divided by the number of light paths.
+struct BptFilms {
+  SplatFilmView splats;
+  const SplatFilmView* strategies = nullptr;  // bpt_strategy_count(strategy_max_length) images, or nullptr
+  int strategy_max_length = 0;
+  uint32_t light_paths = 1;                   // light subpaths per pass (= pixels: one per camera path)
+};
+
+namespace bpt_detail {
+
+// MIS quantities are kept already raised to the heuristic's power (SmallVCM's Mis()), so that the
+// recursions of the tech. report hold for the balance (x) and power (x^2) heuristics alike.
+PS_INLINE float mis(MisHeuristic h, float x) { return h == MisHeuristic::power ? x * x : x; }
+
+// A stored light-subpath vertex on a surface with a non-delta lobe (only those can be connected).
+struct LightVertex {
+  Vec3 p, ng, ns;
+  Vec3 wo;             // world, unit, towards the previous light-subpath vertex
+  Rgb beta;            // light-subpath throughput up to this vertex, its BSDF excluded
+  float cos_in = 0.f;  // |wo . ng|
+  float dvcm = 0.f, dvc = 0.f;
+  uint32_t material = 0;
+  int segments = 0;    // segments from the light to this vertex (1: first hit)
+};
+
+PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const Vec3& p) {
+  if (l.type == LightType::area_triangle) {
+    const Triangle& tri = scene.triangles[l.shape];
+    return triangle_normal(scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]]);
+  }
+  return sphere_normal(scene.spheres[l.shape], p);
+}
+
+PS_INLINE uint32_t raster_pixel(const PinholeCamera& cam, float rx, float ry) {
+  const int i = min_int(int(rx), cam.width - 1), j = min_int(int(ry), cam.height - 1);
+  return uint32_t(i) + uint32_t(j) * uint32_t(cam.width);
+}
+
+// Adds v to the (s, t) strategy image when one is kept.
+PS_INLINE void record(const BptFilms& films, int s, int t, uint32_t pixel, const Rgb& v) {
+  if (!films.strategies || s + t - 1 > films.strategy_max_length) return;
+  films.strategies[bpt_strategy_index(s, t)].add(pixel, v);
+}
+
+PS_INLINE void splat(const BptFilms& films, int s, uint32_t pixel, const Rgb& v) {
+  films.splats.add(pixel, v);
+  record(films, s, 1, pixel, v);
+}
+
+// Traces the light subpath, splats its camera connections (t = 1, including the emitter itself:
+// s = 1, t = 1) and stores the connectible vertices that can still take part in an inner connection
+// (at most max_segments - 2 segments from the light). Returns the number stored.
+template <typename Tracer>
+PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const BptSettings& st,
+                              int max_segments, const BptFilms& films, PathCounters* counters, LightVertex* verts) {
+  if (scene.num_lights == 0) return 0;
+  const PinholeCamera& cam = scene.camera;
+  const MisHeuristic h = st.mis;
+  const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
+
+  float select_prob;
+  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
+  if (!(select_prob > 0.f)) return 0;
+  const Light& light = scene.lights[li];
+  EmissionSample e;
+  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
+  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
+  if (!sample_emission(scene, light, up, ud, &e)) return 0;
+  const float emit_pdf_a = e.pdf_a * select_prob;  // of the origin (on the disk for infinite lights)
+  const float emit_pdf = emit_pdf_a * e.pdf_w;     // of origin and direction
+  const bool delta_light = e.delta_position || e.delta_direction;
+
+  // s = 1, t = 1: the emitter point seen by the camera. Its rival is s = 0 (the camera ray hits the
+  // point, density camera_pdf_a per camera sample) against n_light light paths.
+  if (is_area_light(light)) {
+    float rx, ry, dist, factor;
+    Vec3 wi;
+    if (cam.connect(e.p, &rx, &ry, &wi, &dist, &factor)) {
+      const Rgb le = area_light_radiance(light, e.ng, wi);
+      if (!is_black(le)) {
+        ++counters->rays;
+        ++counters->shadow_rays;
+        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, wi, dist, scene.ray_epsilon))) {
+          const float cos_light = fabsf(dot(e.ng, wi));
+          const float w_light = mis(h, factor * cos_light / (n_light * emit_pdf_a));
+          splat(films, 1, raster_pixel(cam, rx, ry), le * (cos_light / emit_pdf_a * factor * inv_paths / (1.f + w_light)));
+        }
+      }
+    }
+  }
+  if (max_segments < 2) return 0;
+
+  Rgb beta = e.weight * (1.f / select_prob);
+  const float beta0 = max_component(beta);
+  Ray ray = e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
+  // Tech. report eq. 31-33 at the emitted vertex: dVC = cos / p_emit (0 for delta lights, which no
+  // camera path can hit). dVCM = p_direct / p_emit needs NEE's density of the origin, which for
+  // cone-sampled spheres depends on the point that would sample it, so it is completed at the first hit.
+  float dvc = delta_light ? 0.f : mis(h, (e.infinite ? 1.f : fabsf(dot(e.n, e.d))) / emit_pdf);
+  float dvcm = 0.f;
+  Vec3 prev_p = e.p;
+  int stored = 0;
+
+  for (int segments = 1; segments < max_segments; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) break;
+    const Vec3 wo_world = -ray.d;
+    const float cos_in = fabsf(dot(wo_world, hit.ng));
+    if (!(cos_in > 0.f)) break;
+    // Distances between vertices, not hit.t: the camera side measures the same segments that way.
+    const float d2 = distance_squared(hit.p, prev_p);
+    if (segments == 1) {
+      float direct_pdf = select_prob;  // point and directional lights: NEE picks the light's only point/direction
+      if (is_area_light(light)) {
+        direct_pdf *= light_pdf(scene, light, hit.p, e.p, e.ng) * fabsf(dot(e.ng, e.d)) / d2;
+      } else if (light.type == LightType::environment) {
+        direct_pdf *= uniform_sphere_pdf();
+      }
+      dvcm = mis(h, direct_pdf / emit_pdf);
+      if (!e.infinite) dvcm *= mis(h, d2);  // infinite lights: no distance to the (proxy) origin
+    } else {
+      dvcm *= mis(h, d2);
+    }
+    dvcm /= mis(h, cos_in);
+    dvc /= mis(h, cos_in);
+
+    const Material& mat = scene.materials[hit.material];
+    const Frame frame(hit.ns);
+    const Vec3 wo = frame.to_local(wo_world);
+    if (bsdf_has_non_delta(mat)) {
+      // t = 1 (PCLT eq. 4 with the LT kernel's adjoint factor), weighted against all camera-side strategies.
+      float rx, ry, dist, factor;
+      Vec3 wi_world;
+      if (cam.connect(hit.p, &rx, &ry, &wi_world, &dist, &factor)) {
+        const Vec3 wi = frame.to_local(wi_world);
+        const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
+        if (!is_black(f)) {
+          ++counters->rays;
+          ++counters->shadow_rays;
+          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, wi_world, dist, scene.ray_epsilon))) {
+            const float cos_cam = fabsf(dot(wi_world, hit.ng));
+            const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
+            const float w_light = mis(h, factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
+            const float scale = fabsf(wo.z) * cos_cam / cos_in * factor * inv_paths / (1.f + w_light);
+            splat(films, segments + 1, raster_pixel(cam, rx, ry), beta * f * scale);
+          }
+        }
+      }
+      if (segments + 2 <= max_segments) {
+        LightVertex& v = verts[stored++];
+        v.p = hit.p;
+        v.ng = hit.ng;
+        v.ns = hit.ns;
+        v.wo = wo_world;
+        v.beta = beta;
+        v.cos_in = cos_in;
+        v.dvcm = dvcm;
+        v.dvc = dvc;
+        v.material = hit.material;
+        v.segments = segments;
+      }
+    }
+    if (segments + 1 >= max_segments) break;  // a further vertex could not connect within the limit
+
+    BsdfSample bs;
+    const uint32_t vi = uint32_t(segments - 1);
+    const Point2 ub{sampler.at(light_dims::vertex(vi, light_dims::kBsdfU)), sampler.at(light_dims::vertex(vi, light_dims::kBsdfU + 1))};
+    if (!bsdf_sample(mat, wo, sampler.at(light_dims::vertex(vi, light_dims::kLobe)), ub, TransportMode::importance, &bs)) break;
+    const Vec3 wi_world = frame.to_world(bs.wi);
+    const float wi_ns = fabsf(bs.wi.z);
+    const float cos_out = fabsf(dot(wi_world, hit.ng));
+    if (!(wi_ns > 0.f) || !(cos_out > 0.f)) break;
+    beta *= bs.weight * (fabsf(wo.z) * cos_out / (cos_in * wi_ns));
+    if (is_black(beta) || !all_finite(beta)) break;
+    if (bs.delta) {
+      // Tech. report eqs. 53-55: a Dirac vertex cannot be connected, and its forward and reverse
+      // (discrete) pdfs cancel.
+      dvcm = 0.f;
+      dvc *= mis(h, cos_out);
+    } else {
+      const float pdf_rev = bsdf_pdf(mat, bs.wi, wo, TransportMode::radiance);
+      dvc = mis(h, cos_out / bs.pdf_w) * (dvc * mis(h, pdf_rev) + dvcm);
+      dvcm = mis(h, 1.f / bs.pdf_w);
+    }
+    // Russian roulette is left out of the MIS densities (the weights still sum to one per path).
+    if (st.roulette_start >= 0 && segments >= st.roulette_start) {
+      const float q = fminf(1.f, max_component(beta) / beta0);
+      if (sampler.at(light_dims::vertex(vi, light_dims::kRoulette)) >= q) break;
+      beta *= 1.f / q;
+    }
+    prev_p = hit.p;
+    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+  }
+  return stored;
+}
+
+// The camera-side state at a connectible vertex.
+struct CameraVertex {
+  const Material* mat;
+  Frame frame;
+  Vec3 p, ng, wo;  // wo local
+  Rgb beta;
+  float dvcm, dvc;
+};
+
+// s = 1: next event estimation from camera vertex z, weighted against BSDF sampling (s = 0) and the
+// light subpath strategies (s >= 2, tech. report eqs. 44-45).
+template <typename Tracer>
+PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, uint32_t vi, MisHeuristic h,
+                           const CameraVertex& z, PathCounters* counters) {
+  float select_prob;
+  const uint32_t li = scene.light_selection.sample(sampler.at(dims::vertex(vi, dims::kLightSelect)), &select_prob);
+  if (!(select_prob > 0.f)) return {};
+  const Light& light = scene.lights[li];
+  LightSample ls;
+  const Point2 ul{sampler.at(dims::vertex(vi, dims::kLightU)), sampler.at(dims::vertex(vi, dims::kLightU + 1))};
+  if (!sample_light(scene, light, z.p, ul, &ls)) return {};
+  const Vec3 wi = z.frame.to_local(ls.wi);
+  const Rgb f = bsdf_eval(*z.mat, z.wo, wi, TransportMode::radiance);
+  if (is_black(f)) return {};
+  const float cos_z = fabsf(dot(ls.wi, z.ng));
+  // Emission density of the light vertex towards z, in z's area measure, over NEE's density of the
+  // light vertex (area measure; solid angle for infinite lights). Light selection cancels.
+  float pa, pw, emit_to_z, direct;
+  if (is_area_light(light)) {
+    const Vec3 n = area_light_normal(scene, light, ls.p);
+    emission_pdf(scene, light, n, -ls.wi, &pa, &pw);
+    emit_to_z = pa * pw * cos_z;
+    direct = ls.pdf_w * fabsf(dot(n, ls.wi));  // both over dist^2, which cancels
+  } else {
+    emission_pdf(scene, light, ls.wi, -ls.wi, &pa, &pw);
+    emit_to_z = pa * pw * cos_z;
+    if (light.type == LightType::point) emit_to_z /= ls.dist * ls.dist;
+    direct = ls.pdf_w;  // 1 for delta lights, the sphere pdf for the environment
+  }
+  if (!(direct > 0.f)) return {};
+  const float pdf_light_w = select_prob * ls.pdf_w;
+  const float cam_dir = ls.delta ? 0.f : bsdf_pdf(*z.mat, z.wo, wi, TransportMode::radiance);
+  const float cam_rev = bsdf_pdf(*z.mat, wi, z.wo, TransportMode::importance);
+  const float w_light = mis(h, cam_dir / pdf_light_w);
+  const float w_camera = mis(h, emit_to_z / direct) * (z.dvcm + z.dvc * mis(h, cam_rev));
+  ++counters->rays;
+  ++counters->shadow_rays;
+  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon))) return {};
+  return f * ls.li * (fabsf(wi.z) / (pdf_light_w * (w_light + 1.f + w_camera)));
+}
+
+// s >= 2, t >= 2: connects camera vertex z to light vertex y (tech. report eqs. 37-41). The light
+// side gets the adjoint shading-normal factor, the camera side f |cos_ns| as in PT.
+template <typename Tracer>
+PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeuristic h, const CameraVertex& z,
+                           const LightVertex& y, PathCounters* counters) {
+  const Vec3 d = y.p - z.p;
+  const float d2 = length_squared(d);
+  if (!(d2 > 0.f)) return {};
+  const float dist = sqrtf(d2);
+  const Vec3 dir = d / dist;  // from z towards y
+  const Vec3 wz = z.frame.to_local(dir);
+  const Rgb fz = bsdf_eval(*z.mat, z.wo, wz, TransportMode::radiance);
+  if (is_black(fz)) return {};
+  const Material& ymat = scene.materials[y.material];
+  const Frame yframe(y.ns);
+  const Vec3 ywo = yframe.to_local(y.wo), ywi = yframe.to_local(-dir);
+  const Rgb fy = bsdf_eval(ymat, ywo, ywi, TransportMode::importance);
+  if (is_black(fy)) return {};
+  const float cos_z = fabsf(dot(dir, z.ng)), cos_y = fabsf(dot(dir, y.ng));
+  const float cam_dir_a = bsdf_pdf(*z.mat, z.wo, wz, TransportMode::radiance) * cos_y / d2;
+  const float cam_rev = bsdf_pdf(*z.mat, wz, z.wo, TransportMode::importance);
+  const float light_dir_a = bsdf_pdf(ymat, ywo, ywi, TransportMode::importance) * cos_z / d2;
+  const float light_rev = bsdf_pdf(ymat, ywi, ywo, TransportMode::radiance);
+  const float w_light = mis(h, cam_dir_a) * (y.dvcm + y.dvc * mis(h, light_rev));
+  const float w_camera = mis(h, light_dir_a) * (z.dvcm + z.dvc * mis(h, cam_rev));
+  ++counters->rays;
+  ++counters->shadow_rays;
+  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon))) return {};
+  const float g = fabsf(wz.z) * fabsf(ywo.z) * cos_y / (y.cos_in * d2);
+  return fz * fy * y.beta * (g / (w_light + 1.f + w_camera));
+}
+
+}  // namespace bpt_detail
+
+// One BPT sample of `pixel`: returns the camera-side estimate (strategies with t >= 2) and splats
+// t = 1 into films.splats. light_sampler must be independent of camera_sampler.
+template <typename Tracer>
+PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sampler& camera_sampler,
+                          const Sampler& light_sampler, const BptSettings& st, uint32_t pixel, const BptFilms& films,
+                          PathCounters* counters) {
+  using namespace bpt_detail;
+  const int max_segments = min_int(st.max_segments > 0 ? st.max_segments : scene.max_path_segments, kBptMaxSegments);
+  const MisHeuristic h = st.mis;
+  const PinholeCamera& cam = scene.camera;
+  LightVertex verts[kBptMaxSegments];
+  const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, films, counters, verts);
+
+  const Sampler& sampler = camera_sampler;
+  const float rx = float(pixel % uint32_t(cam.width)) + sampler.at(dims::kPixelX);
+  const float ry = float(pixel / uint32_t(cam.width)) + sampler.at(dims::kPixelY);
+  Ray ray = cam.generate_ray(rx, ry);
+  // Eq. 31 for the camera: the per-pixel density of the direction is the image's times the pixel count.
+  const float pdf_pixel_w = cam.pdf_direction(ray.d) * float(cam.width) * float(cam.height);
+  if (!(pdf_pixel_w > 0.f)) return {};
+  float dvcm = mis(h, float(films.light_paths) / pdf_pixel_w), dvc = 0.f;
+  Rgb radiance, beta(1.f);
+  Vec3 prev_p = cam.position;
+
+  for (int segments = 1;; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) {
+      // s = 0 on the environment (tech. report eq. 43 without the distance term). Seen directly it
+      // has no rival: the light subpath's proxy origin is not a surface the camera can connect to.
+      if (scene.environment_light >= 0) {
+        const Light& env = scene.lights[scene.environment_light];
+        float w_light = 0.f;
+        if (segments > 1) {
+          const float pick = scene.light_selection.probability(uint32_t(scene.environment_light));
+          float pa, pw;
+          emission_pdf(scene, env, ray.d, -ray.d, &pa, &pw);
+          w_light = mis(h, pick * uniform_sphere_pdf()) * dvcm + mis(h, pick * pa * pw) * dvc;
+        }
+        const Rgb c = beta * env.value * (1.f / (1.f + w_light));
+        radiance += c;
+        record(films, 0, segments + 1, pixel, c);
+      }
+      break;
+    }
+    const float cos_in = fabsf(dot(ray.d, hit.ng));
+    if (!(cos_in > 0.f)) break;
+    const float d2 = distance_squared(hit.p, prev_p);
+    dvcm *= mis(h, d2);
+    dvcm /= mis(h, cos_in);
+    dvc /= mis(h, cos_in);
+
+    if (hit.light != kNoLight) {
+      // s = 0 (eq. 43). Directly seen, its only rival is the emitter splat s = 1, t = 1.
+      const Light& light = scene.lights[hit.light];
+      const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
+      if (!is_black(le)) {
+        const float pick = scene.light_selection.probability(uint32_t(hit.light));
+        float pa, pw;
+        emission_pdf(scene, light, hit.ng, -ray.d, &pa, &pw);
+        float w_light;
+        if (segments == 1) {
+          w_light = mis(h, pick * pa) * dvcm;
+        } else {
+          const float direct_a = pick * light_pdf(scene, light, prev_p, hit.p, hit.ng) * cos_in / d2;
+          w_light = mis(h, direct_a) * dvcm + mis(h, pick * pa * pw) * dvc;
+        }
+        const Rgb c = beta * le * (1.f / (1.f + w_light));
+        radiance += c;
+        record(films, 0, segments + 1, pixel, c);
+      }
+    }
+    if (segments >= max_segments) break;
+
+    const Material& mat = scene.materials[hit.material];
+    const Frame frame(hit.ns);
+    const Vec3 wo = frame.to_local(-ray.d);
+    const uint32_t vi = uint32_t(segments - 1);
+    if (bsdf_has_non_delta(mat)) {
+      const CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc};
+      if (scene.num_lights > 0) {
+        const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
+        radiance += c;
+        record(films, 1, segments + 1, pixel, c);
+      }
+      for (int k = 0; k < nv && verts[k].segments + 1 + segments <= max_segments; ++k) {
+        const Rgb c = beta * connect_vertices(scene, tracer, h, z, verts[k], counters);
+        radiance += c;
+        record(films, verts[k].segments + 1, segments + 1, pixel, c);
+      }
+    }
+
+    BsdfSample bs;
+    const Point2 ub{sampler.at(dims::vertex(vi, dims::kBsdfU)), sampler.at(dims::vertex(vi, dims::kBsdfU + 1))};
+    if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(vi, dims::kLobe)), ub, TransportMode::radiance, &bs)) break;
+    const Vec3 wi_world = frame.to_world(bs.wi);
+    const float cos_out = fabsf(dot(wi_world, hit.ng));
+    if (!(cos_out > 0.f)) break;
+    beta *= bs.weight;
+    if (is_black(beta)) break;
+    if (bs.delta) {
+      dvcm = 0.f;
+      dvc *= mis(h, cos_out);
+    } else {
+      const float pdf_rev = bsdf_pdf(mat, bs.wi, wo, TransportMode::importance);
+      dvc = mis(h, cos_out / bs.pdf_w) * (dvc * mis(h, pdf_rev) + dvcm);
+      dvcm = mis(h, 1.f / bs.pdf_w);
+    }
+    if (st.roulette_start >= 0 && segments >= st.roulette_start) {
+      const float q = fminf(1.f, max_component(beta));
+      if (sampler.at(dims::vertex(vi, dims::kRoulette)) >= q) break;
+      beta *= 1.f / q;
+    }
+    prev_p = hit.p;
+    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+  }
+  return radiance;
+}
+
+}  // namespace pathspace

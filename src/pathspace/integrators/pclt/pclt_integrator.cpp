@@ -1,0 +1,253 @@
+// PCLT host orchestration (pclt_integrator.h): the phases of one iteration, each a parallel_for
+// whose result does not depend on the thread count (pixel i writes slot i; records are compacted in
+// pixel order; gathers and projections are summed in fixed point, which is associative).
+#include "pathspace/integrators/pclt/pclt_integrator.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/base/error.h"
+#include "pathspace/parallel/parallel_for.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace {
+
+namespace {
+constexpr size_t kPixelGrain = 256;
+constexpr size_t kPathGrain = 256;
+// Separates the light-path random stream from the camera stream (both are indexed from 0).
+constexpr uint64_t kLightStream = 0x70636c746c696768ULL;
+constexpr uint64_t kStoreStream = 0x70636c7473746f72ULL;
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+}  // namespace
+
+PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
+    : view_(scene.view()), accel_(accel), settings_(settings), s_(settings.pclt),
+      splats_(scene.camera.width, scene.camera.height, settings.pclt.splat_scale > 0.0 ? settings.pclt.splat_scale : SplatFilm::kDefaultScale) {
+  if (settings.filter.kind != FilterKind::none) throw Error("path space filtering is not available with the pclt integrator");
+  if (!(s_.alpha > 0.f && s_.alpha <= 1.f)) throw Error(fmt::format("PCLT alpha must be in (0, 1], not {}", s_.alpha));
+  if (s_.filter != LtFilter::box && !(s_.filter_radius > 0.f && s_.filter_radius <= 16.f))
+    throw Error(fmt::format("pclt filter radius {} must be in (0, 16] pixels", s_.filter_radius));
+  if (!(s_.epsilon >= 0.f && s_.epsilon < 1.f)) throw Error(fmt::format("pclt epsilon {} must be in [0, 1)", s_.epsilon));
+  const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
+  r0_ = s_.initial_radius > 0.f ? s_.initial_radius : s_.radius_fraction * view_.bounds.radius;
+  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("PCLT initial radius must be positive, not {}", r0_));
+  light_paths_ = s_.light_paths > 0 ? s_.light_paths : pixels;
+  max_segments_ = s_.max_segments > 0 ? s_.max_segments : view_.max_path_segments;
+  // At most one record per pixel, so a capacity above the pixel count would never be used.
+  capacity_ = s_.cache_capacity > 0 ? std::min<size_t>(size_t(s_.cache_capacity), pixels) : pixels;
+  cache_.resize(capacity_);
+  staging_.resize(pixels);
+  stored_.resize(pixels);
+  if (s_.visibility == PcltVisibility::z_buffer) zbuffer_.resize(pixels);
+  if (s_.visibility == PcltVisibility::plane) {
+    plane_p_.resize(pixels);
+    plane_n_.resize(pixels);
+  }
+  if (s_.hash_map == PcltHashMap::stochastic) {
+    const size_t slots = s_.stochastic_slots > 0 ? size_t(s_.stochastic_slots) : std::bit_ceil(std::max<size_t>(capacity_, 16));
+    if (!std::has_single_bit(slots) || slots > (size_t(1) << 31))
+      throw Error(fmt::format("pclt stochastic hash map slots {} must be a power of two up to 2^31", slots));
+    stochastic_ = std::make_unique<StochasticHashMap>(slots);
+  }
+  cached_r2_ = double(r0_) * double(r0_);
+}
+
+float PcltIntegrator::radius(uint32_t pass) {
+  if (pass < cached_pass_) {
+    cached_pass_ = 0;
+    cached_r2_ = double(r0_) * double(r0_);
+  }
+  for (; cached_pass_ < pass; ++cached_pass_) {
+    const double i = double(cached_pass_) + 1.0;
+    cached_r2_ *= (i + double(s_.alpha)) / (i + 1.0);
+  }
+  return float(std::sqrt(cached_r2_));
+}
+
+PcltMemory PcltIntegrator::memory() const {
+  PcltMemory m;
+  m.cache = cache_.capacity() * sizeof(PixelCacheEntry);
+  m.map = stochastic_ ? stochastic_->stats().bytes : grid_.stats().bytes;
+  m.eye_output = staging_.capacity() * sizeof(PixelCacheEntry) + stored_.capacity();
+  m.visibility = zbuffer_.capacity() * sizeof(float) + (plane_p_.capacity() + plane_n_.capacity()) * sizeof(Vec3);
+  return m;
+}
+
+// Compacts this iteration's ES+D records into the cache (pixel order) and builds the search map.
+void PcltIntegrator::build_cache(uint32_t pass, float r) {
+  const size_t n = stored_.size();
+  size_t candidates = 0;
+  for (size_t i = 0; i < n; ++i) candidates += stored_[i];
+  candidates_ = candidates;
+  size_t count = 0;
+  if (candidates <= capacity_) {
+    for (size_t i = 0; i < n && count < capacity_; ++i)
+      if (stored_[i]) cache_[count++] = staging_[i];
+  } else if (s_.stochastic_store) {
+    // A uniform subset of exactly capacity_ candidates: the capacity_ smallest hash priorities
+    // (a pure function of seed, pass and pixel). Each candidate is kept with probability C/N, so
+    // scaling the kept weights by N/C keeps the estimate unbiased.
+    priorities_.clear();
+    const uint64_t seed = hash_combine(settings_.seed ^ kStoreStream, pass);
+    for (size_t i = 0; i < n; ++i)
+      if (stored_[i]) priorities_.push_back((hash_combine(seed, i) & 0xffffffff00000000ull) | uint64_t(i));
+    std::nth_element(priorities_.begin(), priorities_.begin() + std::ptrdiff_t(capacity_ - 1), priorities_.end());
+    const uint64_t threshold = priorities_[capacity_ - 1];
+    const float scale = float(double(candidates) / double(capacity_));
+    for (size_t i = 0; i < n; ++i) {
+      if (!stored_[i] || ((hash_combine(seed, i) & 0xffffffff00000000ull) | uint64_t(i)) > threshold) continue;
+      cache_[count] = staging_[i];
+      cache_[count++].weight *= scale;
+    }
+  } else {
+    for (size_t i = 0; i < n && count < capacity_; ++i)
+      if (stored_[i]) cache_[count++] = staging_[i];
+  }
+  record_count_ = count;
+  dropped_total_ += candidates - count;
+  auto position_of = [&](size_t i) { return cache_[i].p; };
+  if (stochastic_) {
+    stochastic_->build(count, r, hash_combine(settings_.seed ^ kStoreStream, ~uint64_t(pass)), position_of);
+    grid_failures_ += stochastic_->stats().dropped;
+  } else {
+    grid_.build(count, r, position_of);
+    const HashGridStats gs = grid_.stats();
+    grid_failures_ += gs.probe_failures + gs.dropped;
+  }
+}
+
+void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
+  const size_t n = film.pixel_count();
+  const int width = film.width();
+  const float r = radius(pass);
+  last_radius_ = r;
+  splats_.clear();
+  const SplatFilmView sv = splats_.view();
+  std::atomic<uint64_t> rays{0}, shadow_rays{0};
+
+  // (a) Eye pass.
+  auto t = std::chrono::steady_clock::now();
+  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+    PathCounters local;
+    for (size_t pixel = begin; pixel < end; ++pixel) {
+      const Sampler sampler(settings_.seed, pixel, pass);
+      const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
+      const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
+      PcltEyeResult eye;
+      pclt_trace_eye(view_, accel_, sampler, view_.camera.generate_ray(rx, ry), uint32_t(pixel), s_, max_segments_, &local, &eye);
+      stored_[pixel] = eye.stored;
+      if (eye.stored) staging_[pixel] = eye.entry;
+      if (!is_black(eye.direct)) sv.add(uint32_t(pixel), eye.direct);
+      if (!zbuffer_.empty()) zbuffer_[pixel] = eye.has_first_hit ? eye.first_depth : kInfinity;
+      if (!plane_p_.empty()) {
+        plane_p_[pixel] = eye.first_p;
+        plane_n_[pixel] = eye.has_first_hit ? eye.first_n : Vec3();
+      }
+    }
+    rays += local.rays;
+  });
+  eye_s_ += seconds_since(t);
+
+  // (b) Cache and search structure.
+  t = std::chrono::steady_clock::now();
+  build_cache(pass, r);
+  build_s_ += seconds_since(t);
+
+  // (c) Light pass.
+  t = std::chrono::steady_clock::now();
+  PcltLightView lv;
+  lv.film = sv;
+  lv.projection.filter = s_.filter;
+  lv.projection.filter_radius = s_.filter_radius;
+  lv.visibility = s_.visibility;
+  lv.epsilon = s_.epsilon;
+  lv.zbuffer = zbuffer_.data();
+  lv.plane_p = plane_p_.data();
+  lv.plane_n = plane_n_.data();
+  lv.hash_map = s_.hash_map;
+  if (stochastic_) lv.stochastic = stochastic_->view();
+  else lv.grid = grid_.view();
+  lv.entries = cache_.data();
+  lv.entry_count = uint32_t(record_count_);
+  lv.radius = r;
+  lv.gather_scale = float(1.0 / (double(kPi) * double(r) * double(r) * double(light_paths_)));
+  lv.inv_paths = float(1.0 / double(light_paths_));
+  lv.max_segments = max_segments_;
+  const uint64_t light_seed = settings_.seed ^ kLightStream;
+  std::atomic<uint64_t> queries{0}, gathered{0}, projections{0}, tests{0};
+  parallel_for(size_t(light_paths_), kPathGrain, [&](size_t begin, size_t end) {
+    PathCounters local;
+    PcltLightCounters lc;
+    for (size_t i = begin; i < end; ++i) pclt_trace_light(view_, accel_, Sampler(light_seed, i, pass), s_, lv, &local, &lc);
+    rays += local.rays;
+    shadow_rays += local.shadow_rays;
+    queries += lc.gather_queries;
+    gathered += lc.gathered;
+    projections += lc.projections;
+    tests += lc.visibility_tests;
+  });
+  light_s_ += seconds_since(t);
+
+  // (d) Resolve: every pixel's iteration estimate is one film sample.
+  t = std::chrono::steady_clock::now();
+  splats_.resolve_into(film);
+  resolve_s_ += seconds_since(t);
+
+  const uint64_t rejected = splats_.non_finite() + splats_.overflows();
+  counters.rays += rays;
+  counters.shadow_rays += shadow_rays;
+  counters.paths += n + light_paths_;
+  counters.dropped += rejected;
+  ++passes_;
+  eye_paths_ += n;
+  light_path_total_ += light_paths_;
+  records_total_ += record_count_;
+  candidates_total_ += candidates_;
+  max_records_ = std::max(max_records_, record_count_);
+  gather_queries_ += queries;
+  gathered_ += gathered;
+  projections_ += projections;
+  visibility_tests_ += tests;
+  splat_rejects_ += rejected;
+}
+
+std::string PcltIntegrator::report() const {
+  if (passes_ == 0) return {};
+  const char* visibility[] = {"shadow-ray", "z-buffer", "plane"};
+  const char* filters[] = {"box", "tent", "gaussian"};
+  const PcltMemory m = memory();
+  const double total_s = eye_s_ + build_s_ + light_s_ + resolve_s_;
+  const double mib = 1.0 / (1024.0 * 1024.0);
+  std::string out = fmt::format(
+      "pclt: {} iterations, {} eye paths, {} light paths ({} per iteration), radius {:.5g} -> {:.5g} (alpha {:.3g})\n"
+      "pclt: visibility {}{}, filter {}, hash map {}, ES+L emission {}\n"
+      "pclt: cache {:.2f}% of pixels ES+D per iteration (max {} records, capacity {}), {} candidates dropped{}\n"
+      "pclt: memory {} bytes ({:.2f} MiB): records {}, map {}, eye output {}, visibility {}\n"
+      "pclt: per iteration {:.3g} gather queries, {:.3g} gathered entries, {:.3g} visibility tests, {:.3g} projections\n"
+      "pclt: time eye {:.3f} s, build {:.3f} s, light {:.3f} s, resolve {:.3f} s; {:.3g} iterations/s, {:.3g} light paths/s\n",
+      passes_, eye_paths_, light_path_total_, light_paths_, r0_, last_radius_, s_.alpha, visibility[int(s_.visibility)],
+      s_.visibility == PcltVisibility::shadow_ray ? std::string() : fmt::format(" (epsilon {:.3g})", s_.epsilon),
+      filters[int(s_.filter)], s_.hash_map == PcltHashMap::chained ? "chained" : "stochastic",
+      s_.specular_emission ? "added from eye paths" : "off (paper)",
+      100.0 * double(records_total_) / double(eye_paths_), max_records_, capacity_, dropped_total_,
+      dropped_total_ == 0 ? "" : (s_.stochastic_store ? " (stochastic store, reweighted)" : " (buffer full)"), m.total(),
+      double(m.total()) * mib, m.cache, m.map, m.eye_output, m.visibility, double(gather_queries_) / double(passes_),
+      double(gathered_) / double(passes_), double(visibility_tests_) / double(passes_), double(projections_) / double(passes_),
+      eye_s_, build_s_, light_s_, resolve_s_, total_s > 0 ? double(passes_) / total_s : 0.0,
+      total_s > 0 ? double(light_path_total_) / total_s : 0.0);
+  if (grid_failures_) out += fmt::format("pclt: WARNING {} records not stored in the hash map\n", grid_failures_);
+  if (splat_rejects_) out += fmt::format("pclt: {} splats rejected (overflow or non-finite)\n", splat_rejects_);
+  return out;
+}
+
+}  // namespace pathspace

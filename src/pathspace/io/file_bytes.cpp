@@ -1,0 +1,64 @@
+// Whole-file reads with transparent gzip decompression through zlib (see file_bytes.h).
+#include "pathspace/io/file_bytes.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "pathspace/base/error.h"
+
+namespace pathspace {
+
+namespace {
+
+std::string gunzip(const std::string& path) {
+  gzFile f = gzopen(path.c_str(), "rb");
+  if (!f) throw Error(FileLoc{path}, "cannot open gzip file");
+  std::string out;
+  char buffer[1 << 16];
+  for (;;) {
+    const int n = gzread(f, buffer, sizeof buffer);
+    if (n < 0) {
+      int code = 0;
+      const std::string message = gzerror(f, &code);
+      gzclose(f);
+      throw Error(FileLoc{path}, "corrupt gzip data: " + message);
+    }
+    if (n == 0) break;
+    out.append(buffer, size_t(n));
+  }
+  // gzread returns 0 at a truncated stream too; gzclose reports it as Z_BUF_ERROR.
+  if (gzclose(f) != Z_OK) throw Error(FileLoc{path}, "truncated gzip data");
+  return out;
+}
+
+}  // namespace
+
+std::string read_file_bytes(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw Error(FileLoc{path}, "file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(FileLoc{path}, "cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string bytes = std::move(ss).str();
+  if (bytes.size() >= 2 && uint8_t(bytes[0]) == 0x1f && uint8_t(bytes[1]) == 0x8b) return gunzip(path);
+  return bytes;
+}
+
+std::string scene_file_extension(const std::string& path) {
+  std::filesystem::path p(path);
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".gz") {
+    ext = p.stem().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  }
+  return ext;
+}
+
+}  // namespace pathspace

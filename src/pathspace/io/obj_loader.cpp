@@ -1,0 +1,144 @@
+// OBJ/MTL loading (see obj_loader.h). tinyobjloader parses; this file validates indices, maps the
+// materials and reports what it cannot represent. Diffuse and Phong lobes are made two-sided because
+// OBJ files rarely orient their faces consistently.
+#include "pathspace/io/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace pathspace {
+
+namespace {
+
+Rgb rgb(const tinyobj::real_t* v) { return Rgb(float(v[0]), float(v[1]), float(v[2])); }
+
+// tinyobjloader skips statements it does not know without a word; list them with their lines.
+void warn_unsupported_statements(const std::string& path, LoadWarnings* w) {
+  std::ifstream in(path);
+  std::string line;
+  int line_no = 0;
+  static const char* const known[] = {"v", "vn", "vt", "f", "o", "g", "s", "usemtl", "mtllib"};
+  while (std::getline(in, line)) {
+    ++line_no;
+    std::istringstream ss(line);
+    std::string word;
+    if (!(ss >> word) || word[0] == '#') continue;
+    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return word == k; }) != std::end(known)) continue;
+    w->add(FileLoc{path, line_no, 1}, "OBJ statement '" + word + "' is not supported; ignored");
+  }
+}
+
+Material obj_material(const tinyobj::material_t& mt, const std::string& path, LoadWarnings* w) {
+  Material m;
+  m.two_sided = true;
+  const FileLoc loc{path};
+  const bool glass = mt.illum == 5 || mt.illum == 7 || (mt.ior > 1.f && mt.dissolve < 1.f);
+  if (glass) {
+    const float ior = mt.ior > 1.f ? float(mt.ior) : 1.5f;
+    const Rgb tint = is_black(rgb(mt.transmittance)) ? Rgb(1.f) : rgb(mt.transmittance);
+    m = make_glass(ior, tint);
+  } else {
+    m.diffuse = rgb(mt.diffuse);
+    const Rgb ks = rgb(mt.specular);
+    if (!is_black(ks) && mt.shininess > 0.f) {
+      m.glossy = ks;
+      m.exponent = std::max(1.f, float(mt.shininess));
+    }
+    // Keep the material energy conserving: Kd + Ks <= 1 per channel.
+    const float total = max_component(m.diffuse + m.glossy);
+    if (total > 1.f) {
+      m.diffuse = m.diffuse / total;
+      m.glossy = m.glossy / total;
+      w->add(loc, "material '" + mt.name + "': Kd + Ks > 1, scaled down by " + std::to_string(total));
+    }
+    if (mt.dissolve < 1.f) w->add(loc, "material '" + mt.name + "': transparency d < 1 without Ni > 1 is not supported; opaque");
+  }
+  if (!mt.diffuse_texname.empty() || !mt.specular_texname.empty() || !mt.bump_texname.empty() || !mt.alpha_texname.empty() ||
+      !mt.normal_texname.empty() || !mt.emissive_texname.empty())
+    w->add(loc, "material '" + mt.name + "': texture maps are not supported; constant colours used");
+  return m;
+}
+
+}  // namespace
+
+void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config) || !reader.Error().empty())
+    throw Error(FileLoc{path}, "cannot read OBJ: " + (reader.Error().empty() ? std::string("parse failed") : reader.Error()));
+  std::istringstream tw(reader.Warning());
+  for (std::string line; std::getline(tw, line);)
+    if (!line.empty()) warnings->add(FileLoc{path}, line);
+  warn_unsupported_statements(path, warnings);
+
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const auto& materials = reader.GetMaterials();
+  std::vector<uint32_t> material_index;
+  std::vector<Rgb> material_emission;
+  for (const tinyobj::material_t& mt : materials) {
+    material_index.push_back(scene->add_material(obj_material(mt, path, warnings)));
+    material_emission.push_back(rgb(mt.emission));
+  }
+  int default_material = -1;
+  const size_t num_vertices = attrib.vertices.size() / 3;
+  const uint32_t base = uint32_t(scene->positions.size());
+  for (size_t i = 0; i < num_vertices; ++i) {
+    const Vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+    if (!all_finite(p)) throw Error(FileLoc{path}, "vertex " + std::to_string(i + 1) + " is NaN or infinite");
+    scene->positions.push_back(p);
+  }
+  bool has_normals = false;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (!shape.lines.indices.empty() || !shape.points.indices.empty())
+      warnings->add(FileLoc{path}, "shape '" + shape.name + "': lines and points are not rendered");
+    const tinyobj::mesh_t& mesh = shape.mesh;
+    size_t offset = 0;
+    for (size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
+      const size_t nv = mesh.num_face_vertices[f];
+      if (nv != 3) throw Error(FileLoc{path}, "shape '" + shape.name + "': face " + std::to_string(f) + " was not triangulated");
+      uint32_t v[3];
+      for (size_t k = 0; k < 3; ++k) {
+        const tinyobj::index_t idx = mesh.indices[offset + k];
+        if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= num_vertices)
+          throw Error(FileLoc{path}, "shape '" + shape.name + "': face " + std::to_string(f) + " references a missing vertex");
+        v[k] = base + uint32_t(idx.vertex_index);
+        has_normals |= idx.normal_index >= 0;
+      }
+      offset += nv;
+      const int mid = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
+      uint32_t material;
+      Rgb le;
+      if (mid >= 0 && size_t(mid) < material_index.size()) {
+        material = material_index[size_t(mid)];
+        le = material_emission[size_t(mid)];
+      } else {
+        if (default_material < 0) {
+          Material m = make_diffuse(Rgb(0.5f));
+          m.two_sided = true;
+          default_material = int(scene->add_material(m));
+        }
+        material = uint32_t(default_material);
+      }
+      const Vec3 ng = cross(scene->positions[v[1]] - scene->positions[v[0]], scene->positions[v[2]] - scene->positions[v[0]]);
+      if (!is_black(le) && !(length(ng) > 0.f)) continue;  // a zero-area emitter cannot be sampled
+      Triangle tri{{v[0], v[1], v[2]}, material, kNoLight};
+      if (!is_black(le)) {
+        Light l;
+        l.type = LightType::area_triangle;
+        l.shape = uint32_t(scene->triangles.size());
+        l.value = le;
+        tri.light = int32_t(scene->lights.size());
+        scene->lights.push_back(l);
+      }
+      scene->triangles.push_back(tri);
+    }
+  }
+  if (has_normals) warnings->add(FileLoc{path}, "vertex normals (vn) are not used for shading yet (flat shading)");
+}
+
+}  // namespace pathspace

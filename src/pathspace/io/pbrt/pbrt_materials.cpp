@@ -1,0 +1,205 @@
+// pbrt-v4 materials, textures and spectra (see pbrt_materials.h). Roughness follows pbrt-v4:
+// alpha = sqrt(roughness) when "remaproughness" is true (the default), else alpha = roughness;
+// alpha < 1e-3 counts as perfectly smooth, as in pbrt's TrowbridgeReitz::EffectivelySmooth.
+#include "pathspace/io/pbrt/pbrt_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "pathspace/io/image_io.h"
+
+namespace pathspace::pbrt {
+
+namespace {
+
+// RGB fits of pbrt's named metal spectra (complex IOR at roughly 650/550/450 nm; the values
+// Mitsuba 0.5 and the Bitterli scenes use). Approximate: real spectra are smoother than 3 bands.
+struct NamedRgb {
+  const char* name;
+  Rgb value;
+};
+const NamedRgb kNamedSpectra[] = {
+    {"metal-Cu-eta", {0.200438f, 0.924033f, 1.102212f}}, {"metal-Cu-k", {3.912949f, 2.452848f, 2.142188f}},
+    {"metal-Au-eta", {0.143119f, 0.374957f, 1.442479f}}, {"metal-Au-k", {3.983160f, 2.385721f, 1.603215f}},
+    {"metal-Ag-eta", {0.155265f, 0.116723f, 0.138342f}}, {"metal-Ag-k", {4.828181f, 3.122249f, 2.146961f}},
+    {"metal-Al-eta", {1.657460f, 0.880369f, 0.521229f}}, {"metal-Al-k", {9.223869f, 6.269523f, 4.837001f}},
+    {"metal-CuZn-eta", {0.444f, 0.527f, 1.094f}},        {"metal-CuZn-k", {3.695f, 2.765f, 1.829f}},
+    {"metal-MgO-eta", {1.732f, 1.738f, 1.752f}},         {"metal-MgO-k", {0.f, 0.f, 0.f}},
+    {"metal-TiO2-eta", {2.87f, 2.95f, 3.10f}},           {"metal-TiO2-k", {0.f, 0.f, 0.f}},
+    // Glasses: refractive index at the sodium d line (587.6 nm).
+    {"glass-BK7", Rgb(1.5168f)}, {"glass-BAF10", Rgb(1.6700f)}, {"glass-FK51A", Rgb(1.4866f)},
+    {"glass-LASF9", Rgb(1.8503f)}, {"glass-F5", Rgb(1.6034f)}, {"glass-F10", Rgb(1.6200f)},
+    {"glass-F11", Rgb(1.6210f)}, {"glass-SF5", Rgb(1.6727f)}, {"glass-SF10", Rgb(1.7283f)},
+    {"glass-SF11", Rgb(1.7847f)},
+};
+
+Rgb lookup_texture(const Param& p, const TextureTable& textures) {
+  if (p.strings.size() != 1) throw Error(p.loc, "texture parameter '" + p.name + "' must name one texture");
+  const auto it = textures.values.find(p.strings[0]);
+  if (it == textures.values.end()) throw Error(p.loc, "texture '" + p.strings[0] + "' is not defined");
+  return it->second;
+}
+
+float alpha_from(const Statement& st, LoadWarnings* w) {
+  double u = st.get_float("roughness", 0.0), v = u;
+  u = st.get_float("uroughness", u);
+  v = st.get_float("vroughness", v);
+  if (u != v) w->add(st.loc, st.title() + ": anisotropic roughness approximated by sqrt(uroughness * vroughness)");
+  const double r = std::sqrt(std::max(0.0, u) * std::max(0.0, v));
+  const bool remap = st.get_bool("remaproughness", true);
+  return float(remap ? std::sqrt(r) : r);
+}
+
+float eta_from(const Statement& st, LoadWarnings* w) {
+  const Param* p = st.find("eta");
+  if (!p) return 1.5f;
+  if (p->type == "float" && p->numbers.size() == 1) return float(p->numbers[0]);
+  if (p->type == "spectrum" && p->strings.size() == 1) {
+    for (const NamedRgb& n : kNamedSpectra)
+      if (p->strings[0] == n.name) return n.value.g;
+    throw Error(p->loc, "unknown named spectrum '" + p->strings[0] + "' for eta");
+  }
+  if (p->type == "spectrum" && p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {
+    double s = 0;
+    for (size_t i = 1; i < p->numbers.size(); i += 2) s += p->numbers[i];
+    w->add(p->loc, "dispersive eta approximated by its mean value");
+    return float(s / double(p->numbers.size() / 2));
+  }
+  throw Error(p->loc, "parameter 'eta' must be a float or a spectrum");
+}
+
+}  // namespace
+
+Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
+                   LoadWarnings* w) {
+  const Param* p = st.find(name);
+  if (!p) return fallback;
+  if (p->type == "rgb" || p->type == "color") {
+    if (p->numbers.size() != 3) throw Error(p->loc, "rgb parameter '" + name + "' needs 3 values");
+    return Rgb(float(p->numbers[0]), float(p->numbers[1]), float(p->numbers[2]));
+  }
+  if (p->type == "texture") return lookup_texture(*p, textures);
+  if (p->type == "float" && p->numbers.size() == 1) return Rgb(float(p->numbers[0]));
+  if (p->type == "spectrum" && p->strings.size() == 1) {
+    for (const NamedRgb& n : kNamedSpectra)
+      if (p->strings[0] == n.name) return n.value;
+    if (p->strings[0].rfind("stdillum-", 0) == 0) {
+      w->add(p->loc, "illuminant spectrum '" + p->strings[0] + "' taken as white (1, 1, 1)");
+      return Rgb(1.f);
+    }
+    throw Error(p->loc, "unknown named spectrum or spectrum file '" + p->strings[0] + "'");
+  }
+  if (p->type == "spectrum" && p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {
+    double s = 0;
+    for (size_t i = 1; i < p->numbers.size(); i += 2) s += p->numbers[i];
+    w->add(p->loc, "sampled spectrum '" + name + "' approximated by its mean value (grey)");
+    return Rgb(float(s / double(p->numbers.size() / 2)));
+  }
+  if (p->type == "blackbody") {
+    w->add(p->loc, "blackbody spectrum '" + name + "' not supported; taken as white (1, 1, 1)");
+    return Rgb(1.f);
+  }
+  throw Error(p->loc, "parameter '" + name + "' has an unsupported type '" + p->type + "'");
+}
+
+void add_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* w) {
+  const std::string& name = st.strings[0];
+  const std::string& cls = st.strings[2];
+  Rgb value(0.5f);
+  if (cls == "constant") {
+    value = spectrum_param(st, "value", Rgb(1.f), *textures, w);
+  } else if (cls == "imagemap") {
+    const Param* file = st.find("filename");
+    if (!file || file->strings.size() != 1) throw Error(st.loc, "imagemap texture '" + name + "' needs a filename");
+    std::filesystem::path path(file->strings[0]);
+    if (path.is_relative()) path = std::filesystem::path(folder) / path;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw Error(file->loc, "texture file '" + file->strings[0] + "' not found (looked for " + path.string() + ")");
+    const Image image = read_image(path.string());
+    double sum[3] = {0, 0, 0};
+    for (const Rgb& c : image.pixels)
+      for (int i = 0; i < 3; ++i) sum[i] += c[i];
+    const double n = double(std::max<size_t>(1, image.pixels.size()));
+    value = Rgb(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
+    if (st.strings[1] == "float") value = Rgb(average(value));
+    value *= float(st.get_float("scale", 1.0));
+    if (st.get_bool("invert", false)) value = Rgb(1.f) - value;
+    st.ignore({"filter", "wrap", "maxanisotropy", "encoding", "mapping", "uscale", "vscale", "udelta", "vdelta"});
+    w->add(st.loc, "image texture '" + name + "' approximated by its mean colour (textures are not supported yet)");
+  } else if (cls == "scale") {
+    value = spectrum_param(st, "tex", Rgb(1.f), *textures, w) * spectrum_param(st, "scale", Rgb(1.f), *textures, w);
+  } else {
+    w->add(st.loc, "texture class '" + cls + "' not supported; texture '" + name + "' taken as constant 0.5");
+    for (const Param& p : st.params) p.used = true;
+  }
+  textures->values[name] = value;
+}
+
+Material make_material(const std::string& type, const Statement& st, const TextureTable& tex, LoadWarnings* w) {
+  // pbrt's BSDFs are two-sided; pathspace's diffuse/Phong lobes are one-sided unless told.
+  Material m;
+  m.two_sided = true;
+  st.ignore({"type"});
+  if (type == "diffuse") {
+    m.diffuse = spectrum_param(st, "reflectance", Rgb(0.5f), tex, w);
+  } else if (type == "conductor" || type == "coatedconductor") {
+    const std::string prefix = type == "coatedconductor" ? "conductor." : "";
+    Rgb eta = spectrum_param(st, prefix + "eta", Rgb(0.200438f, 0.924033f, 1.102212f), tex, w);
+    Rgb k = spectrum_param(st, prefix + "k", Rgb(3.912949f, 2.452848f, 2.142188f), tex, w);
+    if (st.find("reflectance")) {  // pbrt: eta = 1, k = 2 sqrt(r) / sqrt(1 - r)
+      const Rgb r = spectrum_param(st, "reflectance", Rgb(), tex, w);
+      eta = Rgb(1.f);
+      for (int i = 0; i < 3; ++i) {
+        const float ri = std::clamp(r[i], 0.f, 0.9999f);
+        k[i] = 2.f * std::sqrt(ri) / std::sqrt(1.f - ri);
+      }
+    }
+    float alpha = alpha_from(st, w);
+    if (type == "coatedconductor") {
+      Statement inner = st;  // conductor.roughness etc.
+      for (Param& p : inner.params)
+        if (p.name.rfind("conductor.", 0) == 0) p.name = p.name.substr(10);
+      alpha = alpha_from(inner, w);
+      for (const Param& p : st.params) p.used = true;
+      w->add(st.loc, "coatedconductor approximated by its base conductor (the dielectric coat is dropped)");
+    }
+    m = make_rough_conductor(alpha, eta, k);
+    m.two_sided = true;
+  } else if (type == "dielectric" || type == "thindielectric") {
+    const float eta = eta_from(st, w);
+    const float alpha = type == "dielectric" ? alpha_from(st, w) : 0.f;
+    if (type == "thindielectric") w->add(st.loc, "thindielectric approximated by a smooth dielectric slab surface");
+    m = alpha < 1e-3f ? make_glass(eta) : make_rough_dielectric(alpha, eta);
+  } else if (type == "coateddiffuse") {
+    // Approximation: Fresnel reflectance at normal incidence F0 of the coat as a Phong (rough)
+    // or mirror (smooth) lobe over a Lambert base scaled by 1 - F0; Phong exponent 2/alpha^2 - 2
+    // (Walter et al. 2007's Beckmann-Phong correspondence). Coat absorption and interreflection dropped.
+    const Rgb base = spectrum_param(st, "reflectance", Rgb(0.5f), tex, w);
+    const float eta = eta_from(st, w);
+    const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
+    const float alpha = alpha_from(st, w);
+    m.diffuse = base * (1.f - f0);
+    if (alpha < 1e-3f) {
+      m.specular = Rgb(f0);
+    } else {
+      m.glossy = Rgb(f0);
+      m.exponent = std::max(1.f, 2.f / (alpha * alpha) - 2.f);
+    }
+    st.ignore({"thickness", "albedo", "g", "maxdepth", "nsamples"});
+    w->add(st.loc, "coateddiffuse approximated as Lambert (reflectance * (1 - F0)) + " +
+                       std::string(alpha < 1e-3f ? "mirror" : "Phong") + " coat lobe of reflectance F0 = " + std::to_string(f0));
+  } else if (type == "diffusetransmission") {
+    m.diffuse = spectrum_param(st, "reflectance", Rgb(0.25f), tex, w);
+    w->add(st.loc, "diffusetransmission approximated as diffuse reflection only (transmission dropped)");
+    for (const Param& p : st.params) p.used = true;
+  } else {
+    w->add(st.loc, "material type '" + type + "' not supported; using grey diffuse 0.5");
+    m.diffuse = Rgb(0.5f);
+    for (const Param& p : st.params) p.used = true;
+  }
+  return m;
+}
+
+}  // namespace pathspace::pbrt

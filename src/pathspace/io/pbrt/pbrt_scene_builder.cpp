@@ -1,0 +1,402 @@
+// pbrt-v4 graphics state and scene construction (see pbrt_scene_builder.h). Shapes are transformed
+// to world space on the way in; triangle winding is flipped where pbrt's surface normal (from the
+// per-vertex normals N, else ReverseOrientation xor a handedness-swapping transform) disagrees with
+// pathspace's winding normal, so one-sided area lights emit to the same side as in pbrt.
+#include "pathspace/io/pbrt/pbrt_scene_builder.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "pathspace/io/pbrt/pbrt_materials.h"
+#include "pathspace/io/pbrt/pbrt_parser.h"
+#include "pathspace/io/pbrt/pbrt_transform.h"
+#include "pathspace/io/ply_reader.h"
+
+namespace pathspace::pbrt {
+
+namespace {
+
+constexpr int kInterfaceMaterial = -2;  // "interface": a medium boundary, not a visible surface
+
+struct GraphicsState {
+  Mat4 ctm;
+  bool reverse_orientation = false;
+  int material = -1;  // index into the scene's materials; -1: the default material
+  bool area_light = false;
+  Rgb area_radiance;
+  bool area_two_sided = false;
+};
+
+Vec3 vec_at(const std::vector<double>& v, size_t i) { return Vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2])); }
+
+class Builder {
+ public:
+  Builder(const SceneLoadOptions& o, LoadWarnings* w, std::string main_folder)
+      : options_(o), warnings_(w), main_folder_(std::move(main_folder)) {}
+
+  void handle(const Statement& st) {
+    dispatch(st);
+    for (const Param& p : st.params)
+      if (!p.used) warn(p.loc, st.title() + ": parameter \"" + p.type + " " + p.name + "\" is not supported; ignored");
+  }
+
+  Scene finish(SceneFileSettings* settings) {
+    if (!stack_.empty()) warn(FileLoc{}, "AttributeBegin without AttributeEnd at the end of the scene");
+    const int w = options_.width > 0 ? options_.width : film_width_;
+    const int h = options_.height > 0 ? options_.height : film_height_;
+    if (!has_camera_) warn(FileLoc{}, "no Camera statement; using pbrt's default camera at the origin looking along +z");
+    Mat4 world_from_camera;
+    if (!camera_from_world_.inverse(&world_from_camera)) throw Error(camera_loc_, "camera transform is singular");
+    scene_.camera = make_file_camera(world_from_camera.point(Vec3()), world_from_camera.vector(Vec3(0, 0, 1)),
+                                     world_from_camera.vector(Vec3(1, 0, 0)), world_from_camera.vector(Vec3(0, 1, 0)), fov_, w, h);
+    apply_camera_options(options_, false, w, h, &scene_);
+    scene_.max_path_segments = max_depth_ + 1;
+    const Bounds3 b = scene_.geometry_bounds();
+    if (!b.empty()) scene_.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
+    if (settings) {
+      settings->spp = spp_;
+      settings->image_name = image_name_;
+    }
+    scene_.finalize();
+    return std::move(scene_);
+  }
+
+ private:
+  void warn(const FileLoc& loc, const std::string& m) { warnings_->add(loc, m); }
+  void mark_all(const Statement& st) {
+    for (const Param& p : st.params) p.used = true;
+  }
+  void transform(const Mat4& t) {
+    if (!end_time_only_) gs_.ctm = gs_.ctm * t;
+  }
+  // Relative file names resolve against the folder of the file that names them.
+  std::string folder_of(const Statement& st) const {
+    const std::string f = std::filesystem::path(st.loc.file).parent_path().string();
+    return f.empty() ? main_folder_ : f;
+  }
+
+  void dispatch(const Statement& st) {
+    const std::string& d = st.directive;
+    const auto& n = st.numbers;
+    if (d == "WorldBegin") {
+      in_world_ = true;
+      gs_.ctm = Mat4();
+      coord_systems_["world"] = Mat4();
+    } else if (d == "WorldEnd") {
+    } else if (d == "AttributeBegin" || d == "TransformBegin") {
+      stack_.push_back({gs_, d == "TransformBegin"});
+    } else if (d == "AttributeEnd" || d == "TransformEnd") {
+      if (stack_.empty() || stack_.back().second != (d == "TransformEnd"))
+        throw Error(st.loc, d + " without a matching " + (d == "AttributeEnd" ? "AttributeBegin" : "TransformBegin"));
+      if (stack_.back().second) gs_.ctm = stack_.back().first.ctm;
+      else gs_ = stack_.back().first;
+      stack_.pop_back();
+    } else if (d == "Identity") {
+      if (!end_time_only_) gs_.ctm = Mat4();
+    } else if (d == "Translate") {
+      transform(Mat4::translate(n[0], n[1], n[2]));
+    } else if (d == "Scale") {
+      transform(Mat4::scale(n[0], n[1], n[2]));
+    } else if (d == "Rotate") {
+      transform(Mat4::rotate(n[0], n[1], n[2], n[3]));
+    } else if (d == "LookAt") {
+      Mat4 m;
+      if (!look_at(Vec3(float(n[0]), float(n[1]), float(n[2])), Vec3(float(n[3]), float(n[4]), float(n[5])),
+                   Vec3(float(n[6]), float(n[7]), float(n[8])), &m))
+        throw Error(st.loc, "LookAt: the up vector is parallel to the view direction (or eye == target)");
+      transform(m);
+    } else if (d == "Transform") {
+      if (!end_time_only_) gs_.ctm = Mat4::from_columns(n.data());
+    } else if (d == "ConcatTransform") {
+      transform(Mat4::from_columns(n.data()));
+    } else if (d == "CoordinateSystem") {
+      coord_systems_[st.strings[0]] = gs_.ctm;
+    } else if (d == "CoordSysTransform") {
+      const auto it = coord_systems_.find(st.strings[0]);
+      if (it == coord_systems_.end()) warn(st.loc, "unknown coordinate system '" + st.strings[0] + "'; ignored");
+      else gs_.ctm = it->second;
+    } else if (d == "ReverseOrientation") {
+      gs_.reverse_orientation = !gs_.reverse_orientation;
+    } else if (d == "ActiveTransform") {
+      end_time_only_ = st.strings[0] == "EndTime";
+      if (st.strings[0] != "All") warn(st.loc, "motion blur is not supported: only the start-time transform is used");
+    } else if (d == "TransformTimes") {
+      warn(st.loc, "TransformTimes ignored (no motion blur)");
+    } else if (d == "ColorSpace") {
+      if (st.strings[0] != "srgb") warn(st.loc, "ColorSpace \"" + st.strings[0] + "\" ignored: pathspace renders in linear sRGB");
+    } else if (d == "Option" || d == "Attribute" || d == "MakeNamedMedium" || d == "MediumInterface") {
+      warn(st.loc, d + " is not supported; ignored");
+      mark_all(st);
+    } else if (d == "Camera") {
+      camera(st);
+    } else if (d == "Film") {
+      if (st.strings[0] != "rgb") warn(st.loc, "Film \"" + st.strings[0] + "\" treated as \"rgb\"");
+      film_width_ = st.get_int("xresolution", 1280);
+      film_height_ = st.get_int("yresolution", 720);
+      if (film_width_ < 1 || film_height_ < 1 || film_width_ > 16384 || film_height_ > 16384)
+        throw Error(st.loc, "Film resolution must be between 1 and 16384");
+      image_name_ = st.get_string("filename", "");
+      st.ignore({"savefp16"});
+    } else if (d == "Sampler") {
+      spp_ = st.get_int("pixelsamples", 16);
+      if (spp_ < 1) throw Error(st.loc, "pixelsamples must be at least 1");
+      mark_all(st);  // sampler kind, seed, randomisation: they change the noise, not the expectation
+    } else if (d == "Integrator") {
+      max_depth_ = st.get_int("maxdepth", 5);
+      if (max_depth_ < 0 || max_depth_ > 1023) throw Error(st.loc, "maxdepth must be between 0 and 1023");
+      if (st.strings[0] != "path" && st.strings[0] != "volpath")
+        warn(st.loc, "Integrator \"" + st.strings[0] + "\": pathspace renders with the --integrator option (default pt); only maxdepth is used");
+      st.ignore({"lightsampler"});
+      if (st.strings[0] != "path" && st.strings[0] != "volpath") mark_all(st);
+    } else if (d == "PixelFilter") {
+      if (st.strings[0] != "box") warn(st.loc, "PixelFilter \"" + st.strings[0] + "\" not supported: pathspace uses a box filter of one pixel");
+      mark_all(st);
+    } else if (d == "Accelerator") {
+      mark_all(st);
+    } else if (d == "Texture") {
+      add_texture(st, folder_of(st), &textures_, warnings_);
+    } else if (d == "MakeNamedMaterial") {
+      const std::string type = st.get_string("type", "");
+      if (type.empty()) throw Error(st.loc, "MakeNamedMaterial \"" + st.strings[0] + "\" has no \"string type\"");
+      if (named_materials_.count(st.strings[0])) warn(st.loc, "material \"" + st.strings[0] + "\" redefined");
+      named_materials_[st.strings[0]] = material_index(type, st);
+    } else if (d == "NamedMaterial") {
+      const auto it = named_materials_.find(st.strings[0]);
+      if (it == named_materials_.end()) throw Error(st.loc, "named material \"" + st.strings[0] + "\" is not defined");
+      gs_.material = it->second;
+    } else if (d == "Material") {
+      gs_.material = material_index(st.strings[0], st);
+    } else if (d == "LightSource") {
+      light(st);
+    } else if (d == "AreaLightSource") {
+      if (st.strings[0] != "diffuse") throw Error(st.loc, "AreaLightSource \"" + st.strings[0] + "\" is not supported (only \"diffuse\")");
+      gs_.area_light = true;
+      gs_.area_radiance = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * float(st.get_float("scale", 1.0));
+      gs_.area_two_sided = st.get_bool("twosided", false);
+    } else if (d == "Shape") {
+      shape(st);
+    } else if (d == "ObjectBegin") {
+      warn(st.loc, "object instancing is not supported: the shapes of object \"" + st.strings[0] + "\" are skipped");
+      stack_.push_back({gs_, false});
+      ++object_depth_;
+    } else if (d == "ObjectEnd") {
+      if (object_depth_ == 0 || stack_.empty()) throw Error(st.loc, "ObjectEnd without ObjectBegin");
+      --object_depth_;
+      gs_ = stack_.back().first;
+      stack_.pop_back();
+    } else if (d == "ObjectInstance") {
+      warn(st.loc, "ObjectInstance \"" + st.strings[0] + "\" skipped (instancing is not supported)");
+    }
+  }
+
+  int material_index(const std::string& type, const Statement& st) {
+    if (type == "interface") return kInterfaceMaterial;
+    if (type == "" || type == "none") {
+      warn(st.loc, "material \"" + type + "\": shapes are rendered with grey diffuse 0.5");
+      return -1;
+    }
+    return int(scene_.add_material(make_material(type, st, textures_, warnings_)));
+  }
+
+  void camera(const Statement& st) {
+    if (st.strings[0] != "perspective") throw Error(st.loc, "Camera \"" + st.strings[0] + "\" is not supported (only \"perspective\")");
+    fov_ = float(st.get_float("fov", 90.0));
+    if (!(fov_ > 0.f && fov_ < 180.f)) throw Error(st.loc, "fov must be between 0 and 180 degrees");
+    if (st.get_float("lensradius", 0.0) > 0.0) warn(st.loc, "thin lens camera is not supported: rendering with a pinhole (no depth of field)");
+    st.ignore({"focaldistance", "shutteropen", "shutterclose"});
+    camera_from_world_ = gs_.ctm;
+    has_camera_ = true;
+    camera_loc_ = st.loc;
+    Mat4 inv;
+    if (camera_from_world_.inverse(&inv)) coord_systems_["camera"] = inv;
+  }
+
+  void light(const Statement& st) {
+    const std::string& type = st.strings[0];
+    const float scale = float(st.get_float("scale", 1.0));
+    if (type == "point") {
+      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_) * scale;
+      const std::vector<double> from = st.get_numbers("from");
+      scene_.add_point_light(gs_.ctm.point(from.size() == 3 ? vec_at(from, 0) : Vec3()), i);
+    } else if (type == "distant") {
+      const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale;
+      const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
+      const Vec3 f = from.size() == 3 ? vec_at(from, 0) : Vec3(), t = to.size() == 3 ? vec_at(to, 0) : Vec3(0, 0, 1);
+      const Vec3 dir = gs_.ctm.vector(t - f);
+      if (!(length(dir) > 0.f)) throw Error(st.loc, "distant light: 'from' equals 'to'");
+      scene_.add_directional_light(dir, l);
+    } else if (type == "infinite") {
+      if (const Param* f = st.find("filename")) {
+        std::filesystem::path path(f->strings.empty() ? "" : f->strings[0]);
+        if (path.is_relative()) path = std::filesystem::path(folder_of(st)) / path;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec))
+          throw Error(f->loc, "environment map '" + (f->strings.empty() ? "" : f->strings[0]) + "' not found (looked for " + path.string() + ")");
+        throw Error(f->loc, "image environment not supported yet (infinite light with a filename)");
+      }
+      scene_.add_environment_light(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale);
+    } else {
+      warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
+      mark_all(st);
+    }
+  }
+
+  void shape(const Statement& st) {
+    const std::string& type = st.strings[0];
+    if (object_depth_ > 0 || gs_.material == kInterfaceMaterial) {
+      if (gs_.material == kInterfaceMaterial) warn(st.loc, "shape with material \"interface\" skipped (participating media are not supported)");
+      mark_all(st);
+      return;
+    }
+    st.ignore({"uv", "st", "faceIndices"});  // texture coordinates only feed textures, which are constants here
+    if (type == "trianglemesh") {
+      const std::vector<double> p = st.get_numbers("P");
+      std::vector<double> idx = st.get_numbers("indices");
+      const std::vector<double> nrm = st.get_numbers("N");
+      if (p.empty() || p.size() % 3) throw Error(st.loc, "trianglemesh needs \"point3 P\" with a multiple of 3 values");
+      if (idx.empty() && p.size() == 9) idx = {0, 1, 2};
+      if (idx.empty() || idx.size() % 3) throw Error(st.loc, "trianglemesh needs \"integer indices\" with a multiple of 3 values");
+      if (!nrm.empty() && nrm.size() != p.size()) throw Error(st.loc, "trianglemesh: N must have one normal per vertex");
+      std::vector<Vec3> pos(p.size() / 3), normals(nrm.size() / 3);
+      for (size_t i = 0; i < pos.size(); ++i) pos[i] = vec_at(p, i);
+      for (size_t i = 0; i < normals.size(); ++i) normals[i] = vec_at(nrm, i);
+      std::vector<uint32_t> tri(idx.size());
+      for (size_t i = 0; i < idx.size(); ++i) {
+        if (idx[i] < 0 || idx[i] >= double(pos.size()))
+          throw Error(st.find("indices")->loc, "index " + std::to_string(int64_t(idx[i])) + " out of range (" + std::to_string(pos.size()) + " vertices)");
+        tri[i] = uint32_t(idx[i]);
+      }
+      add_mesh(st, pos, normals, tri);
+    } else if (type == "plymesh") {
+      const std::string file = st.get_string("filename", "");
+      std::filesystem::path path(file);
+      std::error_code ec;
+      if (path.is_relative()) {
+        const std::filesystem::path local = std::filesystem::path(folder_of(st)) / path;
+        path = std::filesystem::exists(local, ec) ? local : std::filesystem::path(main_folder_) / path;
+      }
+      PlyMesh mesh;
+      try {
+        mesh = read_ply(path.string());
+      } catch (const Error& e) {
+        throw Error(st.loc, "plymesh \"" + file + "\": " + e.what());
+      }
+      add_mesh(st, mesh.positions, mesh.normals, mesh.indices);
+    } else if (type == "sphere") {
+      sphere(st);
+    } else {
+      warn(st.loc, "Shape \"" + type + "\" is not supported; skipped");
+      mark_all(st);
+    }
+  }
+
+  uint32_t shape_material(const Statement& st) {
+    if (gs_.material >= 0) return uint32_t(gs_.material);
+    if (default_material_ < 0) default_material_ = int(scene_.add_material(make_material("diffuse", Statement{}, textures_, warnings_)));
+    (void)st;
+    return uint32_t(default_material_);
+  }
+
+  Rgb emission(const Statement& st, uint32_t material) {
+    if (!gs_.area_light) return Rgb();
+    const Material& m = scene_.materials[material];
+    if (!is_black(m.diffuse) || !is_black(m.glossy) || !is_black(m.specular) || m.type != MaterialType::standard)
+      warn(st.loc, "an emissive shape's material is ignored (pathspace emitters do not reflect light)");
+    return gs_.area_radiance;
+  }
+
+  void add_mesh(const Statement& st, const std::vector<Vec3>& pos, const std::vector<Vec3>& normals, const std::vector<uint32_t>& idx) {
+    const uint32_t material = shape_material(st);
+    const Rgb le = emission(st, material);
+    Mat4 inv;
+    if (!gs_.ctm.inverse(&inv)) throw Error(st.loc, "shape transform is singular");
+    const bool flip_default = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
+    const uint32_t base = uint32_t(scene_.positions.size());
+    for (const Vec3& p : pos) scene_.positions.push_back(gs_.ctm.point(p));
+    bool smooth = false;
+    for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+      uint32_t v[3] = {base + idx[t], base + idx[t + 1], base + idx[t + 2]};
+      const Vec3 ng = cross(scene_.positions[v[1]] - scene_.positions[v[0]], scene_.positions[v[2]] - scene_.positions[v[0]]);
+      const float area2 = length(ng);
+      bool flip = flip_default;
+      if (!normals.empty()) {
+        Vec3 ns;
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 nk = normalize(Mat4::normal(inv, normals[idx[t + size_t(k)]]));
+          ns += gs_.reverse_orientation ? -nk : nk;
+          if (area2 > 0.f && abs_dot(nk, ng / area2) < 0.999f) smooth = true;
+        }
+        flip = dot(ns, ng) < 0.f;
+      }
+      if (flip) std::swap(v[1], v[2]);
+      if (!is_black(le) && !(area2 > 0.f)) continue;  // a zero-area emitter cannot be sampled
+      Triangle tri{{v[0], v[1], v[2]}, material, kNoLight};
+      if (!is_black(le)) {
+        Light l;
+        l.type = LightType::area_triangle;
+        l.shape = uint32_t(scene_.triangles.size());
+        l.value = le;
+        l.two_sided = gs_.area_two_sided;
+        tri.light = int32_t(scene_.lights.size());
+        scene_.lights.push_back(l);
+      }
+      scene_.triangles.push_back(tri);
+    }
+    if (smooth) warn(st.loc, st.title() + ": per-vertex normals N only orient the faces (no smooth shading yet)");
+  }
+
+  void sphere(const Statement& st) {
+    const float radius = float(st.get_float("radius", 1.0));
+    const double zmin = st.get_float("zmin", -radius), zmax = st.get_float("zmax", radius), phimax = st.get_float("phimax", 360.0);
+    if (zmin > -radius || zmax < radius || phimax < 360.0) warn(st.loc, "partial sphere (zmin/zmax/phimax) rendered as a full sphere");
+    // Only similarity transforms keep a sphere a sphere.
+    const Vec3 c0 = gs_.ctm.vector(Vec3(1, 0, 0)), c1 = gs_.ctm.vector(Vec3(0, 1, 0)), c2 = gs_.ctm.vector(Vec3(0, 0, 1));
+    const float s = length(c0);
+    if (std::fabs(length(c1) - s) > 1e-4f * s || std::fabs(length(c2) - s) > 1e-4f * s || abs_dot(c0, c1) > 1e-4f * s * s ||
+        abs_dot(c0, c2) > 1e-4f * s * s || abs_dot(c1, c2) > 1e-4f * s * s)
+      throw Error(st.loc, "sphere under a non-uniform scale or shear is not supported");
+    if (!(radius > 0.f)) throw Error(st.loc, "sphere radius must be > 0");
+    const uint32_t material = shape_material(st);
+    const Rgb le = emission(st, material);
+    if (!is_black(le) && gs_.area_two_sided) warn(st.loc, "two-sided emission of a sphere: only the outside emits");
+    const bool inward = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
+    scene_.add_sphere(gs_.ctm.point(Vec3()), radius * s, material, le, inward);
+  }
+
+  const SceneLoadOptions& options_;
+  LoadWarnings* warnings_;
+  std::string main_folder_;
+  Scene scene_;
+  GraphicsState gs_;
+  std::vector<std::pair<GraphicsState, bool>> stack_;  // bool: pushed by TransformBegin
+  std::map<std::string, int> named_materials_;
+  std::map<std::string, Mat4> coord_systems_;
+  TextureTable textures_;
+  int default_material_ = -1;
+  int object_depth_ = 0;
+  bool in_world_ = false, end_time_only_ = false;
+  bool has_camera_ = false;
+  Mat4 camera_from_world_;
+  FileLoc camera_loc_;
+  float fov_ = 90.f;
+  int film_width_ = 1280, film_height_ = 720, spp_ = 16, max_depth_ = 5;
+  std::string image_name_;
+};
+
+}  // namespace
+
+Scene load_pbrt_file(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings, SceneFileSettings* settings) {
+  Builder b(options, warnings, std::filesystem::path(path).parent_path().string());
+  parse_file(path, [&](const Statement& st) { b.handle(st); });
+  return b.finish(settings);
+}
+
+Scene load_pbrt_string(const std::string& text, const std::string& name, const std::string& folder, const SceneLoadOptions& options,
+                       LoadWarnings* warnings, SceneFileSettings* settings) {
+  Builder b(options, warnings, folder);
+  parse_string(text, name, folder, [&](const Statement& st) { b.handle(st); });
+  return b.finish(settings);
+}
+
+}  // namespace pathspace::pbrt

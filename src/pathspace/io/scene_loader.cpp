@@ -1,0 +1,102 @@
+// Scene file dispatch by extension and the camera helpers shared by the loaders (see scene_loader.h).
+// OBJ and PLY carry no lights or camera of their own: without emitters they get a white constant
+// environment (with a warning), and the camera frames the bounding sphere unless options give one.
+#include "pathspace/io/scene_loader.h"
+
+#include <cmath>
+
+#include "pathspace/io/file_bytes.h"
+#include "pathspace/io/load_warnings.h"
+#include "pathspace/io/obj_loader.h"
+#include "pathspace/io/pbrt/pbrt_scene_builder.h"
+#include "pathspace/io/ply_reader.h"
+
+namespace pathspace {
+
+namespace {
+
+constexpr float kDefaultFov = 45.f;
+constexpr int kDefaultSize = 512;
+
+void add_ply_mesh(const std::string& path, Scene* scene) {
+  const PlyMesh mesh = read_ply(path);
+  Material m = make_diffuse(Rgb(0.5f));
+  m.two_sided = true;
+  const uint32_t material = scene->add_material(m);
+  const uint32_t base = uint32_t(scene->positions.size());
+  scene->positions.insert(scene->positions.end(), mesh.positions.begin(), mesh.positions.end());
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    scene->triangles.push_back(Triangle{{base + mesh.indices[t], base + mesh.indices[t + 1], base + mesh.indices[t + 2]}, material, kNoLight});
+}
+
+}  // namespace
+
+bool is_scene_file(const std::string& path) {
+  const std::string ext = scene_file_extension(path);
+  return ext == ".pbrt" || ext == ".ply" || ext == ".obj";
+}
+
+PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up, float fov_degrees,
+                               int width, int height) {
+  PinholeCamera c;
+  c.position = position;
+  c.forward = normalize(forward);
+  c.right = normalize(right);
+  c.up = normalize(up);
+  const float t = std::tan(radians(fov_degrees) * 0.5f);
+  c.tan_x = width >= height ? t * float(width) / float(height) : t;
+  c.tan_y = width >= height ? t : t * float(height) / float(width);
+  c.width = width;
+  c.height = height;
+  return c;
+}
+
+void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int width, int height, Scene* scene) {
+  const bool place = o.camera_position.has_value() || frame_bounds;
+  if (!place && !o.fov_degrees) return;
+  const float fov = o.fov_degrees.value_or(kDefaultFov);
+  if (!(fov > 0.f && fov < 180.f)) throw Error("--fov must be between 0 and 180 degrees");
+  PinholeCamera& c = scene->camera;
+  if (!place) {  // only the field of view changes
+    c = make_file_camera(c.position, c.forward, c.right, c.up, fov, width, height);
+    return;
+  }
+  const Bounds3 b = scene->geometry_bounds();
+  const BoundingSphere s = b.empty() ? BoundingSphere{Vec3(), 1.f} : bounding_sphere(b);
+  const Vec3 target = o.camera_target.value_or(s.center);
+  const Vec3 up = o.camera_up.value_or(Vec3(0, 1, 0));
+  // Framing: the bounding sphere fits the shorter image axis, seen along -z.
+  const float dist = std::max(s.radius, 1e-3f) / std::sin(radians(fov) * 0.5f) * 1.05f;
+  const Vec3 pos = o.camera_position.value_or(s.center + Vec3(0, 0, dist));
+  const Vec3 forward = target - pos;
+  if (!(length(forward) > 0.f)) throw Error("camera position and target coincide");
+  const Vec3 right = cross(normalize(forward), normalize(up));
+  if (!(length(right) > 1e-6f)) throw Error("camera up vector is parallel to the view direction");
+  c = make_file_camera(pos, forward, right, cross(normalize(right), normalize(forward)), fov, width, height);
+}
+
+Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
+                 SceneFileSettings* settings) {
+  LoadWarnings w(warnings);
+  const std::string ext = scene_file_extension(path);
+  if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
+  if (ext != ".ply" && ext != ".obj") throw Error(FileLoc{path}, "unknown scene file type '" + ext + "' (expected .pbrt, .ply or .obj)");
+  Scene scene;
+  scene.name = path;
+  if (ext == ".ply") add_ply_mesh(path, &scene);
+  else load_obj_into(path, &w, &scene);
+  if (scene.triangles.empty()) throw Error(FileLoc{path}, "the file holds no triangles");
+  if (scene.lights.empty()) {
+    w.add(FileLoc{path}, "no emitters in the file: lit by a uniform white environment (radiance 1)");
+    scene.add_environment_light(Rgb(1.f));
+  }
+  const int width = options.width > 0 ? options.width : kDefaultSize;
+  const int height = options.height > 0 ? options.height : kDefaultSize;
+  apply_camera_options(options, true, width, height, &scene);
+  const Bounds3 b = scene.geometry_bounds();
+  scene.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
+  scene.finalize();
+  return scene;
+}
+
+}  // namespace pathspace

@@ -1,0 +1,43 @@
+// Scene files: `load_scene` picks the parser by extension (.pbrt, .ply, .obj, optionally .gz) and
+// returns a finalised Scene. Unsupported or approximated features become warnings with file:line
+// (collected in *warnings for the CLI to print); malformed input is a pathspace::Error.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pathspace/scene/scene.h"
+
+namespace pathspace {
+
+struct SceneLoadOptions {
+  int width = 0, height = 0;  // > 0: replaces the file's resolution (pbrt Film); else the file's or 512x512
+  // Camera override (all formats); without it pbrt files use their Camera, OBJ/PLY frame the bounds.
+  std::optional<Vec3> camera_position, camera_target, camera_up;
+  std::optional<float> fov_degrees;  // field of view of the shorter image axis (pbrt's convention)
+};
+
+// What a scene file suggests for the render besides the scene itself.
+struct SceneFileSettings {
+  int spp = 0;             // pbrt Sampler "pixelsamples"; 0: none given
+  std::string image_name;  // pbrt Film "filename"; empty: none given
+};
+
+// True when the path has an extension load_scene understands.
+bool is_scene_file(const std::string& path);
+
+Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
+                 SceneFileSettings* settings = nullptr);
+
+// A camera looking from `position` along `forward`, raster right = `right`, up = `up` (unit vectors
+// not required to form a right-handed frame: pbrt cameras are left-handed), with `fov_degrees`
+// spanning the shorter image axis.
+PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up,
+                               float fov_degrees, int width, int height);
+
+// Applies the camera options of `o` (position/target/up/fov), or frames the scene's bounds when
+// `frame_bounds` and no position is given: looking along -z at the centre of the bounding sphere.
+void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int width, int height, Scene* scene);
+
+}  // namespace pathspace

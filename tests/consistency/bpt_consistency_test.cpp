@@ -1,0 +1,238 @@
+// Consistency of bidirectional path tracing (docs/testing.md):
+//  - BPT renders are bit-identical for 1 and 2 threads and across reruns (fixed-point splats; the
+//    light subpath of a pixel draws from its own sampler stream), strategy images included;
+//  - BPT agrees with PT (per-pixel z-test on mean and variance images) where PT is a valid reference,
+//    for the reasons given in lt_pt_consistency_test.cpp: the sphere-free Cornell masks at full path
+//    length, and the sphere scenes for direct lighting (2 segments), where PT has no heavy tails.
+//    BPT needs no mask: its camera subpath samples mirror and glass seen directly;
+//  - BPT agrees with LT at full length on the sphere scenes, where PT cannot sample caustics from
+//    delta lights (gbs_s, gbs_p: E-D-S-L) and samples those from the small area light too rarely;
+//    LT cannot see Dirac surfaces directly, so pixels whose camera ray may hit one are masked
+//    (gbs_b adds the environment light at full length: infinite-light MIS terms);
+//  - the balance and power heuristics give the same image (MIS weights only move noise);
+//  - with shading normals that differ from the geometric ones, BPT (adjoint factor on the light
+//    subpath, Veach 1997 §5.3; MIS densities in geometric-normal measure) still agrees with PT.
+#include <gtest/gtest.h>
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/integrators/bpt/bpt_integrator.h"
+#include "pathspace/integrators/pt/pt_kernel.h"
+#include "pathspace/integrators/render.h"
+#include "pathspace/io/image_io.h"
+#include "pathspace/parallel/parallel_for.h"
+#include "pathspace/scene/builtin_scenes.h"
+#include "support/statistics.h"
+
+namespace pathspace {
+namespace {
+
+struct Rendered {
+  Image mean, variance;
+};
+
+Rendered render_with(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings, uint32_t passes,
+                     int threads, std::vector<NamedImage>* aovs = nullptr) {
+  const Accel accel(scene);
+  Film film(scene.camera.width, scene.camera.height);
+  RenderRequest req;
+  req.integrator = integrator;
+  req.spp = passes;
+  req.threads = threads;
+  req.settings = settings;
+  req.want_aovs = aovs != nullptr;
+  RenderStats stats = render(scene, accel, req, film);
+  EXPECT_EQ(stats.dropped_samples, 0u) << integrator;
+  if (aovs) *aovs = std::move(stats.aovs);
+  return {film.mean(), film.variance_of_mean()};
+}
+
+TEST(BptDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
+  const Scene scene = make_builtin_scene("gbs_c", 48, 48);
+  IntegratorSettings s;
+  s.seed = 9;
+  s.bpt.strategy_images = 3;
+  std::vector<NamedImage> aovs1, aovs2;
+  const Rendered one = render_with(scene, "bpt", s, 3, 1, &aovs1);
+  const Rendered two = render_with(scene, "bpt", s, 3, 2, &aovs2);
+  const Rendered again = render_with(scene, "bpt", s, 3, 2);
+  size_t lit = 0;
+  for (size_t i = 0; i < one.mean.size(); ++i) {
+    ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "pixel " << i;
+    ASSERT_EQ(one.variance.pixels[i], two.variance.pixels[i]) << "pixel " << i;
+    ASSERT_EQ(two.mean.pixels[i], again.mean.pixels[i]) << "pixel " << i;
+    lit += one.mean.pixels[i].r > 0.f;
+  }
+  EXPECT_GT(lit, one.mean.size() / 2);
+  ASSERT_EQ(aovs1.size(), size_t(bpt_strategy_count(3)));
+  ASSERT_EQ(aovs1.size(), aovs2.size());
+  for (size_t a = 0; a < aovs1.size(); ++a)
+    for (size_t i = 0; i < one.mean.size(); ++i) ASSERT_EQ(aovs1[a].image.pixels[i], aovs2[a].image.pixels[i]) << aovs1[a].name;
+}
+
+constexpr int kComparisons = 17;  // image comparisons in this file
+const double kAlphaImage = testing::sidak(0.01, kComparisons);
+
+void apply_mask(Rendered* r, const std::vector<bool>& mask) {
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) r->mean.pixels[i] = r->variance.pixels[i] = Rgb();
+}
+
+void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what) {
+  const testing::ImageZTest z = testing::image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, kAlphaImage);
+  if (z.passed()) return;
+  const std::string dir = testing::evidence_dir();
+  std::string worst;
+  int listed = 0;
+  for (size_t i = 0; i < a.mean.size() && listed < 12; ++i) {
+    const double d = average(a.mean.pixels[i]) - average(b.mean.pixels[i]);
+    const double sd = std::sqrt(average(a.variance.pixels[i]) + average(b.variance.pixels[i]) + 1e-8);
+    if (std::fabs(d / sd) > 3.29 && listed++ < 12)
+      worst += fmt::format("\n  pixel ({}, {}): {:.5f} vs {:.5f} (z {:.1f})", i % a.mean.width, i / a.mean.width,
+                           average(a.mean.pixels[i]), average(b.mean.pixels[i]), d / sd);
+  }
+  ADD_FAILURE() << what << ": " << z.failed << " of " << z.pixels << " pixels differ (at most " << z.allowed
+                << " allowed); image means " << z.mean_a << " vs " << z.mean_b << " (z = " << z.mean_z << "); images in "
+                << dir << worst;
+  write_image(dir + "/" + what + "-a.exr", a.mean);
+  write_image(dir + "/" + what + "-b.exr", b.mean);
+}
+
+// Pixels where any of 3x3 probe rays first hits a surface without a non-delta lobe.
+std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel) {
+  const SceneView v = scene.view();
+  std::vector<bool> mask(size_t(v.camera.width) * size_t(v.camera.height), false);
+  for (int j = 0; j < v.camera.height; ++j)
+    for (int i = 0; i < v.camera.width; ++i)
+      for (int k = 0; k < 9; ++k) {
+        SurfaceHit hit;
+        const Ray ray = v.camera.generate_ray(float(i) + (0.05f + 0.45f * float(k % 3)), float(j) + (0.05f + 0.45f * float(k / 3)));
+        if (accel.intersect(ray, &hit) && !bsdf_has_non_delta(v.materials[hit.material]))
+          mask[size_t(i) + size_t(j) * size_t(v.camera.width)] = true;
+      }
+  return mask;
+}
+
+uint64_t seed_base() {
+  const char* env = std::getenv("PATHSPACE_TEST_SEED");  // rerun with other seeds to check robustness
+  return env ? std::strtoull(env, nullptr, 10) * 16 : 0;
+}
+
+struct CornellCase {
+  const char* scene;  // SmallVCM id, or a name for a mask without a built-in id
+  unsigned mask;      // LoadCornellBox mask (cornell-variants.md §1)
+  int max_segments;   // -1: the scene's (10)
+  uint32_t bpt_passes, other_passes;
+};
+
+std::string case_name(const ::testing::TestParamInfo<CornellCase>& info) {
+  return std::string(info.param.scene) + (info.param.max_segments > 0 ? "_direct" : "");
+}
+
+class BptPtAgree : public ::testing::TestWithParam<CornellCase> {};
+
+TEST_P(BptPtAgree, CornellVariant) {
+  const CornellCase c = GetParam();
+  const Scene scene = make_cornell_box(c.mask, 16, 16);
+  IntegratorSettings bpt, pt;
+  bpt.seed = seed_base() + 301;
+  bpt.bpt.max_segments = c.max_segments;
+  pt.seed = seed_base() + 302;
+  pt.pt.max_segments = c.max_segments;
+  const Rendered a = render_with(scene, "bpt", bpt, c.bpt_passes, 0);
+  const Rendered b = render_with(scene, "pt", pt, c.other_passes, 0);
+  expect_same_image(a, b, fmt::format("bpt-vs-pt-{}-{}", c.scene, c.max_segments));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cornell, BptPtAgree,
+                         ::testing::Values(CornellCase{"e_c", 1, -1, 512, 1024}, CornellCase{"e_p", 4, -1, 512, 1024},
+                                           CornellCase{"glossy_area", 257, -1, 512, 4096},
+                                           CornellCase{"glossy_point", 260, -1, 512, 4096},
+                                           CornellCase{"glossy_sun", 258, -1, 512, 4096},
+                                           CornellCase{"bs_c", 193, 2, 512, 1024}, CornellCase{"gbs_b", 456, 2, 512, 1024},
+                                           CornellCase{"glm_c", 273, 2, 512, 1024}, CornellCase{"gbs_p", 452, 2, 512, 1024},
+                                           CornellCase{"gbs_s", 450, 2, 512, 1024}),
+                         case_name);
+
+class BptLtAgree : public ::testing::TestWithParam<CornellCase> {};
+
+TEST_P(BptLtAgree, CornellVariant) {
+  const CornellCase c = GetParam();
+  const Scene scene = make_cornell_box(c.mask, 16, 16);
+  const Accel accel(scene);
+  const std::vector<bool> mask = specular_first_hit_mask(scene, accel);
+  IntegratorSettings bpt, lt;
+  bpt.seed = seed_base() + 401;
+  bpt.bpt.max_segments = c.max_segments;
+  lt.seed = seed_base() + 402;
+  lt.lt.light_paths = 4096;
+  lt.lt.max_segments = c.max_segments;
+  Rendered a = render_with(scene, "bpt", bpt, c.bpt_passes, 0);
+  Rendered b = render_with(scene, "lt", lt, c.other_passes, 0);
+  apply_mask(&a, mask);
+  apply_mask(&b, mask);
+  expect_same_image(a, b, fmt::format("bpt-vs-lt-{}-{}", c.scene, c.max_segments));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cornell, BptLtAgree,
+                         ::testing::Values(CornellCase{"gbs_s", 450, -1, 512, 256}, CornellCase{"gbs_p", 452, -1, 512, 256},
+                                           CornellCase{"bs_c", 193, -1, 512, 256}, CornellCase{"gbs_c", 449, -1, 512, 256},
+                                           CornellCase{"gbs_b", 456, -1, 512, 256}),
+                         case_name);
+
+// MIS weights change only the noise: balance and power heuristic images agree (caustics included).
+TEST(BptHeuristics, BalanceAndPowerAgree) {
+  const Scene scene = make_cornell_box(449, 16, 16);  // gbs_c
+  IntegratorSettings power, balance;
+  power.seed = seed_base() + 501;
+  balance.seed = seed_base() + 502;
+  balance.bpt.mis = MisHeuristic::balance;
+  const Rendered a = render_with(scene, "bpt", power, 512, 0);
+  const Rendered b = render_with(scene, "bpt", balance, 512, 0);
+  expect_same_image(a, b, "bpt-power-vs-balance-gbs_c");
+}
+
+// The shading-normal perturbation of lt_pt_consistency_test.cpp: a smoothly varying ns tilted by up
+// to ~35 degrees from ng.
+struct BumpedTracer {
+  const Accel& accel;
+  bool intersect(const Ray& ray, SurfaceHit* hit) const {
+    if (!accel.intersect(ray, hit)) return false;
+    const Vec3& p = hit->p;
+    const Vec3 t(0.5f * sinf(7.f * p.x + 1.f), 0.5f * sinf(6.f * p.y + 2.f), 0.5f * sinf(8.f * p.z + 3.f));
+    hit->ns = normalize(hit->ng + (t - hit->ng * dot(t, hit->ng)));
+    return true;
+  }
+  bool occluded(const Ray& ray) const { return accel.occluded(ray); }
+};
+
+TEST(BptPtAgreeShadingNormals, BumpedCornellBox) {
+  const Scene scene = make_builtin_scene("e_c", 16, 16);
+  const SceneView view = scene.view();
+  const Accel accel(scene);
+  const BumpedTracer tracer{accel};
+  BptSettings settings;
+  BptBuffers buffers(16, 16, settings, bpt_max_segments(settings, view));
+  Film bpt_film(16, 16), pt_film(16, 16);
+  PathCounters counters;
+  for (uint32_t pass = 0; pass < 512; ++pass) bpt_render_pass(view, tracer, settings, seed_base() + 601, pass, buffers, bpt_film, counters);
+  const PtSettings pt;
+  for (uint32_t pass = 0; pass < 1024; ++pass)
+    parallel_for(pt_film.pixel_count(), 64, [&](size_t begin, size_t end) {
+      PathCounters local;
+      for (size_t pixel = begin; pixel < end; ++pixel) {
+        const Sampler sampler(seed_base() + 602, pixel, pass);
+        const Ray ray = view.camera.generate_ray(float(pixel % 16) + sampler.at(dims::kPixelX), float(pixel / 16) + sampler.at(dims::kPixelY));
+        pt_film.add_sample(uint32_t(pixel), pt_trace_path(view, tracer, sampler, ray, pt, &local));
+      }
+    });
+  expect_same_image({bpt_film.mean(), bpt_film.variance_of_mean()}, {pt_film.mean(), pt_film.variance_of_mean()},
+                    "bpt-vs-pt-shading-normals");
+}
+
+}  // namespace
+}  // namespace pathspace

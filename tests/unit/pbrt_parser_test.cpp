@@ -1,0 +1,229 @@
+// pbrt-v4 tokenizer, parser and scene builder on small inline scenes: transforms, named materials,
+// includes (also gzip) from a temporary folder, syntax errors with file:line:column, and warnings
+// (with locations) for what pathspace does not support.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "pathspace/io/pbrt/pbrt_scene_builder.h"
+#include "pathspace/io/pbrt/pbrt_tokenizer.h"
+
+namespace pathspace {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kCamera = "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [ 40 ]\n"
+                      "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" [ 32 ]\n";
+
+Scene load(const std::string& world, std::vector<std::string>* warnings = nullptr, SceneLoadOptions options = {},
+           SceneFileSettings* settings = nullptr, const std::string& folder = "") {
+  LoadWarnings w(warnings);
+  return pbrt::load_pbrt_string(std::string(kCamera) + "WorldBegin\n" + world, "test.pbrt", folder, options, &w, settings);
+}
+
+// The Error's location (line 0 when no Error was thrown).
+FileLoc error_location(const std::string& world, std::string* message = nullptr) {
+  try {
+    load(world);
+  } catch (const Error& e) {
+    if (message) *message = e.what();
+    return e.location();
+  }
+  return {};
+}
+
+bool has_warning(const std::vector<std::string>& w, const std::string& part) {
+  for (const std::string& s : w)
+    if (s.find(part) != std::string::npos) return true;
+  return false;
+}
+
+TEST(PbrtTokenizer, TokensCommentsAndLocations) {
+  const std::string src = "Shape \"sphere\" # comment [ ignored\n  \"float radius\" [ 2.5 ]\n\"a\\\"b\"";
+  pbrt::Tokenizer t(src, "f.pbrt");
+  EXPECT_EQ(t.next().text, "Shape");
+  const pbrt::Token s = t.next();
+  EXPECT_EQ(s.unquoted(), "sphere");
+  EXPECT_EQ(s.loc.column, 7);
+  const pbrt::Token p = t.next();
+  EXPECT_EQ(p.loc.line, 2);
+  EXPECT_EQ(p.loc.column, 3);
+  EXPECT_TRUE(t.next().is_open());
+  EXPECT_EQ(t.peek().text, "2.5");
+  EXPECT_EQ(t.next().text, "2.5");
+  EXPECT_TRUE(t.next().is_close());
+  EXPECT_EQ(t.next().unquoted(), "a\"b");
+  EXPECT_TRUE(t.next().at_end());
+
+  const std::string bad = "Shape \"sphere";
+  pbrt::Tokenizer u(bad, "g.pbrt");
+  u.next();
+  try {
+    u.next();
+    FAIL() << "unterminated string accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.location().to_string(), "g.pbrt:1:7");
+  }
+}
+
+TEST(PbrtParser, TransformsPlaceSpheres) {
+  const Scene s = load(
+      "AttributeBegin\n Translate 1 2 3\n Scale 2 2 2\n Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n"
+      "AttributeBegin\n Rotate 90 0 0 1\n Translate 1 0 0\n Shape \"sphere\"\nAttributeEnd\n"
+      "TransformBegin\n ConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  -4 0 0 1]\n Shape \"sphere\"\nTransformEnd\n"
+      "Transform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 7 1]\nShape \"sphere\"\nIdentity\nShape \"sphere\" \"float radius\" 3\n");
+  ASSERT_EQ(s.spheres.size(), 5u);
+  EXPECT_EQ(s.spheres[0].center, Vec3(1, 2, 3));
+  EXPECT_FLOAT_EQ(s.spheres[0].radius, 1.f);
+  EXPECT_NEAR(s.spheres[1].center.x, 0.f, 1e-6f);  // (1,0,0) rotated 90 degrees about z
+  EXPECT_NEAR(s.spheres[1].center.y, 1.f, 1e-6f);
+  EXPECT_EQ(s.spheres[2].center, Vec3(-4, 0, 0));  // column-major matrix: translation in the last 4
+  EXPECT_EQ(s.spheres[3].center, Vec3(0, 0, 7));
+  EXPECT_EQ(s.spheres[4].center, Vec3(0, 0, 0));
+  EXPECT_FLOAT_EQ(s.spheres[4].radius, 3.f);
+
+  std::string msg;
+  const FileLoc loc = error_location("Scale 1 2 1\nShape \"sphere\"\n", &msg);
+  EXPECT_EQ(loc.line, 6);  // the Shape statement, not the Scale
+  EXPECT_NE(msg.find("non-uniform"), std::string::npos);
+}
+
+TEST(PbrtParser, CameraFilmSamplerIntegrator) {
+  SceneFileSettings settings;
+  const Scene s = pbrt::load_pbrt_string(
+      "Integrator \"path\" \"integer maxdepth\" [ 7 ]\nSampler \"sobol\" \"integer pixelsamples\" 32\n" + std::string(kCamera) +
+          "WorldBegin\nShape \"sphere\"\n",
+      "t.pbrt", "", {}, nullptr, &settings);
+  EXPECT_EQ(s.max_path_segments, 8);  // pbrt maxdepth counts bounces; pathspace counts segments
+  EXPECT_EQ(settings.spp, 32);
+  EXPECT_EQ(s.camera.width, 64);
+  EXPECT_EQ(s.camera.height, 32);
+  EXPECT_EQ(s.camera.position, Vec3(0, 0, 5));
+  EXPECT_NEAR(s.camera.forward.z, -1.f, 1e-6f);
+  // pbrt's LookAt: camera +x = cross(up, dir) = (-1, 0, 0) here; raster x follows camera +x.
+  EXPECT_NEAR(s.camera.right.x, -1.f, 1e-6f);
+  EXPECT_NEAR(s.camera.up.y, 1.f, 1e-6f);
+  EXPECT_NEAR(s.camera.tan_y, std::tan(20.0 * M_PI / 180.0), 1e-6);  // fov spans the shorter axis
+  EXPECT_NEAR(s.camera.tan_x, 2.0 * std::tan(20.0 * M_PI / 180.0), 1e-6);
+
+  SceneLoadOptions o;
+  o.width = 16, o.height = 48;
+  const Scene r = load("Shape \"sphere\"\n", nullptr, o);
+  EXPECT_EQ(r.camera.width, 16);
+  EXPECT_NEAR(r.camera.tan_x, std::tan(20.0 * M_PI / 180.0), 1e-6);
+}
+
+TEST(PbrtParser, NamedMaterialsAndLights) {
+  std::vector<std::string> w;
+  const Scene s = load(
+      "MakeNamedMaterial \"gold\" \"string type\" \"conductor\" \"spectrum eta\" \"metal-Au-eta\"\n"
+      "  \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.04\n"
+      "MakeNamedMaterial \"glass\" \"string type\" [ \"dielectric\" ] \"float eta\" 1.33\n"
+      "Texture \"t\" \"spectrum\" \"constant\" \"rgb value\" [ 0.1 0.2 0.3 ]\n"
+      "Material \"diffuse\" \"texture reflectance\" \"t\"\nShape \"sphere\"\n"
+      "NamedMaterial \"gold\"\nShape \"sphere\"\nNamedMaterial \"glass\"\nShape \"sphere\"\n"
+      "AttributeBegin\n Material \"diffuse\" \"rgb reflectance\" [ 0 0 0 ]\n AreaLightSource \"diffuse\" \"rgb L\" [ 1 2 3 ] \"float scale\" 2 \"bool twosided\" true\n"
+      " Shape \"trianglemesh\" \"point3 P\" [ 0 0 0  1 0 0  0 1 0 ] \"integer indices\" [ 0 1 2 ]\nAttributeEnd\n"
+      "Shape \"trianglemesh\" \"point3 P\" [ 0 0 0  1 0 0  0 1 0 ]\n"
+      "LightSource \"point\" \"rgb I\" [ 5 5 5 ] \"point3 from\" [ 0 4 0 ]\n"
+      "LightSource \"distant\" \"point3 from\" [ 0 1 0 ] \"point3 to\" [ 0 0 0 ]\n"
+      "LightSource \"infinite\" \"rgb L\" [ 0.5 0.5 0.5 ]\n",
+      &w);
+  ASSERT_EQ(s.spheres.size(), 3u);
+  const Material& diffuse = s.materials[s.spheres[0].material];
+  EXPECT_EQ(diffuse.diffuse, Rgb(0.1f, 0.2f, 0.3f));
+  EXPECT_TRUE(diffuse.two_sided);
+  const Material& gold = s.materials[s.spheres[1].material];
+  EXPECT_EQ(gold.type, MaterialType::rough_conductor);
+  EXPECT_NEAR(gold.alpha, 0.2f, 1e-6f);  // remaproughness: alpha = sqrt(roughness)
+  EXPECT_NEAR(gold.k.r, 3.983160f, 1e-5f);
+  const Material& glass = s.materials[s.spheres[2].material];
+  EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+  ASSERT_EQ(s.triangles.size(), 2u);
+  ASSERT_EQ(s.lights.size(), 4u);
+  EXPECT_EQ(s.lights[0].type, LightType::area_triangle);
+  EXPECT_EQ(s.lights[0].value, Rgb(2, 4, 6));
+  EXPECT_TRUE(s.lights[0].two_sided);
+  EXPECT_EQ(s.triangles[1].light, kNoLight);  // AttributeEnd ended the area light
+  EXPECT_EQ(s.lights[1].position, Vec3(0, 4, 0));
+  EXPECT_NEAR(s.lights[2].direction.y, -1.f, 1e-6f);  // light travels from -> to
+  EXPECT_EQ(s.lights[3].type, LightType::environment);
+  EXPECT_TRUE(w.empty()) << w.front();
+}
+
+TEST(PbrtParser, IncludesFromTempFolderAlsoGzip) {
+  const fs::path dir = fs::temp_directory_path() / "pathspace_pbrt_test";
+  fs::create_directories(dir / "sub");
+  std::ofstream(dir / "sub" / "mat.pbrt") << "Material \"diffuse\" \"rgb reflectance\" [ 0.25 0.5 0.75 ]\n";
+  const std::string gz = (dir / "shapes.pbrt.gz").string();
+  const std::string shapes = "Shape \"sphere\" \"float radius\" 4\n";
+  gzFile f = gzopen(gz.c_str(), "wb");
+  gzwrite(f, shapes.data(), unsigned(shapes.size()));
+  gzclose(f);
+  std::ofstream(dir / "main.pbrt") << kCamera << "WorldBegin\nInclude \"sub/mat.pbrt\"\nImport \"shapes.pbrt.gz\"\n";
+  std::vector<std::string> w;
+  const Scene s = load_scene((dir / "main.pbrt").string(), {}, &w);
+  ASSERT_EQ(s.spheres.size(), 1u);
+  EXPECT_FLOAT_EQ(s.spheres[0].radius, 4.f);
+  EXPECT_EQ(s.materials[s.spheres[0].material].diffuse, Rgb(0.25f, 0.5f, 0.75f));
+
+  std::ofstream(dir / "broken.pbrt") << "WorldBegin\nInclude \"missing.pbrt\"\n";
+  try {
+    load_scene((dir / "broken.pbrt").string(), {}, nullptr);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.location().line, 2);
+    EXPECT_NE(std::string(e.what()).find("missing.pbrt"), std::string::npos);
+  }
+}
+
+TEST(PbrtParser, SyntaxErrorsCarryFileLineColumn) {
+  std::string msg;
+  // kCamera takes 3 lines and WorldBegin the 4th, so the world starts on line 5.
+  FileLoc loc = error_location("Shape \"sphere\"\n  Bogus 1 2\n", &msg);
+  EXPECT_EQ(loc.to_string(), "test.pbrt:6:3");
+  EXPECT_NE(msg.find("unknown directive 'Bogus'"), std::string::npos);
+  loc = error_location("Translate 1 x 3\n", &msg);
+  EXPECT_EQ(loc.to_string(), "test.pbrt:5:13");
+  loc = error_location("Shape \"sphere\" \"float radius\" [ 1\n", &msg);
+  EXPECT_EQ(loc.line, 6);
+  EXPECT_NE(msg.find("missing ']'"), std::string::npos);
+  loc = error_location("Shape \"sphere\" \"floaty radius\" 1\n", &msg);
+  EXPECT_EQ(loc.to_string(), "test.pbrt:5:16");
+  loc = error_location("Shape \"sphere\" \"float radius\" \"one\"\n", &msg);
+  EXPECT_EQ(loc.line, 5);
+  loc = error_location("NamedMaterial \"nope\"\n", &msg);
+  EXPECT_EQ(loc.to_string(), "test.pbrt:5:1");
+  loc = error_location("AttributeEnd\n", &msg);
+  EXPECT_EQ(loc.line, 5);
+  loc = error_location("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]\n", &msg);
+  EXPECT_EQ(loc.line, 5);
+  EXPECT_NE(msg.find("out of range"), std::string::npos);
+  loc = error_location("LightSource \"infinite\" \"string filename\" \"sky.exr\"\n", &msg);
+  EXPECT_NE(msg.find("sky.exr"), std::string::npos);
+}
+
+TEST(PbrtParser, UnsupportedFeaturesWarnWithLocation) {
+  std::vector<std::string> w;
+  load("Shape \"disk\" \"float radius\" 1\nShape \"sphere\" \"float zmax\" 0.5 \"float wobble\" 2\n"
+       "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+       "Material \"coateddiffuse\" \"float roughness\" 0.1\nShape \"sphere\"\n",
+       &w);
+  EXPECT_TRUE(has_warning(w, "test.pbrt:5:1: warning: Shape \"disk\" is not supported")) << w.size();
+  EXPECT_TRUE(has_warning(w, "test.pbrt:6:1: warning: partial sphere"));
+  EXPECT_TRUE(has_warning(w, "test.pbrt:6:33: warning: Shape \"sphere\": parameter \"float wobble\" is not supported"));
+  EXPECT_TRUE(has_warning(w, "test.pbrt:7:1: warning: MakeNamedMedium"));
+  EXPECT_TRUE(has_warning(w, "test.pbrt:8:1: warning: coateddiffuse approximated"));
+
+  w.clear();
+  LoadWarnings lw(&w);
+  pbrt::load_pbrt_string("Camera \"perspective\" \"float lensradius\" 0.1 \"float focaldistance\" 3\nWorldBegin\nShape \"sphere\"\n",
+                         "lens.pbrt", "", {}, &lw, nullptr);
+  EXPECT_TRUE(has_warning(w, "lens.pbrt:1:1: warning: thin lens"));
+}
+
+}  // namespace
+}  // namespace pathspace
