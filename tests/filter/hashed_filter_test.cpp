@@ -81,6 +81,23 @@ TEST(HashedFilter, FilteringChangesTheImage) {
   EXPECT_FALSE(bit_identical(p.mean, f.mean));
 }
 
+TEST(HashedFilter, RendersEveryBuiltinSceneProgressively) {
+  for (const BuiltinSceneInfo& info : builtin_scenes()) {
+    SCOPED_TRACE(info.name);
+    const Scene scene = make_builtin_scene(info.name, 32, 24);
+    const auto f = render_with(scene, hashed_settings(2), 3);  // 3 filtered passes accumulated
+    EXPECT_EQ(f.stats.spp, 3u);
+    EXPECT_EQ(f.stats.dropped_samples, 0u);
+    double sum = 0;
+    for (const Rgb& v : f.mean.pixels) {
+      EXPECT_TRUE(all_finite(v));
+      sum += average(v);
+    }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_NE(f.stats.report.find("probe-limit fallbacks 0"), std::string::npos) << f.stats.report;
+  }
+}
+
 TEST(HashedFilter, TinyTableFallsBackToUnfilteredContributions) {
   const Scene scene = make_builtin_scene("cornell-empty-area", 32, 32);
   IntegratorSettings s = hashed_settings(5);
