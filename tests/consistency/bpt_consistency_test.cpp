@@ -26,29 +26,19 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "support/integrator_comparison.h"
 #include "support/statistics.h"
 
 namespace pathspace {
 namespace {
 
-struct Rendered {
-  Image mean, variance;
-};
+using testing::apply_mask;
+using testing::Rendered;
+using testing::specular_first_hit_mask;
 
 Rendered render_with(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings, uint32_t passes,
                      int threads, std::vector<NamedImage>* aovs = nullptr) {
-  const Accel accel(scene);
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.integrator = integrator;
-  req.spp = passes;
-  req.threads = threads;
-  req.settings = settings;
-  req.want_aovs = aovs != nullptr;
-  RenderStats stats = render(scene, accel, req, film);
-  EXPECT_EQ(stats.dropped_samples, 0u) << integrator;
-  if (aovs) *aovs = std::move(stats.aovs);
-  return {film.mean(), film.variance_of_mean()};
+  return testing::render_integrator(scene, integrator, settings, passes, threads, aovs);
 }
 
 TEST(BptDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
@@ -77,50 +67,11 @@ TEST(BptDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
 constexpr int kComparisons = 17;  // image comparisons in this file
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
-void apply_mask(Rendered* r, const std::vector<bool>& mask) {
-  for (size_t i = 0; i < mask.size(); ++i)
-    if (mask[i]) r->mean.pixels[i] = r->variance.pixels[i] = Rgb();
-}
-
 void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what) {
-  const testing::ImageZTest z = testing::image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, kAlphaImage);
-  if (z.passed()) return;
-  const std::string dir = testing::evidence_dir();
-  std::string worst;
-  int listed = 0;
-  for (size_t i = 0; i < a.mean.size() && listed < 12; ++i) {
-    const double d = average(a.mean.pixels[i]) - average(b.mean.pixels[i]);
-    const double sd = std::sqrt(average(a.variance.pixels[i]) + average(b.variance.pixels[i]) + 1e-8);
-    if (std::fabs(d / sd) > 3.29 && listed++ < 12)
-      worst += fmt::format("\n  pixel ({}, {}): {:.5f} vs {:.5f} (z {:.1f})", i % a.mean.width, i / a.mean.width,
-                           average(a.mean.pixels[i]), average(b.mean.pixels[i]), d / sd);
-  }
-  ADD_FAILURE() << what << ": " << z.failed << " of " << z.pixels << " pixels differ (at most " << z.allowed
-                << " allowed); image means " << z.mean_a << " vs " << z.mean_b << " (z = " << z.mean_z << "); images in "
-                << dir << worst;
-  write_image(dir + "/" + what + "-a.exr", a.mean);
-  write_image(dir + "/" + what + "-b.exr", b.mean);
+  testing::expect_same_image(a, b, what, kAlphaImage, "a", "b");
 }
 
-// Pixels where any of 3x3 probe rays first hits a surface without a non-delta lobe.
-std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel) {
-  const SceneView v = scene.view();
-  std::vector<bool> mask(size_t(v.camera.width) * size_t(v.camera.height), false);
-  for (int j = 0; j < v.camera.height; ++j)
-    for (int i = 0; i < v.camera.width; ++i)
-      for (int k = 0; k < 9; ++k) {
-        SurfaceHit hit;
-        const Ray ray = v.camera.generate_ray(float(i) + (0.05f + 0.45f * float(k % 3)), float(j) + (0.05f + 0.45f * float(k / 3)));
-        if (accel.intersect(ray, &hit) && !bsdf_has_non_delta(v.materials[hit.material]))
-          mask[size_t(i) + size_t(j) * size_t(v.camera.width)] = true;
-      }
-  return mask;
-}
-
-uint64_t seed_base() {
-  const char* env = std::getenv("PATHSPACE_TEST_SEED");  // rerun with other seeds to check robustness
-  return env ? std::strtoull(env, nullptr, 10) * 16 : 0;
-}
+uint64_t seed_base() { return testing::test_seed_base(); }
 
 struct CornellCase {
   const char* scene;  // SmallVCM id, or a name for a mask without a built-in id

@@ -6,6 +6,8 @@
 // a light-path vertex scales by |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|) on top of f |wi.ns|.
 #pragma once
 
+#include "pathspace/integrators/common/light_path_step.h"
+
 #include "pathspace/film/splat_film.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/path_counters.h"
@@ -168,22 +170,9 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     }
     if (segments + 1 >= max_segments) break;  // a further vertex could not connect within the limit
 
-    BsdfSample bs;
-    const Point2 ub{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)), sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
-    if (!bsdf_sample(mat, wo, sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub, TransportMode::importance, &bs)) break;
-    const Vec3 wi_world = frame.to_world(bs.wi);
-    const float wi_ns = fabsf(bs.wi.z);
-    if (!(wi_ns > 0.f)) break;
-    // bs.weight = f |wi.ns| / pdf; the adjoint correction turns it into f |wo.ns| |wi.ng| / (|wo.ng| pdf).
-    beta *= bs.weight * (fabsf(wo.z) * fabsf(dot(wi_world, hit.ng)) / (wo_ng * wi_ns));
-    if (is_black(beta) || !all_finite(beta)) break;
-
-    if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
-      const float q = fminf(1.f, max_component(beta) / beta0);
-      if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) break;
-      beta *= 1.f / q;
-    }
-    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+    if (!continue_light_path(sampler, v, mat, frame, hit, wo, wo_ng, segments, settings.roulette_start, beta0,
+                             scene.ray_epsilon, &beta, &ray))
+      break;
   }
 }
 

@@ -6,6 +6,8 @@
 // the camera (eq. 4, filter kernels of sec. 5.2, visibility of sec. 5.3).
 #pragma once
 
+#include "pathspace/integrators/common/light_path_step.h"
+
 #include "pathspace/hashgrid/hash_grid_view.h"
 #include "pathspace/hashgrid/stochastic_hash_map_view.h"
 #include "pathspace/integrators/common/dimensions.h"
@@ -321,20 +323,9 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
     }
     if (segments + 1 >= lv.max_segments) break;
 
-    BsdfSample bs;
-    const Point2 ub{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)), sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
-    if (!bsdf_sample(mat, wo, sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub, TransportMode::importance, &bs)) break;
-    const Vec3 wi_world = frame.to_world(bs.wi);
-    const float wi_ns = fabsf(bs.wi.z);
-    if (!(wi_ns > 0.f)) break;
-    beta *= bs.weight * (fabsf(wo.z) * fabsf(dot(wi_world, hit.ng)) / (wo_ng * wi_ns));
-    if (is_black(beta) || !all_finite(beta)) break;
-    if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
-      const float q = fminf(1.f, max_component(beta) / beta0);
-      if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) break;
-      beta *= 1.f / q;
-    }
-    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+    if (!continue_light_path(sampler, v, mat, frame, hit, wo, wo_ng, segments, settings.roulette_start, beta0,
+                             scene.ray_epsilon, &beta, &ray))
+      break;
   }
 }
 

@@ -1,0 +1,81 @@
+#include "support/integrator_comparison.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "pathspace/io/image_io.h"
+#include "pathspace/materials/bsdf.h"
+#include "support/statistics.h"
+
+namespace pathspace::testing {
+
+Rendered render_integrator(const Scene& scene, const Accel& accel, const std::string& integrator,
+                           const IntegratorSettings& settings, uint32_t passes, int threads, std::vector<NamedImage>* aovs) {
+  Film film(scene.camera.width, scene.camera.height);
+  RenderRequest req;
+  req.integrator = integrator;
+  req.spp = passes;
+  req.threads = threads;
+  req.settings = settings;
+  req.want_aovs = aovs != nullptr;
+  RenderStats stats = render(scene, accel, req, film);
+  EXPECT_EQ(stats.dropped_samples, 0u) << integrator;
+  if (aovs) *aovs = std::move(stats.aovs);
+  return {film.mean(), film.variance_of_mean()};
+}
+
+Rendered render_integrator(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings,
+                           uint32_t passes, int threads, std::vector<NamedImage>* aovs) {
+  const Accel accel(scene);
+  return render_integrator(scene, accel, integrator, settings, passes, threads, aovs);
+}
+
+void apply_mask(Rendered* r, const std::vector<bool>& mask) {
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) r->mean.pixels[i] = r->variance.pixels[i] = Rgb();
+}
+
+void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what, double alpha_image,
+                       const std::string& name_a, const std::string& name_b) {
+  const ImageZTest z = image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, alpha_image);
+  if (z.passed()) return;
+  const std::string dir = evidence_dir();
+  std::string worst;
+  int listed = 0;
+  for (size_t i = 0; i < a.mean.size() && listed < 12; ++i) {
+    const double d = average(a.mean.pixels[i]) - average(b.mean.pixels[i]);
+    const double sd = std::sqrt(average(a.variance.pixels[i]) + average(b.variance.pixels[i]) + 1e-8);
+    if (std::fabs(d / sd) > 3.29 && listed++ < 12)
+      worst += fmt::format("\n  pixel ({}, {}): {:.5f} vs {:.5f} (z {:.1f})", i % size_t(a.mean.width), i / size_t(a.mean.width),
+                           average(a.mean.pixels[i]), average(b.mean.pixels[i]), d / sd);
+  }
+  ADD_FAILURE() << what << ": " << z.failed << " of " << z.pixels << " pixels differ (at most " << z.allowed
+                << " allowed); image means " << z.mean_a << " vs " << z.mean_b << " (z = " << z.mean_z << "); images in "
+                << dir << worst;
+  write_image(dir + "/" + what + "-" + name_a + ".exr", a.mean);
+  write_image(dir + "/" + what + "-" + name_b + ".exr", b.mean);
+}
+
+std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel) {
+  const SceneView v = scene.view();
+  std::vector<bool> mask(size_t(v.camera.width) * size_t(v.camera.height), false);
+  for (int j = 0; j < v.camera.height; ++j)
+    for (int i = 0; i < v.camera.width; ++i)
+      for (int k = 0; k < 9; ++k) {
+        SurfaceHit hit;
+        const Ray ray = v.camera.generate_ray(float(i) + (0.05f + 0.45f * float(k % 3)), float(j) + (0.05f + 0.45f * float(k / 3)));
+        if (accel.intersect(ray, &hit) && !bsdf_has_non_delta(v.materials[hit.material]))
+          mask[size_t(i) + size_t(j) * size_t(v.camera.width)] = true;
+      }
+  return mask;
+}
+
+uint64_t test_seed_base() {
+  const char* env = std::getenv("PATHSPACE_TEST_SEED");
+  return env ? std::strtoull(env, nullptr, 10) * 16 : 0;
+}
+
+}  // namespace pathspace::testing

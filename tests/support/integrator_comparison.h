@@ -1,0 +1,43 @@
+// Shared by the consistency tests that compare integrators with each other: rendering a scene with
+// a named integrator into mean and variance-of-the-mean images, masking pixels, the per-pixel
+// z-test with evidence images on failure, and the PATHSPACE_TEST_SEED offset.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/film/image.h"
+#include "pathspace/integrators/render.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace::testing {
+
+struct Rendered {
+  Image mean, variance;
+};
+
+// Renders `passes` passes; checks that no sample was dropped; collects AOVs when asked.
+Rendered render_integrator(const Scene& scene, const Accel& accel, const std::string& integrator,
+                           const IntegratorSettings& settings, uint32_t passes, int threads = 0,
+                           std::vector<NamedImage>* aovs = nullptr);
+Rendered render_integrator(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings,
+                           uint32_t passes, int threads = 0, std::vector<NamedImage>* aovs = nullptr);
+
+// Zeroes mean and variance where mask[i] is set (those pixels cannot fail a comparison).
+void apply_mask(Rendered* r, const std::vector<bool>& mask);
+
+// Per-pixel z-test of two renders (support/statistics.h image_z_test, alpha_pixel 1e-3); on
+// failure writes both images to the evidence folder and lists the worst pixels.
+void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what, double alpha_image,
+                       const std::string& name_a = "a", const std::string& name_b = "b");
+
+// Pixels where any of 3x3 probe rays first hits a surface without a non-delta lobe (mirror, glass):
+// light paths cannot reach the camera through those.
+std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel);
+
+// PATHSPACE_TEST_SEED=k shifts the seeds of the statistical comparisons (robustness reruns).
+uint64_t test_seed_base();
+
+}  // namespace pathspace::testing
