@@ -131,6 +131,9 @@ class HashGrid {
     records_.swap(compacted_);
   }
 
+  // Records in cell order after compact(): records [0, compacted_records()) are exactly the linked ones.
+  size_t compacted_records() const { return cell_start_.empty() ? 0 : size_t(cell_start_.back()); }
+
   uint32_t status() const { return counters_.status; }
   size_t record_count() const { return std::min<size_t>(counters_.appended, records_.size()); }
   const GridGeometry& geometry() const { return geometry_; }

@@ -98,6 +98,12 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   const Vec3 no_point(NAN, NAN, NAN);
   grid_.build(n, r, [&](size_t pixel) { return points_[pixel].valid ? points_[pixel].p : no_point; });
   const HashGridView grid = grid_.view();
+  const size_t linked = grid_.compacted_records();
+  cell_points_.resize(linked);
+  cell_flux_.assign(3 * linked, 0);
+  parallel_for(linked, kPixelGrain, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) cell_points_[i] = points_[grid_.record(i).payload];
+  });
   const HashGridStats gs = grid_.stats();
   grid_failures_ += gs.probe_failures + (gs.dropped - (n - size_t(shared.points)));
   grid_s_ += seconds_since(t);
@@ -106,8 +112,8 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   t = std::chrono::steady_clock::now();
   SppmGatherView gather;
   gather.grid = grid;
-  gather.points = points_.data();
-  gather.flux = flux_.data();
+  gather.points = cell_points_.data();
+  gather.flux = cell_flux_.data();
   gather.radius = r;
   gather.inv_quantum = reference_power_ > 0.f ? float(kFluxFixedScale / double(reference_power_)) : 0.f;
   gather.max_segments = max_segments_;
@@ -125,6 +131,11 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
       shared.gathered += pc.gathered;
     });
   }
+  // Back from record order to pixels (each pixel has at most one record).
+  parallel_for(linked, kPixelGrain, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      for (int c = 0; c < 3; ++c) flux_[3 * size_t(grid_.record(i).payload) + c] = cell_flux_[3 * i + c];
+  });
   photon_s_ += seconds_since(t);
 
   // (d) Resolve: L = direct + tau * sum(f Phi) / (pi r^2 N), one film sample per pixel.

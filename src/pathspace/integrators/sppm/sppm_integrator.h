@@ -43,6 +43,8 @@ class SppmIntegrator final : public Integrator {
   std::vector<VisiblePoint> points_;
   std::vector<Rgb> direct_;
   std::vector<uint64_t> flux_;
+  std::vector<VisiblePoint> cell_points_;  // visible points in the grid's record order
+  std::vector<uint64_t> cell_flux_;        // 3 per record, scattered back to flux_ per pixel
   HashGrid grid_;
 
   // Totals for report().

@@ -121,10 +121,12 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
 
 // What a photon deposit needs: the visible points of this iteration in a hash grid (payload =
 // pixel), their per-channel fixed-point flux sums, and the global radius.
+// Points and flux are indexed like the grid's (cell-compacted) records, not by pixel: the records
+// of a cell are consecutive, so a gather reads and adds to consecutive memory (HashGrid::compact).
 struct SppmGatherView {
   HashGridView grid;
-  const VisiblePoint* points = nullptr;
-  uint64_t* flux = nullptr;     // 3 per visible point
+  const VisiblePoint* points = nullptr;  // points[i] belongs to grid.records[i]
+  uint64_t* flux = nullptr;     // 3 per record
   float radius = 0.f;
   float inv_quantum = 0.f;      // 1 / (reference photon power * 2^-32)
   int max_segments = 0;
@@ -136,7 +138,8 @@ PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g,
                                 const Rgb& power, int segments) {
   uint32_t gathered = 0;
   g.grid.for_each_in_radius(p, g.radius, [&](const GridRecord& rec, float) {
-    const VisiblePoint& vp = g.points[rec.payload];
+    const size_t index = size_t(&rec - g.grid.records);
+    const VisiblePoint& vp = g.points[index];
     if (int(vp.segments) + segments > g.max_segments) return;  // the joined path would be too long
     if (dot(vp.n_front, wi) <= 0.f) return;                    // photons from the back side do not count
     const Frame frame(vp.ns);
@@ -144,7 +147,7 @@ PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g,
     if (is_black(f)) return;
     const Rgb c = f * power;
     if (!all_finite(c)) return;
-    uint64_t* dst = g.flux + 3 * size_t(rec.payload);
+    uint64_t* dst = g.flux + 3 * index;
     for (int ch = 0; ch < 3; ++ch) {
       const double q = fmin(double(c[ch]) * double(g.inv_quantum) + 0.5, kFluxFixedMax);
       if (q >= 1.0) atomic_fetch_add(dst + ch, uint64_t(q));
