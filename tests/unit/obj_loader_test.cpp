@@ -7,15 +7,16 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/io/scene_loader.h"
+#include "support/temp_dir.h"
 
 namespace pathspace {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_obj_scene() {
-  const fs::path dir = fs::temp_directory_path() / "pathspace_obj_test";
-  fs::create_directories(dir);
+using pathspace::testing::TempDir;
+
+fs::path write_obj_scene(const fs::path& dir) {
   std::ofstream(dir / "box.mtl") << "newmtl red\nKd 0.5 0.1 0.1\nKs 0.2 0.2 0.2\nNs 50\n"
                                     "newmtl glass\nKd 0 0 0\nNi 1.5\nd 0.2\n"
                                     "newmtl lamp\nKd 0 0 0\nKe 10 9 8\n";
@@ -29,8 +30,9 @@ fs::path write_obj_scene() {
 }
 
 TEST(ObjLoader, MaterialsEmissionAndWarnings) {
+  const TempDir dir("obj");
   std::vector<std::string> w;
-  const Scene s = load_scene(write_obj_scene().string(), {}, &w);
+  const Scene s = load_scene(write_obj_scene(dir.path).string(), {}, &w);
   ASSERT_EQ(s.triangles.size(), 4u);
   const Material& red = s.materials[s.triangles[0].material];
   EXPECT_EQ(red.diffuse, Rgb(0.5f, 0.1f, 0.1f));
@@ -60,7 +62,8 @@ TEST(ObjLoader, CameraOptions) {
   o.camera_position = Vec3(5, 0.5f, 0.5f);
   o.camera_target = Vec3(0.5f, 0.5f, 0.5f);
   o.fov_degrees = 30.f;
-  const Scene s = load_scene(write_obj_scene().string(), o, nullptr);
+  const TempDir dir("obj");
+  const Scene s = load_scene(write_obj_scene(dir.path).string(), o, nullptr);
   EXPECT_EQ(s.camera.position, Vec3(5, 0.5f, 0.5f));
   EXPECT_NEAR(s.camera.forward.x, -1.f, 1e-6f);
   EXPECT_NEAR(s.camera.tan_y, std::tan(15.0 * M_PI / 180.0), 1e-6);
@@ -68,8 +71,8 @@ TEST(ObjLoader, CameraOptions) {
 }
 
 TEST(ObjLoader, Errors) {
-  const fs::path dir = fs::temp_directory_path() / "pathspace_obj_test";
-  fs::create_directories(dir);
+  const TempDir temp("obj");
+  const fs::path& dir = temp.path;
   std::ofstream(dir / "empty.obj") << "# nothing\n";
   EXPECT_THROW(load_scene((dir / "empty.obj").string(), {}, nullptr), Error);
   EXPECT_THROW(load_scene((dir / "missing.obj").string(), {}, nullptr), Error);

@@ -9,11 +9,13 @@
 
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/pbrt/pbrt_tokenizer.h"
+#include "support/temp_dir.h"
 
 namespace pathspace {
 namespace {
 
 namespace fs = std::filesystem;
+using pathspace::testing::TempDir;
 
 const char* kCamera = "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [ 40 ]\n"
                       "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" [ 32 ]\n";
@@ -155,7 +157,8 @@ TEST(PbrtParser, NamedMaterialsAndLights) {
 }
 
 TEST(PbrtParser, IncludesFromTempFolderAlsoGzip) {
-  const fs::path dir = fs::temp_directory_path() / "pathspace_pbrt_test";
+  const TempDir temp("pbrt");
+  const fs::path& dir = temp.path;
   fs::create_directories(dir / "sub");
   std::ofstream(dir / "sub" / "mat.pbrt") << "Material \"diffuse\" \"rgb reflectance\" [ 0.25 0.5 0.75 ]\n";
   const std::string gz = (dir / "shapes.pbrt.gz").string();

@@ -12,6 +12,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/io/ply_reader.h"
+#include "support/temp_dir.h"
 
 namespace pathspace {
 namespace {
@@ -63,10 +64,14 @@ std::string square_ply(Enc e) {
   return s;
 }
 
+// One folder per test process (ctest runs the cases as parallel processes).
+const fs::path& test_dir() {
+  static const pathspace::testing::TempDir dir("ply");
+  return dir.path;
+}
+
 std::string temp_file(const std::string& name, const std::string& bytes) {
-  const fs::path dir = fs::temp_directory_path() / "pathspace_ply_test";
-  fs::create_directories(dir);
-  const std::string path = (dir / name).string();
+  const std::string path = (test_dir() / name).string();
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
@@ -97,8 +102,7 @@ TEST(PlyReader, GzipAndCrLfHeader) {
   std::string header = text.substr(0, end), crlf;
   for (char c : header) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   text = crlf + "end_header\r\n" + text.substr(end + 11);
-  const std::string path = (fs::temp_directory_path() / "pathspace_ply_test" / "square.ply.gz").string();
-  fs::create_directories(fs::path(path).parent_path());
+  const std::string path = (test_dir() / "square.ply.gz").string();
   gzFile f = gzopen(path.c_str(), "wb");
   ASSERT_NE(f, nullptr);
   ASSERT_EQ(gzwrite(f, text.data(), unsigned(text.size())), int(text.size()));
