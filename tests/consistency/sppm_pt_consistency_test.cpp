@@ -27,6 +27,7 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "support/integrator_comparison.h"
 #include "support/statistics.h"
 
 namespace pathspace {
@@ -68,53 +69,11 @@ TEST(SppmDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
   EXPECT_GT(differing, one.mean.size() / 2);
 }
 
-// Pixels where the SPPM estimate is smooth over a ball of radius `reach` (see the file comment).
-// With exclude_ceiling, pixels that see a downward-facing surface are dropped as well (gbs_c, below).
-std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling) {
-  const SceneView view = scene.view();
-  const int w = scene.camera.width, h = scene.camera.height;
-  std::vector<bool> keep(size_t(w) * size_t(h), true);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      bool ok = true;
-      Vec3 n0;
-      uint32_t m0 = 0;
-      for (int k = 0; k < 16 && ok; ++k) {
-        SurfaceHit hit;
-        const Ray ray = view.camera.generate_ray(float(x) + (float(k % 4) + 0.5f) / 4.f, float(y) + (float(k / 4) + 0.5f) / 4.f);
-        if (!accel.intersect(ray, &hit)) {
-          ok = false;
-          break;
-        }
-        const Material& m = view.materials[hit.material];
-        if (k == 0) {
-          n0 = hit.ng;
-          m0 = hit.material;
-        }
-        ok = hit.material == m0 && dot(hit.ng, n0) > 0.999f && hit.light == kNoLight && bsdf_has_non_delta(m) &&
-             is_black(m.specular);
-        const Frame f(hit.ng);
-        for (int d = 0; d < 8 && ok; ++d) {
-          const float a = float(d) * kPi / 4.f;
-          const Vec3 dir = f.s * cosf(a) + f.t * sinf(a);
-          SurfaceHit probe;
-          ok = !accel.intersect(Ray{hit.p + hit.ng * 1e-3f, dir, 0.f, reach}, &probe);
-        }
-      }
-      if (exclude_ceiling && n0.z < -0.5f) ok = false;
-      keep[size_t(y) * size_t(w) + size_t(x)] = ok;
-    }
-  return keep;
-}
-
-Image masked(const Image& img, const std::vector<bool>& keep) {
-  Image out;
-  out.width = int(std::count(keep.begin(), keep.end(), true));
-  out.height = 1;
-  for (size_t i = 0; i < keep.size(); ++i)
-    if (keep[i]) out.pixels.push_back(img.pixels[i]);
-  return out;
-}
+// Pixels where the SPPM estimate is smooth over a ball of radius `reach` (see the file comment;
+// shared with sppm_bpt_consistency_test.cpp). With exclude_ceiling, pixels that see a
+// downward-facing surface are dropped as well (gbs_c, above).
+using testing::smooth_pixels;
+Image masked(const Image& img, const std::vector<bool>& keep) { return testing::compact_pixels(img, keep); }
 
 constexpr int kComparisons = 2;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
