@@ -1,4 +1,4 @@
-// pathspace command line: `render`, `info` and `compare` (docs/cli.md). Usage mistakes exit with status 2 and
+// pathspace command line: `render`, `info`, `compare` and `study` (docs/cli.md). Usage mistakes exit with status 2 and
 // one line on stderr; failures while running exit with status 1.
 #include <cstdio>
 #include <exception>
@@ -10,6 +10,7 @@
 #include "compare_command.h"
 #include "info_command.h"
 #include "render_command.h"
+#include "study_command.h"
 #include "usage_error.h"
 
 namespace {
@@ -34,9 +35,11 @@ int main(int argc, char** argv) {
   RenderOptions render_options;
   InfoOptions info_options;
   CompareOptions compare_options;
+  StudyOptions study_options;
   CLI::App* render_cmd = add_render_command(app, &render_options);
   CLI::App* info_cmd = add_info_command(app, &info_options);
   CLI::App* compare_cmd = add_compare_command(app, &compare_options);
+  CLI::App* study_cmd = add_study_command(app, &study_options);
 
   std::string command = "pathspace";
   try {
@@ -50,6 +53,10 @@ int main(int argc, char** argv) {
       command = "pathspace compare";
       return run_compare_command(compare_options);
     }
+    if (study_cmd->parsed()) {
+      command = "pathspace study pclt";
+      return run_study_command(study_options);
+    }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -58,6 +65,7 @@ int main(int argc, char** argv) {
     const std::string sub = render_cmd->parsed()    ? " render"
                             : info_cmd->parsed()    ? " info"
                             : compare_cmd->parsed() ? " compare"
+                            : study_cmd->parsed()   ? " study"
                                                     : "";
     fmt::print(stderr, "pathspace{}: error: {} (run 'pathspace{} --help' for usage)\n", sub, one_line(e.what()), sub);
     return kExitUsage;

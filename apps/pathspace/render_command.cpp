@@ -105,6 +105,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
   cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
   cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(CLI::Range(0.01, 179.0));
+  cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
+                "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
   cmd->add_option("-d,--max-depth", o->max_depth, "Path length limit in segments, camera ray included (default: the scene's)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
@@ -138,8 +140,10 @@ int run_render_command(const RenderOptions& o) {
   load_options.camera_target = parse_vec3(o.camera_target, "--camera-target");
   load_options.camera_up = parse_vec3(o.camera_up, "--camera-up");
   if (o.fov > 0.f) load_options.fov_degrees = o.fov;
-  if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees))
-    throw UsageError("--camera-pos, --camera-target, --camera-up and --fov apply to scene files only");
+  load_options.substitute_missing_textures = o.substitute_missing_textures;
+  if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
+                     o.substitute_missing_textures))
+    throw UsageError("--camera-pos, --camera-target, --camera-up, --fov and --substitute-missing-textures apply to scene files only");
   check_integrator(o.integrator);
   Resolution res = parse_resolution(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;

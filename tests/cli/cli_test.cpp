@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -176,11 +177,43 @@ TEST_F(CliTest, InfoListsEveryBuiltinSceneById) {
 }
 
 TEST_F(CliTest, HelpOnEveryCommand) {
-  for (const char* args : {"--help", "render --help", "info --help"}) {
+  for (const char* args : {"--help", "render --help", "info --help", "compare --help", "study --help", "study pclt --help"}) {
     const CliResult r = run(args);
     EXPECT_EQ(r.exit_code, 0) << args;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << args;
   }
+}
+
+// A tiny `study pclt` run: every figure's runs are listed in study.json with their numbers, and every
+// image the JSON names exists; study.html names every figure.
+TEST_F(CliTest, StudyPcltWritesJsonHtmlAndEveryImage) {
+  const CliResult r = run("study pclt --scenes bs_c --resolution 16x12 --time 0.02 --reference-time 0.2 --no-exr --quiet -o st");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(read_all(dir_ / "st/study.json"));
+  EXPECT_EQ(json.at("settings").at("width"), 16);
+  EXPECT_TRUE(json.at("scenes").contains("bs_c"));
+  const std::string html = read_all(dir_ / "st/study.html");
+  for (const char* fig : {"fig1", "fig5", "fig6", "fig7", "fig8", "fig9"}) {
+    SCOPED_TRACE(fig);
+    const auto& f = json.at("figures").at(fig);
+    EXPECT_NE(html.find(f.at("title").get<std::string>()), std::string::npos);
+    if (std::string(fig) == "fig9") continue;  // explained, not rendered
+    ASSERT_FALSE(f.at("runs").empty());
+    for (const auto& run : f.at("runs")) {
+      EXPECT_GT(run.at("iterations").get<int>(), 0);
+      EXPECT_GE(run.at("rel_mse").get<double>(), 0.0);
+      for (const char* key : {"image_png", "error_png"}) EXPECT_TRUE(fs::exists(dir_ / "st" / run.at(key).get<std::string>())) << run.at(key);
+    }
+  }
+  std::vector<std::string> fig1;
+  for (const auto& run : json.at("figures").at("fig1").at("runs")) fig1.push_back(run.at("integrator"));
+  EXPECT_EQ(fig1, (std::vector<std::string>{"pt", "lt", "bpt", "sppm", "pclt"}));
+}
+
+TEST_F(CliTest, StudyMisuseIsAUsageError) {
+  expect_usage_error("study pclt --resolution 16 --quiet", "--resolution");
+  expect_usage_error("study pclt --scenes nope --quiet", "nope");
+  expect_usage_error("study --quiet", "study");
 }
 
 }  // namespace
