@@ -7,6 +7,7 @@
 
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/load_warnings.h"
+#include "pathspace/io/mitsuba/mitsuba_loader.h"
 #include "pathspace/io/obj_loader.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/ply_reader.h"
@@ -33,7 +34,7 @@ void add_ply_mesh(const std::string& path, Scene* scene) {
 
 bool is_scene_file(const std::string& path) {
   const std::string ext = scene_file_extension(path);
-  return ext == ".pbrt" || ext == ".ply" || ext == ".obj";
+  return ext == ".pbrt" || ext == ".xml" || ext == ".ply" || ext == ".obj";
 }
 
 PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up, float fov_degrees,
@@ -80,7 +81,9 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::
   LoadWarnings w(warnings);
   const std::string ext = scene_file_extension(path);
   if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
-  if (ext != ".ply" && ext != ".obj") throw Error(FileLoc{path}, "unknown scene file type '" + ext + "' (expected .pbrt, .ply or .obj)");
+  if (ext == ".xml") return mitsuba::load_mitsuba_file(path, options, &w, settings);
+  if (ext != ".ply" && ext != ".obj")
+    throw Error(FileLoc{path}, "unknown scene file type '" + ext + "' (expected .pbrt, .xml, .ply or .obj)");
   Scene scene;
   scene.name = path;
   if (ext == ".ply") add_ply_mesh(path, &scene);

@@ -8,31 +8,11 @@
 #include <filesystem>
 
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/named_spectra.h"
 
 namespace pathspace::pbrt {
 
 namespace {
-
-// RGB fits of pbrt's named metal spectra (complex IOR at roughly 650/550/450 nm; the values
-// Mitsuba 0.5 and the Bitterli scenes use). Approximate: real spectra are smoother than 3 bands.
-struct NamedRgb {
-  const char* name;
-  Rgb value;
-};
-const NamedRgb kNamedSpectra[] = {
-    {"metal-Cu-eta", {0.200438f, 0.924033f, 1.102212f}}, {"metal-Cu-k", {3.912949f, 2.452848f, 2.142188f}},
-    {"metal-Au-eta", {0.143119f, 0.374957f, 1.442479f}}, {"metal-Au-k", {3.983160f, 2.385721f, 1.603215f}},
-    {"metal-Ag-eta", {0.155265f, 0.116723f, 0.138342f}}, {"metal-Ag-k", {4.828181f, 3.122249f, 2.146961f}},
-    {"metal-Al-eta", {1.657460f, 0.880369f, 0.521229f}}, {"metal-Al-k", {9.223869f, 6.269523f, 4.837001f}},
-    {"metal-CuZn-eta", {0.444f, 0.527f, 1.094f}},        {"metal-CuZn-k", {3.695f, 2.765f, 1.829f}},
-    {"metal-MgO-eta", {1.732f, 1.738f, 1.752f}},         {"metal-MgO-k", {0.f, 0.f, 0.f}},
-    {"metal-TiO2-eta", {2.87f, 2.95f, 3.10f}},           {"metal-TiO2-k", {0.f, 0.f, 0.f}},
-    // Glasses: refractive index at the sodium d line (587.6 nm).
-    {"glass-BK7", Rgb(1.5168f)}, {"glass-BAF10", Rgb(1.6700f)}, {"glass-FK51A", Rgb(1.4866f)},
-    {"glass-LASF9", Rgb(1.8503f)}, {"glass-F5", Rgb(1.6034f)}, {"glass-F10", Rgb(1.6200f)},
-    {"glass-F11", Rgb(1.6210f)}, {"glass-SF5", Rgb(1.6727f)}, {"glass-SF10", Rgb(1.7283f)},
-    {"glass-SF11", Rgb(1.7847f)},
-};
 
 Rgb lookup_texture(const Param& p, const TextureTable& textures) {
   if (p.strings.size() != 1) throw Error(p.loc, "texture parameter '" + p.name + "' must name one texture");
@@ -56,8 +36,8 @@ float eta_from(const Statement& st, LoadWarnings* w) {
   if (!p) return 1.5f;
   if (p->type == "float" && p->numbers.size() == 1) return float(p->numbers[0]);
   if (p->type == "spectrum" && p->strings.size() == 1) {
-    for (const NamedRgb& n : kNamedSpectra)
-      if (p->strings[0] == n.name) return n.value.g;
+    Rgb named;
+    if (find_named_spectrum(p->strings[0], &named)) return named.g;
     throw Error(p->loc, "unknown named spectrum '" + p->strings[0] + "' for eta");
   }
   if (p->type == "spectrum" && p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {
@@ -82,8 +62,8 @@ Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fall
   if (p->type == "texture") return lookup_texture(*p, textures);
   if (p->type == "float" && p->numbers.size() == 1) return Rgb(float(p->numbers[0]));
   if (p->type == "spectrum" && p->strings.size() == 1) {
-    for (const NamedRgb& n : kNamedSpectra)
-      if (p->strings[0] == n.name) return n.value;
+    Rgb named;
+    if (find_named_spectrum(p->strings[0], &named)) return named;
     if (p->strings[0].rfind("stdillum-", 0) == 0) {
       w->add(p->loc, "illuminant spectrum '" + p->strings[0] + "' taken as white (1, 1, 1)");
       return Rgb(1.f);

@@ -1,0 +1,274 @@
+// Mitsuba scene construction (see mitsuba_loader.h): walks the top-level elements in file order.
+// Mitsuba's max_depth counts path segments ("1 renders only directly visible emitters, 2 direct
+// illumination"), which is pathspace's max_path_segments; -1 (unbounded) becomes 1024, the pbrt
+// loader's bound. The camera's image x runs along camera-space -x, as in Mitsuba's perspective sensor.
+#include "pathspace/io/mitsuba/mitsuba_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "pathspace/io/file_bytes.h"
+#include "pathspace/io/image_io.h"
+#include "pathspace/io/mitsuba/mitsuba_materials.h"
+#include "pathspace/io/mitsuba/mitsuba_object.h"
+#include "pathspace/io/mitsuba/mitsuba_shapes.h"
+
+namespace pathspace::mitsuba {
+
+namespace {
+
+constexpr int kUnboundedSegments = 1024;
+
+class Builder {
+ public:
+  Builder(const Document& doc, const SceneLoadOptions& o, LoadWarnings* w, std::string folder)
+      : doc_(doc), options_(o), w_(w), folder_(std::move(folder)) {}
+
+  Scene run(SceneFileSettings* settings) {
+    const std::string version = doc_.attr(doc_.scene(), "version");
+    if (version.empty()) w_->add(doc_.loc(doc_.scene()), "<scene> has no version attribute; read as Mitsuba 3");
+    for (const pugi::xml_node& n : doc_.scene().children()) {
+      if (n.type() != pugi::node_element) continue;
+      const std::string tag = n.name();
+      if (tag == "default") continue;  // read by Document
+      if (tag == "texture" && !doc_.attr(n, "id").empty()) continue;  // found by Document for <ref>
+      if (tag == "integrator") integrator(Object(doc_, n));
+      else if (tag == "sensor") sensor(Object(doc_, n));
+      else if (tag == "bsdf") define_bsdf(n);
+      else if (tag == "shape") shape(Object(doc_, n));
+      else if (tag == "emitter") emitter(Object(doc_, n));
+      else w_->add(doc_.loc(n), "<" + tag + "> is not supported; ignored");
+    }
+    return finish(settings);
+  }
+
+ private:
+  Scene finish(SceneFileSettings* settings) {
+    const int w = options_.width > 0 ? options_.width : film_width_;
+    const int h = options_.height > 0 ? options_.height : film_height_;
+    if (!has_sensor_) w_->add(doc_.loc(doc_.scene()), "no <sensor>; using a camera at the origin looking along +z");
+    if (scene_.lights.empty()) w_->add(doc_.loc(doc_.scene()), "no emitters in the scene: the image will be black");
+    // Mitsuba's fov spans fov_axis; pathspace's file camera takes the shorter image axis.
+    const double t = std::tan(fov_ * M_PI / 360.0), diag = std::hypot(double(w), double(h));
+    double tx = t, ty = t * h / w;
+    if (fov_axis_ == "y" || (fov_axis_ == "smaller" && h <= w) || (fov_axis_ == "larger" && h >= w)) tx = t * w / h, ty = t;
+    else if (fov_axis_ == "diagonal") tx = t * w / diag, ty = t * h / diag;
+    const float fov_short = float(2.0 * std::atan(std::min(tx, ty)) * 180.0 / M_PI);
+    if (!(fov_short > 0.f && fov_short < 180.f)) throw Error(sensor_loc_, "field of view must be between 0 and 180 degrees");
+    const Mat4& m = camera_to_world_;
+    const Vec3 forward = m.vector(Vec3(0, 0, 1)), up = m.vector(Vec3(0, 1, 0)), right = -m.vector(Vec3(1, 0, 0));
+    if (!(length(forward) > 0.f && length(up) > 0.f && length(right) > 0.f) || !all_finite(m.point(Vec3())))
+      throw Error(sensor_loc_, "sensor to_world is singular");
+    scene_.camera = make_file_camera(m.point(Vec3()), forward, right, up, fov_short, w, h);
+    apply_camera_options(options_, false, w, h, &scene_);
+    scene_.max_path_segments = max_segments_;
+    const Bounds3 b = scene_.geometry_bounds();
+    if (!b.empty()) scene_.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
+    if (settings) settings->spp = spp_;
+    scene_.finalize();
+    return std::move(scene_);
+  }
+
+  void integrator(const Object& o) {
+    if (o.type() != "path" && o.type() != "volpath") {
+      w_->add(o.loc(), "integrator '" + o.type() + "': pathspace renders with the --integrator option (default pt); only max_depth is used");
+      for (const pugi::xml_node& inner : o.children("integrator")) return integrator(Object(doc_, inner));  // aov, moment: the wrapped one
+    }
+    const int depth = o.get_int("max_depth", -1);
+    if (depth != -1 && (depth < 1 || depth > kUnboundedSegments))
+      throw Error(o.loc(), "max_depth must be -1 (unbounded) or between 1 and " + std::to_string(kUnboundedSegments));
+    max_segments_ = depth == -1 ? kUnboundedSegments : depth;
+    if (o.get_bool("hide_emitters", false)) w_->add(doc_.loc(o.find("hide_emitters")->node), "hide_emitters is not supported; emitters stay visible");
+    o.ignore({"rr_depth"});
+    if (o.type() != "path" && o.type() != "volpath") o.ignore_all();
+    o.warn_unused(w_);
+  }
+
+  void sensor(const Object& o) {
+    if (o.type() != "perspective" && o.type() != "thinlens")
+      throw Error(o.loc(), "sensor type '" + o.type() + "' is not supported (only perspective)");
+    if (o.type() == "thinlens") {
+      w_->add(o.loc(), "thin lens sensor rendered as a pinhole (no depth of field)");
+      o.ignore({"aperture_radius", "focus_distance"});
+    }
+    has_sensor_ = true;
+    sensor_loc_ = o.loc();
+    fov_axis_ = o.get_string("fov_axis", "x");
+    if (fov_axis_ != "x" && fov_axis_ != "y" && fov_axis_ != "diagonal" && fov_axis_ != "smaller" && fov_axis_ != "larger")
+      throw Error(o.find("fov_axis") ? doc_.loc(o.find("fov_axis")->node) : o.loc(), "fov_axis must be x, y, diagonal, smaller or larger");
+    if (o.has("fov")) {
+      fov_ = o.get_float("fov", 45.0);
+    } else {  // Mitsuba: a 35 mm film's diagonal (43.27 mm) seen through focal_length (default 50mm)
+      const std::string f = o.get_string("focal_length", "50mm");
+      const std::string digits = f.size() > 2 && f.substr(f.size() - 2) == "mm" ? f.substr(0, f.size() - 2) : f;
+      const double mm = parse_number(digits, o.loc());
+      if (!(mm > 0.0)) throw Error(o.loc(), "focal_length must be positive");
+      fov_ = 2.0 * std::atan(std::hypot(36.0, 24.0) / (2.0 * mm)) * 180.0 / M_PI;
+      fov_axis_ = "diagonal";
+    }
+    camera_to_world_ = o.get_transform("to_world");
+    o.ignore({"near_clip", "far_clip", "shutter_open", "shutter_close", "principal_point_offset_x", "principal_point_offset_y"});
+    for (const pugi::xml_node& n : o.children("film")) film(Object(doc_, n));
+    for (const pugi::xml_node& n : o.children("sampler")) sampler(Object(doc_, n));
+    o.warn_unused(w_);
+  }
+
+  void film(const Object& o) {
+    if (o.type() != "hdrfilm" && o.type() != "ldrfilm") w_->add(o.loc(), "film '" + o.type() + "' treated as hdrfilm");
+    film_width_ = o.get_int("width", 768);
+    film_height_ = o.get_int("height", 576);
+    if (film_width_ < 1 || film_height_ < 1 || film_width_ > 16384 || film_height_ > 16384)
+      throw Error(o.loc(), "film width and height must be between 1 and 16384");
+    for (const pugi::xml_node& n : o.children("rfilter")) {
+      const Object f(doc_, n);
+      if (f.type() != "box") w_->add(f.loc(), "reconstruction filter '" + f.type() + "' not supported: pathspace uses a box filter of one pixel");
+      f.ignore_all();
+    }
+    o.ignore({"file_format", "pixel_format", "component_format", "banner", "high_quality_edges", "tonemap_method", "gamma", "exposure"});
+    o.warn_unused(w_);
+  }
+
+  void sampler(const Object& o) {
+    spp_ = o.get_int("sample_count", 4);
+    if (spp_ < 1) throw Error(o.loc(), "sample_count must be at least 1");
+    o.ignore_all();  // sampler kind, seed, jitter: they change the noise, not the expectation
+  }
+
+  void define_bsdf(const pugi::xml_node& n) {
+    const std::string id = doc_.attr(n, "id");
+    if (id.empty()) w_->add(doc_.loc(n), "top-level <bsdf> without an id is never used; ignored");
+    if (named_.count(id)) w_->add(doc_.loc(n), "bsdf id '" + id + "' redefined");
+    named_[id] = make_bsdf(doc_, n, named_, folder_, w_);
+    material_index_.erase(id);
+  }
+
+  uint32_t shape_material(const Object& o) {
+    std::vector<pugi::xml_node> b = o.children("bsdf");
+    for (const pugi::xml_node& r : o.children("ref")) b.push_back(r);
+    if (b.size() > 1) w_->add(o.loc(), o.title() + " has more than one BSDF; the first is used");
+    if (b.empty()) {
+      if (default_material_ < 0) default_material_ = int(scene_.add_material(default_bsdf()));
+      return uint32_t(default_material_);
+    }
+    if (std::string(b[0].name()) == "ref") {  // one material per id, however many shapes use it
+      const std::string id = doc_.attr(b[0], "id");
+      const auto it = material_index_.find(id);
+      if (it != material_index_.end()) return it->second;
+      return material_index_[id] = scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_));
+    }
+    return scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_));
+  }
+
+  void shape(const Object& o) {
+    const uint32_t material = shape_material(o);
+    Rgb radiance;
+    for (const pugi::xml_node& n : o.children("emitter")) {
+      const Object e(doc_, n);
+      if (e.type() != "area") {
+        w_->add(e.loc(), "emitter '" + e.type() + "' inside a shape is not supported; skipped");
+        e.ignore_all();
+      } else {
+        radiance = e.get_rgb("radiance", Rgb(1.f), folder_, w_);
+      }
+      e.warn_unused(w_);
+    }
+    const Material& m = scene_.materials[material];
+    if (!is_black(radiance) && (!is_black(m.diffuse) || !is_black(m.glossy) || !is_black(m.specular) || m.type != MaterialType::standard))
+      w_->add(o.loc(), "an emissive shape's BSDF is ignored (pathspace emitters do not reflect light)");
+    add_shape(o, material, radiance, folder_, w_, &scene_);
+    o.warn_unused(w_);
+  }
+
+  void emitter(const Object& o) {
+    const std::string& t = o.type();
+    if (t == "point") {
+      const Mat4 m = o.get_transform("to_world");
+      scene_.add_point_light(m.point(o.get_vector("position", Vec3())), o.get_rgb("intensity", Rgb(1.f), folder_, w_));
+    } else if (t == "directional") {
+      const Mat4 m = o.get_transform("to_world");
+      const Vec3 dir = m.vector(o.get_vector("direction", Vec3(0, 0, 1)));
+      if (!(length(dir) > 0.f) || !all_finite(dir)) throw Error(o.loc(), "directional emitter: direction must be non-zero");
+      scene_.add_directional_light(dir, o.get_rgb("irradiance", Rgb(1.f), folder_, w_));
+    } else if (t == "constant") {
+      if (has_environment_) throw Error(o.loc(), "a scene can hold at most one environment emitter");
+      has_environment_ = true;
+      scene_.add_environment_light(o.get_rgb("radiance", Rgb(1.f), folder_, w_));
+    } else if (t == "envmap") {
+      if (has_environment_) throw Error(o.loc(), "a scene can hold at most one environment emitter");
+      has_environment_ = true;
+      scene_.add_environment_light(envmap_mean(o));
+    } else if (t == "spot") {
+      w_->add(o.loc(), "spot emitters are not supported (pathspace has no spot light); skipped");
+      o.ignore_all();
+    } else {
+      w_->add(o.loc(), "emitter type '" + t + "' is not supported at the top level; skipped");
+      o.ignore_all();
+    }
+    o.warn_unused(w_);
+  }
+
+  // An image environment as a constant one of its mean radiance over the sphere (rows of the
+  // latitude-longitude map weighted by sin(theta)): total irradiance kept, directionality lost.
+  Rgb envmap_mean(const Object& o) {
+    const std::string file = o.get_string("filename", "");
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = std::filesystem::path(folder_) / path;
+    std::error_code ec;
+    if (file.empty() || !std::filesystem::is_regular_file(path, ec))
+      throw Error(o.find("filename") ? doc_.loc(o.find("filename")->node) : o.loc(),
+                  "environment map '" + file + "' not found (looked for " + path.string() + ")");
+    Image image;
+    try {
+      image = read_image(path.string());
+    } catch (const Error& e) {
+      throw Error(o.loc(), std::string("envmap: ") + e.what());
+    }
+    double sum[3] = {0, 0, 0}, weight = 0;
+    for (int y = 0; y < image.height; ++y) {
+      const double s = std::sin(M_PI * (y + 0.5) / image.height);
+      for (int x = 0; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c) sum[c] += s * image.at(x, y)[c];
+      weight += s * image.width;
+    }
+    const float scale = float(o.get_float("scale", 1.0));
+    o.ignore({"to_world", "filter_type", "mis_compensation"});
+    w_->add(o.loc(), "envmap '" + file + "' approximated by a constant environment of its mean radiance (image environments are not supported yet)");
+    const Rgb mean = weight > 0 ? Rgb(float(sum[0] / weight), float(sum[1] / weight), float(sum[2] / weight)) : Rgb();
+    if (!all_finite(mean)) throw Error(o.loc(), "envmap '" + file + "' holds NaN or infinite values");
+    return mean * scale;
+  }
+
+  const Document& doc_;
+  const SceneLoadOptions& options_;
+  LoadWarnings* w_;
+  std::string folder_;
+  Scene scene_;
+  NamedMaterials named_;
+  std::map<std::string, uint32_t> material_index_;
+  int default_material_ = -1;
+  bool has_sensor_ = false, has_environment_ = false;
+  FileLoc sensor_loc_;
+  Mat4 camera_to_world_;
+  double fov_ = 45.0;
+  std::string fov_axis_ = "x";
+  int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;
+};
+
+}  // namespace
+
+Scene load_mitsuba_string(const std::string& text, const std::string& name, const std::string& folder,
+                          const SceneLoadOptions& options, LoadWarnings* warnings, SceneFileSettings* settings) {
+  const Document doc(text, name);
+  Scene scene = Builder(doc, options, warnings, folder).run(settings);
+  scene.name = name;
+  return scene;
+}
+
+Scene load_mitsuba_file(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings,
+                        SceneFileSettings* settings) {
+  return load_mitsuba_string(read_file_bytes(path), path, std::filesystem::path(path).parent_path().string(), options, warnings,
+                             settings);
+}
+
+}  // namespace pathspace::mitsuba

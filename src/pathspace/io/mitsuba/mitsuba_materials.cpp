@@ -1,0 +1,155 @@
+// Mitsuba BSDF conversion (see mitsuba_materials.h). Roughness `alpha` is Mitsuba's microfacet
+// alpha directly (no remapping); Beckmann is approximated by GGX of the same alpha (warning), since
+// pathspace's microfacet materials are GGX only. Index of refraction = int_ior / ext_ior.
+#include "pathspace/io/mitsuba/mitsuba_materials.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pathspace/io/mitsuba/mitsuba_object.h"
+#include "pathspace/io/named_spectra.h"
+
+namespace pathspace::mitsuba {
+
+namespace {
+
+float ior_param(const Object& o, const std::string& name, float fallback) {
+  const Property* p = o.find(name);
+  if (!p) return fallback;
+  if (p->tag == "float") return float(o.get_float(name, fallback));
+  const std::string v = o.get_string(name, "");
+  float ior = fallback;
+  if (!find_named_ior(v, &ior)) throw Error(o.doc().loc(p->node), "unknown index of refraction '" + v + "'");
+  return ior;
+}
+
+float eta_of(const Object& o, float int_default) {
+  const float eta = ior_param(o, "int_ior", int_default) / ior_param(o, "ext_ior", 1.000277f);
+  if (!(eta > 0.f) || !std::isfinite(eta)) throw Error(o.loc(), o.title() + ": int_ior / ext_ior must be positive");
+  return eta;
+}
+
+// `microfacet`: the material really is a microfacet model, so the distribution matters (plastic's
+// Phong coat already follows Beckmann's exponent mapping).
+float alpha_of(const Object& o, LoadWarnings* w, bool microfacet = true) {
+  const float a = float(o.get_float("alpha", 0.1));
+  const float u = float(o.get_float("alpha_u", a)), v = float(o.get_float("alpha_v", a));
+  if (u != v) w->add(o.loc(), o.title() + ": anisotropic roughness approximated by sqrt(alpha_u * alpha_v)");
+  const std::string dist = o.get_string("distribution", "beckmann");
+  if (dist != "ggx" && dist != "beckmann") throw Error(o.loc(), o.title() + ": distribution must be beckmann or ggx");
+  if (microfacet && dist != "ggx") w->add(o.loc(), o.title() + ": " + dist + " distribution approximated by GGX with the same alpha");
+  o.ignore({"sample_visible"});
+  const float alpha = std::sqrt(std::max(0.f, u) * std::max(0.f, v));
+  if (!std::isfinite(alpha)) throw Error(o.loc(), o.title() + ": alpha must be finite");
+  return alpha;
+}
+
+Material conductor(const Object& o, const std::string& folder, LoadWarnings* w) {
+  const bool rough = o.type() == "roughconductor";
+  const std::string name = o.get_string("material", o.doc().legacy() ? "Cu" : "none");
+  Rgb eta(1.f), k(200.f);  // "none": a perfect mirror (|r| = 1 - 1e-4, the pbrt loader's reflectance route)
+  if (name != "none" && !(find_named_spectrum("metal-" + name + "-eta", &eta) && find_named_spectrum("metal-" + name + "-k", &k))) {
+    w->add(o.loc(), o.title() + ": conductor '" + name + "' has no RGB fit in pathspace (Cu, Au, Ag, Al, CuZn, MgO, TiO2); using Al");
+    find_named_spectrum("metal-Al-eta", &eta);
+    find_named_spectrum("metal-Al-k", &k);
+  }
+  eta = o.get_rgb("eta", eta, folder, w);
+  k = o.get_rgb("k", k, folder, w);
+  if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
+    w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
+  Material m = make_rough_conductor(rough ? alpha_of(o, w) : 0.f, eta, k);
+  return m;
+}
+
+Material dielectric(const Object& o, const std::string& folder, LoadWarnings* w) {
+  const float eta = eta_of(o, 1.5046f);  // Mitsuba's default int_ior is "bk7"
+  const Rgb tint = o.get_rgb("specular_transmittance", Rgb(1.f), folder, w);
+  if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
+    w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
+  if (o.type() == "thindielectric") {
+    w->add(o.loc(), "thindielectric approximated by a smooth dielectric interface (a thin slab does not refract)");
+    return make_glass(eta, tint);
+  }
+  const float alpha = o.type() == "roughdielectric" ? alpha_of(o, w) : 0.f;
+  return alpha < 1e-3f ? make_glass(eta, tint) : make_rough_dielectric(alpha, eta, tint);
+}
+
+// Same approximation as the pbrt loader's coateddiffuse: Lambert base * (1 - F0) under a mirror
+// (plastic) or Phong (roughplastic, exponent 2/alpha^2 - 2 after Walter et al. 2007) coat of F0.
+Material plastic(const Object& o, const std::string& folder, LoadWarnings* w) {
+  const float eta = eta_of(o, 1.49f);  // Mitsuba's default int_ior is "polypropylene"
+  const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
+  const Rgb coat = o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) * f0;
+  const float alpha = o.type() == "roughplastic" ? alpha_of(o, w, false) : 0.f;
+  Material m;
+  m.diffuse = o.get_rgb("diffuse_reflectance", Rgb(0.5f), folder, w) * (1.f - f0);
+  if (alpha < 1e-3f) {
+    m.specular = coat;
+  } else {
+    m.glossy = coat;
+    m.exponent = std::max(1.f, 2.f / (alpha * alpha) - 2.f);
+  }
+  o.ignore({"nonlinear"});
+  w->add(o.loc(), o.type() + " approximated as Lambert (diffuse_reflectance * (1 - F0)) + " +
+                      std::string(alpha < 1e-3f ? "mirror" : "Phong") + " coat of reflectance F0 = " + std::to_string(f0));
+  return m;
+}
+
+Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
+                          LoadWarnings* w, int depth);
+
+}  // namespace
+
+Material default_bsdf() { return make_diffuse(Rgb(0.5f)); }
+
+Material make_bsdf(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
+                   LoadWarnings* w) {
+  return make_bsdf_nested(doc, node, named, folder, w, 0);
+}
+
+namespace {
+
+Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
+                          LoadWarnings* w, int depth) {
+  // Wrappers nest; a bound keeps hostile files from exhausting the stack.
+  if (depth > 16) throw Error(doc.loc(node), "BSDFs nested more than 16 deep");
+  if (std::string(node.name()) == "ref") {
+    const std::string id = doc.attr(node, "id");
+    const auto it = named.find(id);
+    if (it == named.end()) throw Error(doc.loc(node), "<ref id=\"" + id + "\"> names no <bsdf> defined before it");
+    return it->second;
+  }
+  const Object o(doc, node);
+  const std::string& t = o.type();
+  Material m;
+  if (t == "twosided" || t == "bumpmap" || t == "normalmap" || t == "mask") {
+    std::vector<pugi::xml_node> inner = o.children("bsdf");
+    for (const pugi::xml_node& r : o.children("ref")) inner.push_back(r);
+    if (inner.empty()) throw Error(o.loc(), o.title() + " needs a nested <bsdf> or <ref>");
+    if (inner.size() > 1) w->add(o.loc(), o.title() + ": different front and back BSDFs are not supported; the first is used on both sides");
+    m = make_bsdf_nested(doc, inner[0], named, folder, w, depth + 1);
+    if (t == "twosided") m.two_sided = true;
+    else {
+      w->add(o.loc(), o.title() + " is not supported: its nested BSDF is used alone");
+      o.ignore_all();
+    }
+  } else if (t == "diffuse") {
+    m = make_diffuse(o.get_rgb("reflectance", Rgb(0.5f), folder, w));
+  } else if (t == "conductor" || t == "roughconductor") {
+    m = conductor(o, folder, w);
+  } else if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric") {
+    m = dielectric(o, folder, w);
+  } else if (t == "plastic" || t == "roughplastic") {
+    m = plastic(o, folder, w);
+  } else {
+    w->add(o.loc(), "BSDF type '" + t + "' not supported; using grey diffuse 0.5");
+    o.ignore_all();
+    m = default_bsdf();
+  }
+  o.warn_unused(w);
+  return m;
+}
+
+}  // namespace
+
+}  // namespace pathspace::mitsuba

@@ -1,0 +1,71 @@
+// One Mitsuba object element (<bsdf>, <shape>, <emitter>, <sensor>, ...) with its typed properties
+// (<float name=... value=...>, <rgb>, <transform>, ...) and nested objects. Every lookup marks the
+// property used, so whatever pathspace does not read becomes a warning with file:line afterwards.
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "pathspace/io/load_warnings.h"
+#include "pathspace/io/mitsuba/mitsuba_xml.h"
+#include "pathspace/io/pbrt/pbrt_transform.h"
+#include "pathspace/math/rgb.h"
+
+namespace pathspace::mitsuba {
+
+using Mat4 = pbrt::Mat4;  // the same row-major double 4x4 as the pbrt loader's
+
+struct Property {
+  pugi::xml_node node;
+  std::string tag, name;  // "float", "max_depth" (snake_case whatever the file's version)
+  mutable bool used = false;
+};
+
+class Object {
+ public:
+  Object(const Document& doc, const pugi::xml_node& node);
+
+  const Document& doc() const { return *doc_; }
+  const pugi::xml_node& node() const { return node_; }
+  const std::string& tag() const { return tag_; }
+  const std::string& type() const { return type_; }
+  FileLoc loc() const { return doc_->loc(node_); }
+  std::string title() const { return "<" + tag_ + " type=\"" + type_ + "\">"; }
+
+  const Property* find(const std::string& name) const;  // marks it used
+  bool has(const std::string& name) const { return find(name) != nullptr; }
+  double get_float(const std::string& name, double fallback) const;
+  int get_int(const std::string& name, int fallback) const;
+  bool get_bool(const std::string& name, bool fallback) const;
+  std::string get_string(const std::string& name, const std::string& fallback) const;
+  Vec3 get_vector(const std::string& name, const Vec3& fallback) const;  // <point>/<vector>
+  // rgb, srgb (decoded to linear), spectrum (constant, or wavelength:value pairs averaged, with a
+  // warning), float, or a nested or referenced texture (a bitmap's mean colour, with a warning).
+  Rgb get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w) const;
+  // <transform name=...>: its translate/rotate/scale/matrix/lookat children, each applied after
+  // the previous ones (M = op * M); identity when absent.
+  Mat4 get_transform(const std::string& name) const;
+  // Nested objects with this tag (<bsdf>, <emitter>, <ref>, ...), marked used.
+  std::vector<pugi::xml_node> children(const std::string& tag) const;
+
+  // A <texture> element as one colour: a bitmap's mean, a checkerboard's mean (with warnings).
+  Rgb texture_rgb(const pugi::xml_node& node, const std::string& name, const Rgb& fallback, const std::string& folder,
+                  LoadWarnings* w) const;
+
+  void ignore(std::initializer_list<const char*> names) const;
+  void ignore_all() const;
+  // One warning per property or nested object nobody read.
+  void warn_unused(LoadWarnings* w) const;
+
+ private:
+  const Document* doc_;
+  pugi::xml_node node_;
+  std::string tag_, type_;
+  std::vector<Property> props_;  // nested objects too, with their tag
+};
+
+// True for element names that are property values (float, rgb, transform, ...).
+bool is_property_tag(const std::string& tag);
+
+}  // namespace pathspace::mitsuba

@@ -1,0 +1,173 @@
+// Mitsuba shape tessellation and placement (see mitsuba_shapes.h). Local shapes follow Mitsuba's
+// definitions: rectangle [-1,1]^2 at z = 0 facing +z, cube [-1,1]^3 facing out, disk of radius 1 at
+// z = 0 facing +z, sphere of `radius` around `center`.
+#include "pathspace/io/mitsuba/mitsuba_shapes.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "pathspace/io/obj_loader.h"
+#include "pathspace/io/ply_reader.h"
+
+namespace pathspace::mitsuba {
+
+namespace {
+
+constexpr int kDiskSegments = 64;
+constexpr int kSphereRings = 32;  // ellipsoids only; spheres stay analytic
+
+struct LocalMesh {
+  std::vector<Vec3> positions;
+  std::vector<uint32_t> indices;
+};
+
+// Appends the mesh transformed by m. `flip` swaps the winding (analytic shapes under a mirroring
+// transform, flip_normals). Zero-area emitting triangles are dropped: they cannot be sampled.
+void add_mesh(const LocalMesh& mesh, const Mat4& m, bool flip, uint32_t material, const Rgb& le, const FileLoc& loc, Scene* s) {
+  const uint32_t base = uint32_t(s->positions.size());
+  for (const Vec3& p : mesh.positions) {
+    const Vec3 q = m.point(p);
+    if (!all_finite(q)) throw Error(loc, "shape vertex is NaN or infinite after to_world");
+    s->positions.push_back(q);
+  }
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t v[3] = {base + mesh.indices[t], base + mesh.indices[t + 1], base + mesh.indices[t + 2]};
+    for (uint32_t i : v)
+      if (i >= s->positions.size()) throw Error(loc, "mesh index out of range");
+    if (flip) std::swap(v[1], v[2]);
+    Triangle tri{{v[0], v[1], v[2]}, material, kNoLight};
+    if (!is_black(le)) {
+      const Vec3 ng = cross(s->positions[v[1]] - s->positions[v[0]], s->positions[v[2]] - s->positions[v[0]]);
+      if (!(length(ng) > 0.f)) continue;
+      Light l;
+      l.type = LightType::area_triangle;
+      l.shape = uint32_t(s->triangles.size());
+      l.value = le;
+      tri.light = int32_t(s->lights.size());
+      s->lights.push_back(l);
+    }
+    s->triangles.push_back(tri);
+  }
+}
+
+LocalMesh rectangle() {
+  return {{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, {0, 1, 2, 2, 3, 0}};
+}
+
+LocalMesh cube() {
+  LocalMesh m;
+  // Each face: its normal axis and the two tangent axes ordered so that cross(u, v) = normal.
+  const int axes[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+  for (const auto& a : axes)
+    for (float sign : {1.f, -1.f}) {
+      const uint32_t base = uint32_t(m.positions.size());
+      for (const auto& [u, v] : {std::pair{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}}) {
+        float p[3];
+        p[a[0]] = sign;
+        p[a[1]] = u * sign;  // mirroring one tangent keeps the winding counter-clockwise from outside
+        p[a[2]] = v;
+        m.positions.push_back(Vec3(p[0], p[1], p[2]));
+      }
+      for (uint32_t i : {0u, 1u, 2u, 2u, 3u, 0u}) m.indices.push_back(base + i);
+    }
+  return m;
+}
+
+LocalMesh disk() {
+  // The polygon's radius is enlarged so that its area equals the disk's (emitted power unchanged).
+  const double n = kDiskSegments, r = std::sqrt(M_PI / (0.5 * n * std::sin(2.0 * M_PI / n)));
+  LocalMesh m;
+  m.positions.push_back(Vec3(0, 0, 0));
+  for (int i = 0; i < kDiskSegments; ++i) {
+    const double phi = 2.0 * M_PI * i / n;
+    m.positions.push_back(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), 0.f));
+  }
+  for (uint32_t i = 0; i < uint32_t(kDiskSegments); ++i) m.indices.insert(m.indices.end(), {0u, 1 + i, 1 + (i + 1) % kDiskSegments});
+  return m;
+}
+
+LocalMesh uv_sphere() {
+  LocalMesh m;
+  const int rings = kSphereRings, segs = 2 * kSphereRings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segs; ++j) {
+      const double th = M_PI * i / rings, ph = 2.0 * M_PI * j / segs;
+      m.positions.push_back(Vec3(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)), float(std::cos(th))));
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segs; ++j) {
+      const uint32_t a = uint32_t(i * segs + j), b = uint32_t(i * segs + (j + 1) % segs), c = a + uint32_t(segs), d = b + uint32_t(segs);
+      m.indices.insert(m.indices.end(), {a, c, d, a, d, b});  // outward: theta grows towards -z
+    }
+  return m;
+}
+
+std::filesystem::path resolve(const Object& o, const std::string& folder) {
+  const std::string file = o.get_string("filename", "");
+  if (file.empty()) throw Error(o.loc(), o.title() + " needs a filename");
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(folder) / p;
+  return p;
+}
+
+LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w) {
+  const std::filesystem::path path = resolve(o, folder);
+  const bool face_normals = o.get_bool("face_normals", false);
+  LocalMesh m;
+  try {
+    if (o.type() == "ply") {
+      PlyMesh ply = read_ply(path.string());
+      if (!ply.normals.empty() && !face_normals)
+        w->add(o.loc(), o.title() + ": vertex normals are not used for shading yet (flat shading)");
+      m.positions = std::move(ply.positions);
+      m.indices = std::move(ply.indices);
+    } else {
+      Scene tmp;  // the OBJ's own materials and emitters are replaced by the XML's
+      load_obj_into(path.string(), w, &tmp);
+      m.positions = std::move(tmp.positions);
+      for (const Triangle& t : tmp.triangles) m.indices.insert(m.indices.end(), {t.v[0], t.v[1], t.v[2]});
+    }
+  } catch (const Error& e) {
+    throw Error(o.loc(), o.title() + ": " + e.what());
+  }
+  o.ignore({"face_normals", "flip_tex_coords", "max_smooth_angle", "vertex_count", "face_count"});
+  return m;
+}
+
+}  // namespace
+
+void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::string& folder, LoadWarnings* w, Scene* scene) {
+  const std::string& t = o.type();
+  const Mat4 m = o.get_transform("to_world");
+  const bool flip_normals = o.get_bool("flip_normals", false);
+  // Analytic shapes transform their normal with the inverse transpose, so a mirroring to_world
+  // turns the winding against it; meshes keep their world-space winding (Mitsuba's convention).
+  const bool mirrored = m.det3() < 0.0;
+  if (t == "rectangle" || t == "cube") {
+    add_mesh(t == "rectangle" ? rectangle() : cube(), m, mirrored != flip_normals, material, le, o.loc(), scene);
+  } else if (t == "disk") {
+    add_mesh(disk(), m, mirrored != flip_normals, material, le, o.loc(), scene);
+  } else if (t == "sphere") {
+    const Vec3 center = o.get_vector("center", Vec3());
+    const float radius = float(o.get_float("radius", 1.0));
+    if (!(radius > 0.f) || !all_finite(center)) throw Error(o.loc(), "sphere radius must be > 0");
+    const Mat4 full = m * Mat4::translate(center.x, center.y, center.z) * Mat4::scale(radius, radius, radius);
+    const Vec3 c0 = full.vector(Vec3(1, 0, 0)), c1 = full.vector(Vec3(0, 1, 0)), c2 = full.vector(Vec3(0, 0, 1));
+    const float s = length(c0);
+    const bool similarity = std::fabs(length(c1) - s) <= 1e-4f * s && std::fabs(length(c2) - s) <= 1e-4f * s &&
+                            abs_dot(c0, c1) <= 1e-4f * s * s && abs_dot(c0, c2) <= 1e-4f * s * s && abs_dot(c1, c2) <= 1e-4f * s * s;
+    if (similarity && s > 0.f && std::isfinite(s)) {
+      scene->add_sphere(full.point(Vec3()), s, material, le, flip_normals);
+    } else {
+      w->add(o.loc(), "sphere under a non-uniform scale or shear triangulated (" + std::to_string(2 * kSphereRings * kSphereRings * 2) + " triangles)");
+      add_mesh(uv_sphere(), full, mirrored != flip_normals, material, le, o.loc(), scene);
+    }
+  } else if (t == "obj" || t == "ply") {
+    add_mesh(mesh_file(o, folder, w), m, flip_normals, material, le, o.loc(), scene);
+  } else {
+    w->add(o.loc(), "shape type '" + t + "' not supported; skipped");
+    o.ignore_all();
+  }
+}
+
+}  // namespace pathspace::mitsuba

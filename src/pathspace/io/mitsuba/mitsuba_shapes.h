@@ -1,0 +1,19 @@
+// Mitsuba shapes as pathspace geometry in world space: obj (tinyobjloader via obj_loader), ply
+// (ply_reader), rectangle, cube, sphere (analytic under a similarity transform, else triangulated)
+// and disk (triangulated, area-preserving). Winding follows Mitsuba's normals: the to_world normal
+// of analytic shapes, the world-space winding of meshes; flip_normals reverses both.
+#pragma once
+
+#include <string>
+
+#include "pathspace/io/load_warnings.h"
+#include "pathspace/io/mitsuba/mitsuba_object.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace::mitsuba {
+
+// Adds shape `o` with `material`; a non-black `radiance` makes it a one-sided area emitter (Mitsuba's
+// area lights emit on the normal's side). Mesh files resolve against `folder`.
+void add_shape(const Object& o, uint32_t material, const Rgb& radiance, const std::string& folder, LoadWarnings* w, Scene* scene);
+
+}  // namespace pathspace::mitsuba
