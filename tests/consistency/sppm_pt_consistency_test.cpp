@@ -70,7 +70,7 @@ TEST(SppmDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
 }
 
 // Pixels where the SPPM estimate is smooth over a ball of radius `reach` (see the file comment;
-// shared with sppm_bpt_consistency_test.cpp). With exclude_ceiling, pixels that see a
+// shared with gathering_bpt_consistency_test.cpp). With exclude_ceiling, pixels that see a
 // downward-facing surface are dropped as well (gbs_c, above).
 using testing::smooth_pixels;
 Image masked(const Image& img, const std::vector<bool>& keep) { return testing::compact_pixels(img, keep); }

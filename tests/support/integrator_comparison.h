@@ -37,7 +37,7 @@ void expect_same_image(const Rendered& a, const Rendered& b, const std::string& 
 // light paths cannot reach the camera through those.
 std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel);
 
-// SPPM's "smooth pixel" mask (sppm_pt_consistency_test.cpp, sppm_bpt_consistency_test.cpp): true where
+// SPPM's "smooth pixel" mask (sppm_pt_consistency_test.cpp, gathering_bpt_consistency_test.cpp): true where
 // 4x4 primary rays across the pixel all hit the same plane with the same non-delta, non-specular,
 // non-emitting material, and 8 probe rays along that plane from each hit travel `reach` unoccluded,
 // i.e. where a gather ball of radius <= reach sees one flat surface (no edges, contacts, curved or
