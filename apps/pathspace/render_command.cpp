@@ -92,7 +92,7 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
-  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.ply/.obj file")
+  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.xml/.ply/.obj file")
       ->default_str(kDefaultSceneName);
   cmd->add_option("-i,--integrator", o->integrator, "Integrator (see 'pathspace info --integrators')")
       ->capture_default_str();
