@@ -6,7 +6,10 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace pathspace {
@@ -15,22 +18,53 @@ namespace {
 
 Rgb rgb(const tinyobj::real_t* v) { return Rgb(float(v[0]), float(v[1]), float(v[2])); }
 
-// tinyobjloader skips statements it does not know without a word; list them with their lines.
-void warn_unsupported_statements(const std::string& path, LoadWarnings* w) {
+// tinyobjloader skips statements it does not know without a word, and reports bad face indices
+// without a line: list unknown statements with their lines, and fail at the first face that names
+// a vertex that does not exist (positive indices count from the file's first vertex, negative ones
+// back from the last vertex defined so far, 0 is invalid).
+void scan_statements(const std::string& path, LoadWarnings* w) {
   std::ifstream in(path);
   std::string line;
   int line_no = 0;
+  int64_t vertices = 0;
+  std::vector<std::pair<int, int64_t>> positive;  // (line, index): checked against the final count
   static const char* const known[] = {"v", "vn", "vt", "f", "o", "g", "s", "usemtl", "mtllib"};
   while (std::getline(in, line)) {
     ++line_no;
     std::istringstream ss(line);
     std::string word;
     if (!(ss >> word) || word[0] == '#') continue;
+    if (word == "v") {  // tinyobjloader reads "nan" or "x" as 0 without a word
+      ++vertices;
+      std::string c;
+      for (int k = 0; k < 3 && ss >> c; ++k) {
+        double x = 0.0;
+        const auto r = std::from_chars(c.data() + (c[0] == '+'), c.data() + c.size(), x);
+        if (r.ec != std::errc() || r.ptr != c.data() + c.size() || !(std::fabs(x) <= std::numeric_limits<float>::max()))
+          throw Error(FileLoc{path, line_no, 1}, "vertex coordinate '" + c + "' is not a finite float");
+      }
+    }
+    if (word == "f")
+      for (std::string ref; ss >> ref;) {
+        int64_t i = 0;
+        const auto r = std::from_chars(ref.data(), ref.data() + ref.size(), i);
+        if (r.ec == std::errc::invalid_argument) continue;  // not a number: tinyobjloader's call
+        if (r.ec != std::errc() || i == 0 || (i < 0 && -i > vertices))
+          throw Error(FileLoc{path, line_no, 1}, "face vertex index " + ref.substr(0, size_t(r.ptr - ref.data())) + " does not name a vertex (" +
+                                                   std::to_string(vertices) + " defined so far)");
+        if (i > 0) positive.emplace_back(line_no, i);
+      }
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return word == k; }) != std::end(known)) continue;
     w->add(FileLoc{path, line_no, 1}, "OBJ statement '" + word + "' is not supported; ignored");
   }
+  for (const auto& [at, i] : positive)
+    if (i > vertices)
+      throw Error(FileLoc{path, at, 1}, "face vertex index " + std::to_string(i) + " out of range (the file has " + std::to_string(vertices) + " vertices)");
 }
 
+// map_Kd / map_Ks (multiplied by Kd / Ks as MTL specifies; a black Kd or Ks counts as white, which
+// exporters write next to a map), with the -s / -o uv options and "-colorspace linear". A missing
+// or unreadable image is a warning and leaves the constant colour.
 Material obj_material(const tinyobj::material_t& mt, const std::string& path, LoadWarnings* w) {
   Material m;
   m.two_sided = true;
@@ -65,6 +99,7 @@ Material obj_material(const tinyobj::material_t& mt, const std::string& path, Lo
 }  // namespace
 
 void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene) {
+  scan_statements(path, warnings);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -74,7 +109,6 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
   std::istringstream tw(reader.Warning());
   for (std::string line; std::getline(tw, line);)
     if (!line.empty()) warnings->add(FileLoc{path}, line);
-  warn_unsupported_statements(path, warnings);
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();

@@ -45,6 +45,20 @@ size_t scalar_size(Scalar s) {
 
 bool is_integer(Scalar s) { return s != Scalar::f32 && s != Scalar::f64; }
 
+// Whether an ascii value fits the declared integer type (binary values fit by construction).
+bool fits(Scalar s, double v) {
+  switch (s) {
+    case Scalar::i8: return v >= -128.0 && v <= 127.0;
+    case Scalar::u8: return v >= 0.0 && v <= 255.0;
+    case Scalar::i16: return v >= -32768.0 && v <= 32767.0;
+    case Scalar::u16: return v >= 0.0 && v <= 65535.0;
+    case Scalar::i32: return v >= -2147483648.0 && v <= 2147483647.0;
+    case Scalar::u32: return v >= 0.0 && v <= 4294967295.0;
+    case Scalar::f32: case Scalar::f64: return true;
+  }
+  return true;
+}
+
 // Both the classic names (uchar, int, float) and the sized ones (uint8, int32, float32).
 bool parse_scalar(const std::string& t, Scalar* s) {
   static const std::pair<const char*, Scalar> names[] = {
@@ -130,6 +144,8 @@ class BodyReader {
     const auto r = std::from_chars(number, stop, v);
     if (r.ec != std::errc() || r.ptr != stop) fail("'" + std::string(begin, stop) + "' is not a number");
     if (is_integer(type) && v != std::floor(v)) fail("'" + std::string(begin, stop) + "' is not an integer");
+    // Out-of-range integers would reach integer conversions (undefined behaviour; a fuzzer find).
+    if (!fits(type, v)) fail("'" + std::string(begin, stop) + "' is out of range for its integer type");
     pos_ = size_t(stop - bytes_.data());
     return v;
   }
@@ -251,13 +267,16 @@ PlyMesh parse_ply(const std::string& bytes, const std::string& name) {
   std::vector<double> values;
   std::vector<uint32_t> face;
   for (const Element& e : h.elements) {
+    const bool is_vertex = e.name == "vertex" && !have_vertices;
+    const bool is_face = e.name == "face" && !have_faces;
+    // Another element without properties occupies no bytes: nothing to read however large its
+    // count (looping over a count of 2^64 empty instances would hang).
+    if (e.properties.empty() && !is_vertex && !is_face) continue;
     const size_t min_size = min_instance_size(e, h.format);
     if (min_size > 0 && e.count > in.remaining() / min_size) {
       in.set_context(e.name, 0);
       in.fail("element count " + std::to_string(e.count) + " exceeds the data in the file (truncated?)");
     }
-    const bool is_vertex = e.name == "vertex" && !have_vertices;
-    const bool is_face = e.name == "face" && !have_faces;
     VertexLayout layout;
     int index_list = -1;
     if (is_vertex) {
@@ -300,11 +319,12 @@ PlyMesh parse_ply(const std::string& bytes, const std::string& name) {
         }
       }
       if (is_vertex) {
-        const Vec3 p(float(values[size_t(layout.slot[0])]), float(values[size_t(layout.slot[1])]), float(values[size_t(layout.slot[2])]));
+        // "= Vec3(...)": with "Vec3 p(float(values[...]), ...)" clang sees a function declaration.
+        const Vec3 p = Vec3(float(values[size_t(layout.slot[0])]), float(values[size_t(layout.slot[1])]), float(values[size_t(layout.slot[2])]));
         if (!all_finite(p)) in.fail("vertex position is NaN or infinite");
         mesh.positions.push_back(p);
         if (layout.slot[3] >= 0) {
-          const Vec3 n(float(values[size_t(layout.slot[3])]), float(values[size_t(layout.slot[4])]), float(values[size_t(layout.slot[5])]));
+          const Vec3 n = Vec3(float(values[size_t(layout.slot[3])]), float(values[size_t(layout.slot[4])]), float(values[size_t(layout.slot[5])]));
           if (!all_finite(n)) in.fail("vertex normal is NaN or infinite");
           mesh.normals.push_back(n);
         }

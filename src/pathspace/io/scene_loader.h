@@ -16,6 +16,10 @@ struct SceneLoadOptions {
   // Camera override (all formats); without it pbrt files use their Camera, OBJ/PLY frame the bounds.
   std::optional<Vec3> camera_position, camera_target, camera_up;
   std::optional<float> fov_degrees;  // field of view of the shorter image axis (pbrt's convention)
+  // pbrt: a missing image texture becomes a constant mid grey (0.5) and a missing environment map a
+  // constant white environment (radiance 1 times the light's scale), each with a warning. Off: every
+  // missing file is listed in one Error.
+  bool substitute_missing_textures = false;
 };
 
 // What a scene file suggests for the render besides the scene itself.

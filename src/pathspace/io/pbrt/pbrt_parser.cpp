@@ -4,7 +4,9 @@
 #include "pathspace/io/pbrt/pbrt_parser.h"
 
 #include <charconv>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/pbrt/pbrt_tokenizer.h"
@@ -46,6 +48,9 @@ double parse_number(const Token& t) {
   if (b < e && *b == '+') ++b;
   const auto r = std::from_chars(b, e, v);
   if (r.ec != std::errc() || r.ptr != e) throw Error(t.loc, "expected a number, got '" + std::string(t.text) + "'");
+  // from_chars accepts "nan" and "inf"; pbrt's Float is a float, so larger values cannot be meant either.
+  if (!(std::fabs(v) <= double(std::numeric_limits<float>::max())))
+    throw Error(t.loc, "number '" + std::string(t.text) + "' is not finite or out of the float range");
   return v;
 }
 
@@ -151,7 +156,9 @@ class Parser {
     if (p.numbers.empty() && p.strings.empty() && p.bools.empty()) throw Error(decl.loc, "parameter '" + d + "' has no values");
     if (p.type == "integer")
       for (double x : p.numbers)
-        if (x != double(int64_t(x))) throw Error(decl.loc, "integer parameter '" + p.name + "' has a non-integer value");
+        // Range first: converting an out-of-range double to an integer is undefined behaviour.
+        if (!(std::fabs(x) <= 2147483647.0) || x != std::floor(x))
+          throw Error(decl.loc, "integer parameter '" + p.name + "' needs whole numbers within the 32-bit range");
     return p;
   }
 

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "pathspace/io/pbrt/pbrt_materials.h"
+#include "pathspace/io/pbrt/pbrt_missing_files.h"
 #include "pathspace/io/pbrt/pbrt_parser.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
 #include "pathspace/io/ply_reader.h"
@@ -42,6 +43,8 @@ class Builder {
   }
 
   Scene finish(SceneFileSettings* settings) {
+    if (!missing_.empty())
+      missing_.fail(missing_images_ ? "missing images can be replaced by neutral stand-ins with --substitute-missing-textures" : "");
     if (!stack_.empty()) warn(FileLoc{}, "AttributeBegin without AttributeEnd at the end of the scene");
     const int w = options_.width > 0 ? options_.width : film_width_;
     const int h = options_.height > 0 ? options_.height : film_height_;
@@ -155,7 +158,7 @@ class Builder {
     } else if (d == "Accelerator") {
       mark_all(st);
     } else if (d == "Texture") {
-      add_texture(st, folder_of(st), &textures_, warnings_);
+      if (!missing_image_texture(st)) add_texture(st, folder_of(st), &textures_, warnings_);
     } else if (d == "MakeNamedMaterial") {
       const std::string type = st.get_string("type", "");
       if (type.empty()) throw Error(st.loc, "MakeNamedMaterial \"" + st.strings[0] + "\" has no \"string type\"");
@@ -188,6 +191,34 @@ class Builder {
     } else if (d == "ObjectInstance") {
       warn(st.loc, "ObjectInstance \"" + st.strings[0] + "\" skipped (instancing is not supported)");
     }
+  }
+
+  // An image file named by `p` (relative to the statement's file) that does not exist: recorded for the
+  // end-of-scene error, or with substitute_missing_textures a warning (the caller substitutes).
+  bool image_missing(const Statement& st, const Param& p, const char* what, const std::string& stand_in) {
+    const std::string name = p.strings.size() == 1 ? p.strings[0] : "";
+    std::filesystem::path path(name);
+    if (path.is_relative()) path = std::filesystem::path(folder_of(st)) / path;
+    std::error_code ec;
+    if (name.empty() || std::filesystem::is_regular_file(path, ec)) return false;
+    if (options_.substitute_missing_textures) {
+      warn(p.loc, std::string(what) + " '" + name + "' not found (looked for " + path.string() + "); substituted by " + stand_in);
+    } else {
+      missing_.add(p.loc, what, name);
+      missing_images_ = true;
+    }
+    return true;
+  }
+
+  // An imagemap Texture whose file is missing gets a constant mid grey (a placeholder while the
+  // scene is still parsed for more missing files, or the stand-in when substituting).
+  bool missing_image_texture(const Statement& st) {
+    if (st.strings[2] != "imagemap") return false;
+    const Param* file = st.find("filename");
+    if (!file || !image_missing(st, *file, "texture file", "a constant mid grey (0.5)")) return false;
+    textures_.values[st.strings[0]] = Rgb(kMissingTextureValue);
+    mark_all(st);
+    return true;
   }
 
   int material_index(const std::string& type, const Statement& st) {
@@ -228,18 +259,28 @@ class Builder {
       scene_.add_directional_light(dir, l);
     } else if (type == "infinite") {
       if (const Param* f = st.find("filename")) {
-        std::filesystem::path path(f->strings.empty() ? "" : f->strings[0]);
-        if (path.is_relative()) path = std::filesystem::path(folder_of(st)) / path;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec))
-          throw Error(f->loc, "environment map '" + (f->strings.empty() ? "" : f->strings[0]) + "' not found (looked for " + path.string() + ")");
+        if (image_missing(st, *f, "environment map", "a constant white environment (radiance 1 x scale)")) {
+          mark_all(st);
+          if (options_.substitute_missing_textures) add_environment(Rgb(kMissingEnvironmentRadiance) * scale);
+          return;
+        }
         throw Error(f->loc, "image environment not supported yet (infinite light with a filename)");
       }
-      scene_.add_environment_light(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale);
+      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale);
     } else {
       warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
       mark_all(st);
     }
+  }
+
+  // Constant environments add up exactly, so a second infinite light joins the first (a Scene holds one).
+  void add_environment(const Rgb& radiance) {
+    for (Light& l : scene_.lights)
+      if (l.type == LightType::environment) {
+        l.value += radiance;
+        return;
+      }
+    scene_.add_environment_light(radiance);
   }
 
   void shape(const Statement& st) {
@@ -275,6 +316,10 @@ class Builder {
       if (path.is_relative()) {
         const std::filesystem::path local = std::filesystem::path(folder_of(st)) / path;
         path = std::filesystem::exists(local, ec) ? local : std::filesystem::path(main_folder_) / path;
+      }
+      if (!file.empty() && !std::filesystem::exists(path, ec)) {  // listed with the other missing files at the end
+        missing_.add(st.find("filename")->loc, "PLY mesh", file);
+        return;
       }
       PlyMesh mesh;
       try {
@@ -373,6 +418,8 @@ class Builder {
   std::map<std::string, int> named_materials_;
   std::map<std::string, Mat4> coord_systems_;
   TextureTable textures_;
+  MissingFiles missing_;
+  bool missing_images_ = false;
   int default_material_ = -1;
   int object_depth_ = 0;
   bool in_world_ = false, end_time_only_ = false;
@@ -386,17 +433,36 @@ class Builder {
 
 }  // namespace
 
+namespace {
+// Every Error from a scene file names at least the file (checks deep in Scene have no location).
+// A null `warnings` discards them.
+template <typename F>
+Scene located(const std::string& name, LoadWarnings* warnings, F&& load) {
+  LoadWarnings discard(nullptr);
+  try {
+    return load(warnings ? warnings : &discard);
+  } catch (const Error& e) {
+    if (!e.location().file.empty()) throw;
+    throw Error(FileLoc{name}, e.what());
+  }
+}
+}  // namespace
+
 Scene load_pbrt_file(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings, SceneFileSettings* settings) {
-  Builder b(options, warnings, std::filesystem::path(path).parent_path().string());
-  parse_file(path, [&](const Statement& st) { b.handle(st); });
-  return b.finish(settings);
+  return located(path, warnings, [&](LoadWarnings* w) {
+    Builder b(options, w, std::filesystem::path(path).parent_path().string());
+    parse_file(path, [&](const Statement& st) { b.handle(st); });
+    return b.finish(settings);
+  });
 }
 
 Scene load_pbrt_string(const std::string& text, const std::string& name, const std::string& folder, const SceneLoadOptions& options,
                        LoadWarnings* warnings, SceneFileSettings* settings) {
-  Builder b(options, warnings, folder);
-  parse_string(text, name, folder, [&](const Statement& st) { b.handle(st); });
-  return b.finish(settings);
+  return located(name, warnings, [&](LoadWarnings* w) {
+    Builder b(options, w, folder);
+    parse_string(text, name, folder, [&](const Statement& st) { b.handle(st); });
+    return b.finish(settings);
+  });
 }
 
 }  // namespace pathspace::pbrt

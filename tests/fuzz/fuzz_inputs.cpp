@@ -1,0 +1,103 @@
+// Scene parser entry points for fuzzing and corpus replay (see fuzz_inputs.h).
+#include "fuzz/fuzz_inputs.h"
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "pathspace/io/pbrt/pbrt_scene_builder.h"
+#include "pathspace/io/ply_reader.h"
+#include "pathspace/io/scene_loader.h"
+#if PATHSPACE_HAS_MITSUBA
+#include "pathspace/io/mitsuba/mitsuba_loader.h"
+#endif
+
+namespace pathspace::fuzz {
+
+namespace {
+
+constexpr std::string_view kMtlMarker = "#--- scene.mtl ---\n";
+
+void write_file(const std::string& path, std::string_view bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+Scene load(Format format, std::string_view bytes, const std::string& folder) {
+  std::vector<std::string> warnings;
+  LoadWarnings w(&warnings);
+  SceneFileSettings settings;
+  const SceneLoadOptions options;
+  switch (format) {
+    case Format::pbrt:
+      return pbrt::load_pbrt_string(std::string(bytes), "fuzz.pbrt", folder, options, &w, &settings);
+    case Format::ply: {
+      // The reader alone: a PlyMesh is not a Scene, but must be valid when it comes back.
+      const PlyMesh mesh = parse_ply(std::string(bytes), "fuzz.ply");
+      for (uint32_t i : mesh.indices)
+        if (i >= mesh.positions.size()) throw std::logic_error("PLY reader returned an out-of-range index");
+      return Scene();
+    }
+    case Format::obj: {
+      const size_t split = bytes.find(kMtlMarker);
+      const std::string obj = folder + "/scene.obj", mtl = folder + "/scene.mtl";
+      write_file(obj, bytes.substr(0, split));
+      std::error_code ec;
+      if (split == std::string_view::npos) std::filesystem::remove(mtl, ec);
+      else write_file(mtl, bytes.substr(split + kMtlMarker.size()));
+      return load_scene(obj, options, &warnings);
+    }
+    case Format::mitsuba:
+#if PATHSPACE_HAS_MITSUBA
+      return mitsuba::load_mitsuba_string(std::string(bytes), "fuzz.xml", folder, options, &w, &settings);
+#else
+      throw std::logic_error("this build has no Mitsuba loader");
+#endif
+  }
+  return Scene();
+}
+
+}  // namespace
+
+const char* format_name(Format f) {
+  switch (f) {
+    case Format::pbrt: return "pbrt";
+    case Format::ply: return "ply";
+    case Format::obj: return "obj";
+    case Format::mitsuba: return "mitsuba";
+  }
+  return "";
+}
+
+bool format_available(Format f) {
+#if PATHSPACE_HAS_MITSUBA
+  (void)f;
+  return true;
+#else
+  return f != Format::mitsuba;
+#endif
+}
+
+InputFolder::InputFolder() : dir_("fuzz"), path_(dir_.path.string()) {
+  write_file(dir_.file("inc.pbrt"), "Material \"diffuse\" \"rgb reflectance\" [ 0.2 0.3 0.4 ]\n");
+  write_file(dir_.file("mesh.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  // A 1x1 RGB PFM (little-endian: negative scale) of value 0.25.
+  const float px[3] = {0.25f, 0.25f, 0.25f};
+  write_file(dir_.file("tex.pfm"), std::string("PF\n1 1\n-1.0\n") + std::string(reinterpret_cast<const char*>(px), sizeof px));
+}
+
+Outcome load_bytes(Format format, std::string_view bytes, const InputFolder& folder) {
+  Outcome o;
+  try {
+    load(format, bytes, folder.path());
+    o.loaded = true;
+  } catch (const Error& e) {
+    o.error = e.what();
+    o.location = e.location();
+  }
+  return o;
+}
+
+}  // namespace pathspace::fuzz
