@@ -9,6 +9,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
@@ -86,6 +87,9 @@ inline void fill_ray(const Ray& r, RTCRay* out) {
 
 struct Accel::Impl {
   const Scene* scene = nullptr;
+  const Point2* uvs = nullptr;   // per vertex, or nullptr
+  const Vec3* normals = nullptr; // per vertex, or nullptr
+  bool textured = false;         // uvs are only computed for scenes with textures (atan2/acos on spheres)
   RTCDevice device = nullptr;
   RTCScene rtc_scene = nullptr;
 
@@ -106,6 +110,8 @@ struct Accel::Impl {
       hit->ng = triangle_normal(p0, p1, p2);
       hit->u = u;
       hit->v = v;
+      hit->uv = textured ? triangle_uv(tri, uvs, u, v) : Point2{};
+      hit->ns = triangle_shading_normal(tri, normals, u, v, hit->ng);
       hit->kind = ShapeKind::triangle;
       hit->material = tri.material;
       hit->light = tri.light;
@@ -116,17 +122,22 @@ struct Accel::Impl {
       hit->p = s.center + radial * s.radius;  // re-project onto the surface
       hit->ng = s.inward_normals ? -radial : radial;
       hit->u = hit->v = 0.f;
+      hit->uv = textured ? sphere_uv(s, hit->p) : Point2{};
+      hit->ns = hit->ng;
       hit->kind = ShapeKind::sphere;
       hit->material = s.material;
       hit->light = s.light;
     }
-    hit->ns = hit->ng;
     return true;
   }
 };
 
 Accel::Accel(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   impl_->scene = &scene;
+  // Scene::finalize pads the vertex attributes to one per position; only then are they used.
+  if (!scene.uvs.empty() && scene.uvs.size() == scene.positions.size()) impl_->uvs = scene.uvs.data();
+  if (!scene.normals.empty() && scene.normals.size() == scene.positions.size()) impl_->normals = scene.normals.data();
+  impl_->textured = !scene.textures.empty();
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) throw Error(fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
   rtcSetDeviceErrorFunction(impl_->device, error_callback, nullptr);

@@ -266,9 +266,10 @@ Image image_from_channels(const T* px, int w, int h, int n, F to_linear) {
   return image;
 }
 
-// Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded.
+// Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
+// unless the caller says they hold linear data (v / max).
 // (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
-Image decode_stb(const std::string& path, const std::string& bytes) {
+Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
   if (bytes.size() > size_t(INT_MAX)) fail(path, "file too large");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int len = int(bytes.size());
@@ -285,12 +286,13 @@ Image decode_stb(const std::string& path, const std::string& bytes) {
     std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w, &h, &n, 0),
                                                  stbi_image_free);
     check(px.get());
-    return image_from_channels(px.get(), w, h, n, [](stbi_us v) { return linear_from_srgb(v / 65535.f); });
+    const bool srgb = ldr == LdrEncoding::srgb;
+    return image_from_channels(px.get(), w, h, n, [&](stbi_us v) { return srgb ? linear_from_srgb(v / 65535.f) : v / 65535.f; });
   }
   std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
   check(px.get());
   float lut[256];
-  for (int i = 0; i < 256; ++i) lut[i] = linear_from_srgb(float(i) / 255.f);
+  for (int i = 0; i < 256; ++i) lut[i] = ldr == LdrEncoding::srgb ? linear_from_srgb(float(i) / 255.f) : float(i) / 255.f;
   return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return lut[v]; });
 }
 
@@ -326,7 +328,7 @@ void write_image(const std::string& path, const Image& image) {
   write_file_atomically(path, [&](const std::string& temp) { write_bytes(path, temp, bytes); });
 }
 
-Image read_image(const std::string& path) {
+Image read_image(const std::string& path, LdrEncoding ldr) {
   const std::string bytes = read_file(path);
   const std::string ext = lower_extension(path);
   // The content decides where it can; the extension picks the decoder whose error message fits.
@@ -334,7 +336,7 @@ Image read_image(const std::string& path) {
   const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
   if (exr_magic || (ext == ".exr" && !pfm_magic)) return decode_exr(path, bytes);
   if (pfm_magic || ext == ".pfm") return decode_pfm(path, bytes);
-  return decode_stb(path, bytes);
+  return decode_stb(path, bytes, ldr);
 }
 
 }  // namespace pathspace

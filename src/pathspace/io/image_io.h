@@ -16,7 +16,11 @@ enum class ImageFormat { exr, pfm, png };
 ImageFormat image_format_from_path(const std::string& path);
 
 void write_image(const std::string& path, const Image& image);
-// Reads EXR, PFM, PNG (and what stb reads: JPG, HDR, TGA, BMP). LDR files are sRGB-decoded.
-Image read_image(const std::string& path);
+// How 8- and 16-bit files are turned into linear floats: sRGB-decoded (colour images), or v / max
+// (textures that hold linear data, e.g. pbrt's encoding "linear"). Float formats are always linear.
+enum class LdrEncoding { srgb, linear };
+
+// Reads EXR, PFM, PNG (and what stb reads: JPG, HDR, TGA, BMP).
+Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb);
 
 }  // namespace pathspace

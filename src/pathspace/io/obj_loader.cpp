@@ -1,6 +1,7 @@
 // OBJ/MTL loading (see obj_loader.h). tinyobjloader parses; this file validates indices, maps the
 // materials and reports what it cannot represent. Diffuse and Phong lobes are made two-sided because
-// OBJ files rarely orient their faces consistently.
+// OBJ files rarely orient their faces consistently. map_Kd / map_Ks bind image textures; corners
+// with texture coordinates or normals get their own vertices (OBJ indexes v, vt and vn separately).
 #include "pathspace/io/obj_loader.h"
 
 #include <tiny_obj_loader.h>
@@ -8,9 +9,14 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
+#include <tuple>
+
+#include "pathspace/io/texture_file.h"
 
 namespace pathspace {
 
@@ -65,7 +71,21 @@ void scan_statements(const std::string& path, LoadWarnings* w) {
 // map_Kd / map_Ks (multiplied by Kd / Ks as MTL specifies; a black Kd or Ks counts as white, which
 // exporters write next to a map), with the -s / -o uv options and "-colorspace linear". A missing
 // or unreadable image is a warning and leaves the constant colour.
-Material obj_material(const tinyobj::material_t& mt, const std::string& path, LoadWarnings* w) {
+int32_t obj_texture(const std::string& name, const tinyobj::texture_option_t& opt, const std::string& obj_path,
+                    const std::string& mtl_name, Scene* scene, TextureFiles* files, LoadWarnings* w) {
+  std::filesystem::path file(name);
+  if (file.is_relative()) file = std::filesystem::path(obj_path).parent_path() / file;
+  const LdrEncoding ldr = opt.colorspace == "linear" ? LdrEncoding::linear : LdrEncoding::srgb;
+  const TextureUvTransform uv{float(opt.scale[0]), float(opt.scale[1]), float(opt.origin_offset[0]), float(opt.origin_offset[1])};
+  try {
+    return int32_t(files->add(scene, file.string(), ldr, uv));
+  } catch (const Error& e) {
+    w->add(FileLoc{obj_path}, "material '" + mtl_name + "': texture '" + name + "' not used (" + e.what() + "); constant colour used");
+    return -1;
+  }
+}
+
+Material obj_material(const tinyobj::material_t& mt, const std::string& path, Scene* scene, TextureFiles* files, LoadWarnings* w) {
   Material m;
   m.two_sided = true;
   const FileLoc loc{path};
@@ -90,9 +110,15 @@ Material obj_material(const tinyobj::material_t& mt, const std::string& path, Lo
     }
     if (mt.dissolve < 1.f) w->add(loc, "material '" + mt.name + "': transparency d < 1 without Ni > 1 is not supported; opaque");
   }
-  if (!mt.diffuse_texname.empty() || !mt.specular_texname.empty() || !mt.bump_texname.empty() || !mt.alpha_texname.empty() ||
-      !mt.normal_texname.empty() || !mt.emissive_texname.empty())
-    w->add(loc, "material '" + mt.name + "': texture maps are not supported; constant colours used");
+  if (!glass && !mt.diffuse_texname.empty()) {
+    m.diffuse_texture = obj_texture(mt.diffuse_texname, mt.diffuse_texopt, path, mt.name, scene, files, w);
+    if (m.diffuse_texture >= 0 && is_black(m.diffuse)) m.diffuse = Rgb(1.f);
+  }
+  if (!glass && !mt.specular_texname.empty() && !is_black(m.glossy))
+    m.glossy_texture = obj_texture(mt.specular_texname, mt.specular_texopt, path, mt.name, scene, files, w);
+  if (!mt.bump_texname.empty() || !mt.alpha_texname.empty() || !mt.normal_texname.empty() || !mt.emissive_texname.empty() ||
+      (glass && !mt.diffuse_texname.empty()))
+    w->add(loc, "material '" + mt.name + "': only map_Kd and map_Ks are supported; other maps ignored");
   return m;
 }
 
@@ -114,8 +140,9 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
   const auto& materials = reader.GetMaterials();
   std::vector<uint32_t> material_index;
   std::vector<Rgb> material_emission;
+  TextureFiles texture_files;
   for (const tinyobj::material_t& mt : materials) {
-    material_index.push_back(scene->add_material(obj_material(mt, path, warnings)));
+    material_index.push_back(scene->add_material(obj_material(mt, path, scene, &texture_files, warnings)));
     material_emission.push_back(rgb(mt.emission));
   }
   int default_material = -1;
@@ -126,7 +153,33 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
     if (!all_finite(p)) throw Error(FileLoc{path}, "vertex " + std::to_string(i + 1) + " is NaN or infinite");
     scene->positions.push_back(p);
   }
-  bool has_normals = false;
+  // A corner with a texture coordinate or a normal becomes its own vertex, shared by equal corners.
+  std::map<std::tuple<int, int, int>, uint32_t> corner_vertices;
+  const size_t num_uvs = attrib.texcoords.size() / 2, num_normals = attrib.normals.size() / 3;
+  auto corner_vertex = [&](const tinyobj::index_t& idx) -> uint32_t {
+    const bool has_uv = idx.texcoord_index >= 0 && size_t(idx.texcoord_index) < num_uvs;
+    const bool has_n = idx.normal_index >= 0 && size_t(idx.normal_index) < num_normals;
+    if (!has_uv && !has_n) return base + uint32_t(idx.vertex_index);
+    const auto key = std::make_tuple(idx.vertex_index, has_uv ? idx.texcoord_index : -1, has_n ? idx.normal_index : -1);
+    const auto it = corner_vertices.find(key);
+    if (it != corner_vertices.end()) return it->second;
+    const uint32_t v = uint32_t(scene->positions.size());
+    const Vec3 p = scene->positions[base + uint32_t(idx.vertex_index)];
+    scene->positions.push_back(p);
+    if (has_uv) {
+      scene->uvs.resize(v);
+      const size_t t = size_t(idx.texcoord_index);
+      scene->uvs.push_back(Point2{float(attrib.texcoords[2 * t]), float(attrib.texcoords[2 * t + 1])});
+    }
+    if (has_n) {
+      scene->normals.resize(v);
+      const size_t n = size_t(idx.normal_index);
+      const Vec3 nv(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
+      scene->normals.push_back(all_finite(nv) ? nv : Vec3());
+    }
+    corner_vertices.emplace(key, v);
+    return v;
+  };
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     if (!shape.lines.indices.empty() || !shape.points.indices.empty())
       warnings->add(FileLoc{path}, "shape '" + shape.name + "': lines and points are not rendered");
@@ -140,8 +193,7 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
         const tinyobj::index_t idx = mesh.indices[offset + k];
         if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= num_vertices)
           throw Error(FileLoc{path}, "shape '" + shape.name + "': face " + std::to_string(f) + " references a missing vertex");
-        v[k] = base + uint32_t(idx.vertex_index);
-        has_normals |= idx.normal_index >= 0;
+        v[k] = corner_vertex(idx);
       }
       offset += nv;
       const int mid = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
@@ -172,7 +224,6 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
       scene->triangles.push_back(tri);
     }
   }
-  if (has_normals) warnings->add(FileLoc{path}, "vertex normals (vn) are not used for shading yet (flat shading)");
 }
 
 }  // namespace pathspace

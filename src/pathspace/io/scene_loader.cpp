@@ -26,6 +26,10 @@ void add_ply_mesh(const std::string& path, Scene* scene) {
   const uint32_t material = scene->add_material(m);
   const uint32_t base = uint32_t(scene->positions.size());
   scene->positions.insert(scene->positions.end(), mesh.positions.begin(), mesh.positions.end());
+  if (mesh.normals.size() == mesh.positions.size()) {  // smooth shading (the material is untextured: uvs unused)
+    scene->normals.resize(base);
+    for (const Vec3& n : mesh.normals) scene->normals.push_back(all_finite(n) ? n : Vec3());
+  }
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
     scene->triangles.push_back(Triangle{{base + mesh.indices[t], base + mesh.indices[t + 1], base + mesh.indices[t + 2]}, material, kNoLight});
 }

@@ -35,6 +35,12 @@ struct Material {
   Rgb eta{1.f, 1.f, 1.f};  // conductor: real part of the complex IOR (per channel)
   Rgb k;                   // conductor: imaginary part
   // rough_dielectric uses `ior` (inside / outside) and `specular` as the tint.
+
+  // Image textures (indices into SceneView::textures, -1 = none) multiply diffuse, glossy and
+  // specular at the hit's uv; scene/shading_material.h applies them, once per hit.
+  int32_t diffuse_texture = -1;
+  int32_t glossy_texture = -1;
+  int32_t specular_texture = -1;
 };
 
 // Convenience constructors.

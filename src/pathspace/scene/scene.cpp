@@ -2,6 +2,7 @@
 #include "pathspace/scene/scene.h"
 
 #include <string>
+#include <utility>
 
 #include "pathspace/base/error.h"
 
@@ -10,6 +11,11 @@ namespace pathspace {
 uint32_t Scene::add_material(const Material& m) {
   materials.push_back(m);
   return uint32_t(materials.size() - 1);
+}
+
+uint32_t Scene::add_texture(ImageTexture t) {
+  textures.push_back(std::move(t));
+  return uint32_t(textures.size() - 1);
 }
 
 uint32_t Scene::add_vertex(const Vec3& p) {
@@ -121,6 +127,18 @@ void Scene::finalize() {
     if (!(spheres[i].radius > 0.f)) throw Error("sphere " + std::to_string(i) + " has radius " + std::to_string(spheres[i].radius) + " (must be > 0)");
     if (spheres[i].material >= materials.size()) throw Error("sphere " + std::to_string(i) + " has no material");
   }
+  for (size_t i = 0; i < textures.size(); ++i) {
+    const ImageTexture& t = textures[i];
+    if (t.width <= 0 || t.height <= 0 || t.texels.size() != size_t(t.width) * size_t(t.height))
+      throw Error("texture " + std::to_string(i) + " ('" + t.name + "') has no or inconsistent texels");
+  }
+  for (size_t i = 0; i < materials.size(); ++i)
+    for (int32_t t : {materials[i].diffuse_texture, materials[i].glossy_texture, materials[i].specular_texture})
+      if (t >= int32_t(textures.size()) || t < -1) throw Error("material " + std::to_string(i) + " references texture " + std::to_string(t) + " of " + std::to_string(textures.size()));
+  if (uvs.size() > positions.size() || normals.size() > positions.size())
+    throw Error("more vertex uvs or normals than vertices");
+  if (!uvs.empty()) uvs.resize(positions.size());
+  if (!normals.empty()) normals.resize(positions.size());
   if (camera.width <= 0 || camera.height <= 0) throw Error("scene has no camera resolution");
 
   const Bounds3 b = geometry_bounds();
@@ -143,12 +161,22 @@ SceneView Scene::view() const {
   if (!finalized_) throw Error("Scene::view() called before finalize()");
   SceneView v;
   v.positions = positions.data();
+  v.uvs = uvs.size() == positions.size() && !uvs.empty() ? uvs.data() : nullptr;
+  v.normals = normals.size() == positions.size() && !normals.empty() ? normals.data() : nullptr;
   v.triangles = triangles.data();
   v.num_triangles = uint32_t(triangles.size());
   v.spheres = spheres.data();
   v.num_spheres = uint32_t(spheres.size());
   v.materials = materials.data();
   v.num_materials = uint32_t(materials.size());
+  bool fresh = texture_views_.size() == textures.size();
+  for (size_t i = 0; fresh && i < textures.size(); ++i) fresh = texture_views_[i].texels == textures[i].texels.data();
+  if (!fresh) {
+    texture_views_.clear();
+    for (const ImageTexture& t : textures) texture_views_.push_back(t.view());
+  }
+  v.textures = texture_views_.empty() ? nullptr : texture_views_.data();
+  v.num_textures = uint32_t(texture_views_.size());
   v.lights = lights.data();
   v.num_lights = uint32_t(lights.size());
   v.light_selection = light_distribution_.view();

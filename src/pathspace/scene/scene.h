@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/scene/image_texture.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
@@ -16,9 +17,14 @@ class Scene {
  public:
   std::string name;
   std::vector<Vec3> positions;
+  // Per-vertex texture coordinates and shading normals: each empty, or (after finalize) one per
+  // position; finalize pads vertices added without them with uv (0, 0) and normal 0 (flat shading).
+  std::vector<Point2> uvs;
+  std::vector<Vec3> normals;
   std::vector<Triangle> triangles;
   std::vector<Sphere> spheres;
   std::vector<Material> materials;
+  std::vector<ImageTexture> textures;  // referenced by Material::diffuse_texture etc.
   std::vector<Light> lights;
   PinholeCamera camera;
   float ray_epsilon = 1e-4f;
@@ -29,6 +35,7 @@ class Scene {
   BoundingSphere bounds_override;
 
   uint32_t add_material(const Material& m);
+  uint32_t add_texture(ImageTexture t);
   uint32_t add_vertex(const Vec3& p);
   // Adds triangle (p0, p1, p2); its geometric normal is normalize(cross(p1 - p0, p2 - p0)).
   // A non-black emission makes it an area light (radiance, front side unless two_sided).
@@ -57,6 +64,9 @@ class Scene {
   BoundingSphere bounds_;
   DiscreteDistribution light_distribution_;
   int32_t environment_light_ = -1;
+  // What SceneView::textures points to; rebuilt by view() when stale (a copied Scene's views would
+  // still point into the original's texels).
+  mutable std::vector<TextureView> texture_views_;
   bool finalized_ = false;
 };
 

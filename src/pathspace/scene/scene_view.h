@@ -10,17 +10,22 @@
 #include "pathspace/materials/material.h"
 #include "pathspace/math/bbox.h"
 #include "pathspace/sampling/discrete.h"
+#include "pathspace/scene/texture.h"
 
 namespace pathspace {
 
 struct SceneView {
   const Vec3* positions = nullptr;
+  const Point2* uvs = nullptr;      // per vertex, or nullptr when no mesh has texture coordinates
+  const Vec3* normals = nullptr;    // per vertex (zero = flat), or nullptr when no mesh has normals
   const Triangle* triangles = nullptr;
   uint32_t num_triangles = 0;
   const Sphere* spheres = nullptr;
   uint32_t num_spheres = 0;
   const Material* materials = nullptr;
   uint32_t num_materials = 0;
+  const TextureView* textures = nullptr;  // indexed by Material::*_texture
+  uint32_t num_textures = 0;
   const Light* lights = nullptr;
   uint32_t num_lights = 0;
   DiscreteView light_selection;     // probability of choosing each light for NEE

@@ -14,6 +14,7 @@
 #include "pathspace/lights/light_emission.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/shading_material.h"
 
 namespace pathspace {
 
@@ -40,6 +41,7 @@ struct LightVertex {
   float cos_in = 0.f;  // |wo . ng|
   float dvcm = 0.f, dvc = 0.f;
   uint32_t material = 0;
+  Point2 uv;           // texture coordinates (the material is shaded again at connection time)
   int segments = 0;    // segments from the light to this vertex (1: first hit)
 };
 
@@ -145,7 +147,8 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
     dvcm /= mis(h, cos_in);
     dvc /= mis(h, cos_in);
 
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(wo_world);
     if (bsdf_has_non_delta(mat)) {
@@ -178,6 +181,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         v.dvcm = dvcm;
         v.dvc = dvc;
         v.material = hit.material;
+        v.uv = hit.uv;
         v.segments = segments;
       }
     }
@@ -279,7 +283,8 @@ PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeur
   const Vec3 wz = z.frame.to_local(dir);
   const Rgb fz = bsdf_eval(*z.mat, z.wo, wz, TransportMode::radiance);
   if (is_black(fz)) return {};
-  const Material& ymat = scene.materials[y.material];
+  Material textured;
+  const Material& ymat = shading_material(scene, y.material, y.uv, &textured);
   const Frame yframe(y.ns);
   const Vec3 ywo = yframe.to_local(y.wo), ywi = yframe.to_local(-dir);
   const Rgb fy = bsdf_eval(ymat, ywo, ywi, TransportMode::importance);
@@ -374,7 +379,8 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     }
     if (segments >= max_segments) break;
 
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t vi = uint32_t(segments - 1);

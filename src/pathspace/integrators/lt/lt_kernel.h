@@ -15,6 +15,7 @@
 #include "pathspace/lights/light_emission.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/shading_material.h"
 
 namespace pathspace {
 
@@ -143,7 +144,8 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) break;
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo_world = -ray.d;  // towards the light side (the previous vertex)
     const Vec3 wo = frame.to_local(wo_world);

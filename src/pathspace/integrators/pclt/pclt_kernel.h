@@ -16,6 +16,7 @@
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/lights/light_sampling.h"
+#include "pathspace/scene/shading_material.h"
 
 namespace pathspace {
 
@@ -181,7 +182,8 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
       out->direct += beta * area_light_radiance(scene.lights[hit.light], hit.ng, -ray.d);
     if (segments >= max_segments) return;  // a light path needs at least one more segment
 
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t v = uint32_t(segments - 1);
@@ -323,7 +325,8 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) break;
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo_world = -ray.d;  // towards the light side
     const Vec3 wo = frame.to_local(wo_world);

@@ -15,6 +15,7 @@
 #include "pathspace/lights/light_sampling.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/shading_material.h"
 
 namespace pathspace {
 
@@ -136,7 +137,8 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     }
     if (segments >= max_segments) break;
 
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t v = uint32_t(segments - 1);

@@ -17,6 +17,7 @@
 #include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/parallel/atomics.h"
 #include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/shading_material.h"
 
 namespace pathspace {
 
@@ -28,6 +29,7 @@ struct VisiblePoint {
   Vec3 wo;            // unit, towards the previous camera-path vertex
   Rgb throughput;     // camera to here, including 1 / P(non-delta lobe chosen)
   uint32_t material = 0;
+  Point2 uv;              // texture coordinates at p (the material is shaded per gathered photon)
   uint32_t segments = 0;  // camera path length to p (camera ray = 1)
   bool valid = false;
 };
@@ -84,7 +86,8 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
     if (hit.light != kNoLight) radiance += beta * area_light_radiance(scene.lights[hit.light], hit.ng, -ray.d);
     if (segments >= max_segments) break;  // a photon needs at least one more segment
 
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t v = uint32_t(segments - 1);
@@ -98,6 +101,7 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
         vp->wo = -ray.d;
         vp->throughput = beta * (1.f / p_gather);
         vp->material = hit.material;
+        vp->uv = hit.uv;
         vp->segments = uint32_t(segments);
         vp->valid = true;
         break;
@@ -143,7 +147,8 @@ PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g,
     if (int(vp.segments) + segments > g.max_segments) return;  // the joined path would be too long
     if (dot(vp.n_front, wi) <= 0.f) return;                    // photons from the back side do not count
     const Frame frame(vp.ns);
-    const Rgb f = bsdf_eval(scene.materials[vp.material], frame.to_local(vp.wo), frame.to_local(wi), TransportMode::radiance);
+    Material textured;
+    const Rgb f = bsdf_eval(shading_material(scene, vp.material, vp.uv, &textured), frame.to_local(vp.wo), frame.to_local(wi), TransportMode::radiance);
     if (is_black(f)) return;
     const Rgb c = f * power;
     if (!all_finite(c)) return;
@@ -212,7 +217,8 @@ PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) break;
-    const Material& mat = scene.materials[hit.material];
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
     const Vec3 wi_world = -ray.d;
     if (bsdf_has_non_delta(mat)) {
       ++photons->deposits;

@@ -83,6 +83,79 @@ Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fall
   throw Error(p->loc, "parameter '" + name + "' has an unsupported type '" + p->type + "'");
 }
 
+namespace {
+
+const ImageTextureRef* image_param(const Statement& st, const std::string& name, const TextureTable& textures) {
+  const Param* p = st.find(name);
+  if (!p || p->type != "texture" || p->strings.size() != 1) return nullptr;
+  const auto it = textures.images.find(p->strings[0]);
+  return it == textures.images.end() ? nullptr : &it->second;
+}
+
+// An imagemap Texture: its mean colour (the constant stand-in, returned) and, for spectrum textures
+// in a scene, the image itself (bilinear, repeat, uscale/vscale/udelta/vdelta, sRGB or linear).
+Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* w) {
+  const std::string& name = st.strings[0];
+  const Param* file = st.find("filename");
+  if (!file || file->strings.size() != 1) throw Error(st.loc, "imagemap texture '" + name + "' needs a filename");
+  std::filesystem::path path(file->strings[0]);
+  if (path.is_relative()) path = std::filesystem::path(folder) / path;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(file->loc, "texture file '" + file->strings[0] + "' not found (looked for " + path.string() + ")");
+  const std::string encoding = st.get_string("encoding", "sRGB");
+  if (encoding != "sRGB" && encoding != "linear")
+    w->add(st.find("encoding")->loc, "imagemap encoding \"" + encoding + "\" approximated by sRGB");
+  const LdrEncoding ldr = encoding == "linear" ? LdrEncoding::linear : LdrEncoding::srgb;
+  const TextureUvTransform uv{float(st.get_float("uscale", 1.0)), float(st.get_float("vscale", 1.0)),
+                              float(st.get_float("udelta", 0.0)), float(st.get_float("vdelta", 0.0))};
+  const std::string filter = st.get_string("filter", "bilinear");
+  const std::string wrap = st.get_string("wrap", "repeat");
+  const std::string mapping = st.get_string("mapping", "uv");
+  st.ignore({"maxanisotropy"});
+  const float scale = float(st.get_float("scale", 1.0));
+  const bool invert = st.get_bool("invert", false);
+  const bool image = st.strings[1] == "spectrum" && textures->scene && !invert && mapping == "uv";
+
+  uint32_t index = 0;
+  Rgb value;
+  if (image) {
+    index = textures->files.add(textures->scene, path.string(), ldr, uv);
+    value = textures->scene->textures[index].mean();
+  } else {
+    ImageTexture t;
+    t.texels = read_image(path.string(), ldr).pixels;
+    value = t.mean();
+  }
+  if (!all_finite(value)) throw Error(file->loc, "texture file '" + file->strings[0] + "' holds NaN or infinite values");
+  if (st.strings[1] == "float") value = Rgb(average(value));
+  value *= scale;
+  if (invert) value = Rgb(1.f) - value;
+  if (image) {
+    textures->images[name] = {index, Rgb(scale)};
+    if (filter != "bilinear") w->add(st.loc, "imagemap filter \"" + filter + "\" approximated by bilinear filtering (no MIP maps)");
+    if (wrap != "repeat") w->add(st.loc, "imagemap wrap \"" + wrap + "\" approximated by repeat");
+  } else {
+    w->add(st.loc, "image texture '" + name + "' approximated by its mean colour (" +
+                       std::string(invert ? "invert" : mapping != "uv" ? "mapping \"" + mapping + "\"" : st.strings[1] == "float" ? "float textures" : "no scene") +
+                       " not supported)");
+  }
+  return value;
+}
+
+}  // namespace
+
+Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
+                      LoadWarnings* w, int32_t* texture) {
+  *texture = -1;
+  if (const ImageTextureRef* ref = image_param(st, name, textures)) {
+    st.find(name)->used = true;
+    *texture = int32_t(ref->texture);
+    return ref->scale;
+  }
+  return spectrum_param(st, name, fallback, textures, w);
+}
+
 void add_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* w) {
   const std::string& name = st.strings[0];
   const std::string& cls = st.strings[2];
@@ -90,26 +163,15 @@ void add_texture(const Statement& st, const std::string& folder, TextureTable* t
   if (cls == "constant") {
     value = spectrum_param(st, "value", Rgb(1.f), *textures, w);
   } else if (cls == "imagemap") {
-    const Param* file = st.find("filename");
-    if (!file || file->strings.size() != 1) throw Error(st.loc, "imagemap texture '" + name + "' needs a filename");
-    std::filesystem::path path(file->strings[0]);
-    if (path.is_relative()) path = std::filesystem::path(folder) / path;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-      throw Error(file->loc, "texture file '" + file->strings[0] + "' not found (looked for " + path.string() + ")");
-    const Image image = read_image(path.string());
-    double sum[3] = {0, 0, 0};
-    for (const Rgb& c : image.pixels)
-      for (int i = 0; i < 3; ++i) sum[i] += c[i];
-    const double n = double(std::max<size_t>(1, image.pixels.size()));
-    value = Rgb(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
-    if (st.strings[1] == "float") value = Rgb(average(value));
-    value *= float(st.get_float("scale", 1.0));
-    if (st.get_bool("invert", false)) value = Rgb(1.f) - value;
-    st.ignore({"filter", "wrap", "maxanisotropy", "encoding", "mapping", "uscale", "vscale", "udelta", "vdelta"});
-    w->add(st.loc, "image texture '" + name + "' approximated by its mean colour (textures are not supported yet)");
+    value = add_image_texture(st, folder, textures, w);
   } else if (cls == "scale") {
     value = spectrum_param(st, "tex", Rgb(1.f), *textures, w) * spectrum_param(st, "scale", Rgb(1.f), *textures, w);
+    // An image times a constant stays an image texture.
+    const ImageTextureRef* tex = image_param(st, "tex", *textures);
+    const ImageTextureRef* scale = image_param(st, "scale", *textures);
+    if (tex && !scale) textures->images[name] = {tex->texture, tex->scale * spectrum_param(st, "scale", Rgb(1.f), *textures, w)};
+    if (scale && !tex) textures->images[name] = {scale->texture, scale->scale * spectrum_param(st, "tex", Rgb(1.f), *textures, w)};
+    if (tex && scale) w->add(st.loc, "scale texture '" + name + "' of two image textures approximated by their mean colours' product");
   } else {
     w->add(st.loc, "texture class '" + cls + "' not supported; texture '" + name + "' taken as constant 0.5");
     for (const Param& p : st.params) p.used = true;
@@ -123,7 +185,7 @@ Material make_material(const std::string& type, const Statement& st, const Textu
   m.two_sided = true;
   st.ignore({"type"});
   if (type == "diffuse") {
-    m.diffuse = spectrum_param(st, "reflectance", Rgb(0.5f), tex, w);
+    m.diffuse = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
   } else if (type == "conductor" || type == "coatedconductor") {
     const std::string prefix = type == "coatedconductor" ? "conductor." : "";
     Rgb eta = spectrum_param(st, prefix + "eta", Rgb(0.200438f, 0.924033f, 1.102212f), tex, w);
@@ -156,7 +218,7 @@ Material make_material(const std::string& type, const Statement& st, const Textu
     // Approximation: Fresnel reflectance at normal incidence F0 of the coat as a Phong (rough)
     // or mirror (smooth) lobe over a Lambert base scaled by 1 - F0; Phong exponent 2/alpha^2 - 2
     // (Walter et al. 2007's Beckmann-Phong correspondence). Coat absorption and interreflection dropped.
-    const Rgb base = spectrum_param(st, "reflectance", Rgb(0.5f), tex, w);
+    const Rgb base = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
     const float eta = eta_from(st, w);
     const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
     const float alpha = alpha_from(st, w);
@@ -171,7 +233,7 @@ Material make_material(const std::string& type, const Statement& st, const Textu
     w->add(st.loc, "coateddiffuse approximated as Lambert (reflectance * (1 - F0)) + " +
                        std::string(alpha < 1e-3f ? "mirror" : "Phong") + " coat lobe of reflectance F0 = " + std::to_string(f0));
   } else if (type == "diffusetransmission") {
-    m.diffuse = spectrum_param(st, "reflectance", Rgb(0.25f), tex, w);
+    m.diffuse = reflectance_param(st, "reflectance", Rgb(0.25f), tex, w, &m.diffuse_texture);
     w->add(st.loc, "diffusetransmission approximated as diffuse reflection only (transmission dropped)");
     for (const Param& p : st.params) p.used = true;
   } else {

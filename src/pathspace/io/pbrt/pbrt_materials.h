@@ -1,7 +1,8 @@
 // pbrt-v4 materials, textures and spectra mapped onto pathspace's materials (materials/material.h).
 // diffuse, conductor and dielectric map directly; coateddiffuse and a few others are approximated,
 // always with a warning that says how. Spectra become linear sRGB: RGB values directly, named metal
-// and glass spectra through a small table of RGB fits, image textures through their mean colour.
+// and glass spectra through a small table of RGB fits. Spectrum imagemap textures (and constant
+// scales of them) bind real image textures to reflectances; elsewhere they stand in by their mean.
 #pragma once
 
 #include <map>
@@ -9,13 +10,25 @@
 
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/pbrt/pbrt_statement.h"
+#include "pathspace/io/texture_file.h"
 #include "pathspace/materials/material.h"
 
 namespace pathspace::pbrt {
 
-// Constant stand-ins for named textures ("Texture" statements).
+// An image texture bound by name: texels scene->textures[texture], times `scale`.
+struct ImageTextureRef {
+  uint32_t texture = 0;
+  Rgb scale{1.f, 1.f, 1.f};
+};
+
+// Named textures ("Texture" statements): a constant stand-in for every texture, and for spectrum
+// image textures also the image itself. Images are read into *scene when it is set (the scene
+// builder sets it); without a scene every imagemap is its mean colour.
 struct TextureTable {
   std::map<std::string, Rgb> values;  // float textures store the value in all three channels
+  std::map<std::string, ImageTextureRef> images;
+  Scene* scene = nullptr;
+  TextureFiles files;
 };
 
 // Evaluates a Texture statement (imagemap files are resolved against `folder`; a missing file is an
@@ -24,6 +37,11 @@ void add_texture(const Statement& st, const std::string& folder, TextureTable* t
 
 // Converts Material / MakeNamedMaterial parameters of the given pbrt type.
 Material make_material(const std::string& type, const Statement& st, const TextureTable& textures, LoadWarnings* warnings);
+
+// A reflectance that may be textured: a texture parameter naming an image texture returns its scale
+// and sets *texture to the image's index; otherwise spectrum_param's value and *texture = -1.
+Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
+                      LoadWarnings* warnings, int32_t* texture);
 
 // A spectrum-valued parameter (rgb, spectrum, blackbody or texture) as linear sRGB; `fallback` when absent.
 Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,

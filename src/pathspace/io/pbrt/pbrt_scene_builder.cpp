@@ -4,6 +4,7 @@
 // pathspace's winding normal, so one-sided area lights emit to the same side as in pbrt.
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -34,7 +35,9 @@ Vec3 vec_at(const std::vector<double>& v, size_t i) { return Vec3(float(v[3 * i]
 class Builder {
  public:
   Builder(const SceneLoadOptions& o, LoadWarnings* w, std::string main_folder)
-      : options_(o), warnings_(w), main_folder_(std::move(main_folder)) {}
+      : options_(o), warnings_(w), main_folder_(std::move(main_folder)) {
+    textures_.scene = &scene_;  // image textures are read into the scene
+  }
 
   void handle(const Statement& st) {
     dispatch(st);
@@ -290,16 +293,20 @@ class Builder {
       mark_all(st);
       return;
     }
-    st.ignore({"uv", "st", "faceIndices"});  // texture coordinates only feed textures, which are constants here
+    st.ignore({"faceIndices"});
     if (type == "trianglemesh") {
       const std::vector<double> p = st.get_numbers("P");
       std::vector<double> idx = st.get_numbers("indices");
       const std::vector<double> nrm = st.get_numbers("N");
+      const std::vector<double> uv = st.get_numbers(st.find("uv") ? "uv" : "st");
       if (p.empty() || p.size() % 3) throw Error(st.loc, "trianglemesh needs \"point3 P\" with a multiple of 3 values");
       if (idx.empty() && p.size() == 9) idx = {0, 1, 2};
       if (idx.empty() || idx.size() % 3) throw Error(st.loc, "trianglemesh needs \"integer indices\" with a multiple of 3 values");
       if (!nrm.empty() && nrm.size() != p.size()) throw Error(st.loc, "trianglemesh: N must have one normal per vertex");
+      if (!uv.empty() && uv.size() != p.size() / 3 * 2) throw Error(st.loc, "trianglemesh: uv must have one point2 per vertex");
       std::vector<Vec3> pos(p.size() / 3), normals(nrm.size() / 3);
+      std::vector<std::array<float, 2>> uvs(uv.size() / 2);
+      for (size_t i = 0; i < uvs.size(); ++i) uvs[i] = {float(uv[2 * i]), float(uv[2 * i + 1])};
       for (size_t i = 0; i < pos.size(); ++i) pos[i] = vec_at(p, i);
       for (size_t i = 0; i < normals.size(); ++i) normals[i] = vec_at(nrm, i);
       std::vector<uint32_t> tri(idx.size());
@@ -308,7 +315,7 @@ class Builder {
           throw Error(st.find("indices")->loc, "index " + std::to_string(int64_t(idx[i])) + " out of range (" + std::to_string(pos.size()) + " vertices)");
         tri[i] = uint32_t(idx[i]);
       }
-      add_mesh(st, pos, normals, tri);
+      add_mesh(st, pos, normals, uvs, tri);
     } else if (type == "plymesh") {
       const std::string file = st.get_string("filename", "");
       std::filesystem::path path(file);
@@ -327,7 +334,7 @@ class Builder {
       } catch (const Error& e) {
         throw Error(st.loc, "plymesh \"" + file + "\": " + e.what());
       }
-      add_mesh(st, mesh.positions, mesh.normals, mesh.indices);
+      add_mesh(st, mesh.positions, mesh.normals, mesh.uvs, mesh.indices);
     } else if (type == "sphere") {
       sphere(st);
     } else {
@@ -351,7 +358,10 @@ class Builder {
     return gs_.area_radiance;
   }
 
-  void add_mesh(const Statement& st, const std::vector<Vec3>& pos, const std::vector<Vec3>& normals, const std::vector<uint32_t>& idx) {
+  // Positions, shading normals (N, with ReverseOrientation applied as for the face orientation) and
+  // uvs go to the scene's vertex arrays; N also orients the faces.
+  void add_mesh(const Statement& st, const std::vector<Vec3>& pos, const std::vector<Vec3>& normals,
+                const std::vector<std::array<float, 2>>& uvs, const std::vector<uint32_t>& idx) {
     const uint32_t material = shape_material(st);
     const Rgb le = emission(st, material);
     Mat4 inv;
@@ -359,6 +369,10 @@ class Builder {
     const bool flip_default = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
     const uint32_t base = uint32_t(scene_.positions.size());
     for (const Vec3& p : pos) scene_.positions.push_back(gs_.ctm.point(p));
+    if (uvs.size() == pos.size()) {
+      scene_.uvs.resize(base);
+      for (const auto& t : uvs) scene_.uvs.push_back(Point2{t[0], t[1]});
+    }
     bool smooth = false;
     for (size_t t = 0; t + 2 < idx.size(); t += 3) {
       uint32_t v[3] = {base + idx[t], base + idx[t + 1], base + idx[t + 2]};
@@ -388,7 +402,14 @@ class Builder {
       }
       scene_.triangles.push_back(tri);
     }
-    if (smooth) warn(st.loc, st.title() + ": per-vertex normals N only orient the faces (no smooth shading yet)");
+    if (smooth && normals.size() == pos.size()) {  // flat meshes need no shading normals
+      scene_.normals.resize(base);
+      for (const Vec3& n : normals) {
+        const Vec3 w = Mat4::normal(inv, n);
+        const float len = length(w);
+        scene_.normals.push_back(len > 0.f && all_finite(w) ? w * ((gs_.reverse_orientation ? -1.f : 1.f) / len) : Vec3());
+      }
+    }
   }
 
   void sphere(const Statement& st) {

@@ -1,0 +1,47 @@
+// Image files as scene textures: read through image_io (EXR, PFM, PNG, JPG, TGA, HDR, BMP) into a
+// Scene's texture store. A file shared by several materials with the same encoding and uv transform
+// is read and stored once. Read errors are image_io's pathspace::Error naming the file.
+#pragma once
+
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "pathspace/io/image_io.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace {
+
+struct TextureUvTransform {
+  float uscale = 1.f, vscale = 1.f, udelta = 0.f, vdelta = 0.f;
+};
+
+class TextureFiles {
+ public:
+  // Index of the texture in scene->textures (read on first use).
+  uint32_t add(Scene* scene, const std::string& path, LdrEncoding ldr, const TextureUvTransform& uv = {}) {
+    const Key key{path, int(ldr), uv.uscale, uv.vscale, uv.udelta, uv.vdelta};
+    const auto it = loaded_.find(key);
+    if (it != loaded_.end()) return it->second;
+    Image image = read_image(path, ldr);
+    ImageTexture t;
+    t.name = path;
+    t.width = image.width;
+    t.height = image.height;
+    t.texels = std::move(image.pixels);
+    t.uscale = uv.uscale;
+    t.vscale = uv.vscale;
+    t.udelta = uv.udelta;
+    t.vdelta = uv.vdelta;
+    const uint32_t index = scene->add_texture(std::move(t));
+    loaded_.emplace(key, index);
+    return index;
+  }
+
+ private:
+  using Key = std::tuple<std::string, int, float, float, float, float>;
+  std::map<Key, uint32_t> loaded_;
+};
+
+}  // namespace pathspace
