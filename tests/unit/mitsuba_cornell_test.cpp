@@ -11,6 +11,7 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
 #include "support/integrator_comparison.h"
+#include "support/reference_regions.h"
 #include "support/statistics.h"
 
 namespace pathspace {
@@ -75,11 +76,6 @@ TEST(MitsubaCornellBox, SameImageAsThePbrtForm) {
   testing::expect_same_image(rm, rp, "mitsuba-vs-pbrt-cornell", 1e-3, "xml", "pbrt");
 }
 
-struct Region {
-  const char* name;
-  float x0, y0, x1, y1;  // fractions of the image
-};
-
 // The regions and allowance of PbrtCornellBox.RenderMatchesTungstenOnDiffuseWalls.
 TEST(MitsubaCornellBox, RenderMatchesTungstenOnDiffuseWalls) {
   REQUIRE_CORNELL_FORMS();
@@ -90,40 +86,8 @@ TEST(MitsubaCornellBox, RenderMatchesTungstenOnDiffuseWalls) {
   settings.seed = testing::test_seed_base() + 7;
   const testing::Rendered r = testing::render_integrator(scene, "pt", settings, 32);
   for (const Rgb& c : r.mean.pixels) ASSERT_TRUE(all_finite(c));
-
-  const Image ref = read_image(cornell_dir() + "/TungstenRender.exr");
-  ASSERT_EQ(ref.width % kRes, 0);
-  const int k = ref.width / kRes;  // box-downsample the reference to our pixel grid
-  const Region regions[] = {{"back wall", 0.55f, 0.25f, 0.75f, 0.45f},
-                            {"back wall upper left", 0.2f, 0.15f, 0.4f, 0.3f},
-                            {"red wall", 0.03f, 0.3f, 0.12f, 0.6f},
-                            {"green wall", 0.89f, 0.3f, 0.97f, 0.6f}};
-  const double alpha = testing::sidak(1e-3, 12);  // 4 regions x 3 channels
-  double lo = 0.0, hi = 10.0;                     // two-sided critical z
-  for (int i = 0; i < 100; ++i) ((testing::normal_two_sided_p(0.5 * (lo + hi)) > alpha) ? lo : hi) = 0.5 * (lo + hi);
-  const double z_crit = lo;
-  for (const Region& g : regions) {
-    const int x0 = int(g.x0 * kRes), x1 = int(g.x1 * kRes), y0 = int(g.y0 * kRes), y1 = int(g.y1 * kRes);
-    double sum[3] = {0, 0, 0}, var_sum[3] = {0, 0, 0}, ref_sum[3] = {0, 0, 0};
-    const double n = double((x1 - x0) * (y1 - y0));
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x)
-        for (int c = 0; c < 3; ++c) {
-          sum[c] += r.mean.at(x, y)[c];
-          var_sum[c] += r.variance.at(x, y)[c];
-          for (int yy = y * k; yy < (y + 1) * k; ++yy)
-            for (int xx = x * k; xx < (x + 1) * k; ++xx) ref_sum[c] += ref.at(xx, yy)[c] / double(k * k);
-        }
-    for (int c = 0; c < 3; ++c) {
-      const double mean = sum[c] / n, rm = ref_sum[c] / n;
-      // Our noise plus a 2% allowance for what differs by design (Tungsten's tent filter,
-      // spectral-vs-RGB details, the reference's own noise), as for the pbrt form.
-      const double sigma = std::sqrt(var_sum[c] / (n * n) + (0.02 * rm) * (0.02 * rm));
-      const double z = (mean - rm) / sigma;
-      EXPECT_LT(std::fabs(z), z_crit) << g.name << " channel " << c << ": ours " << mean << ", Tungsten " << rm;
-      std::printf("%-22s ch%d ours %.4f tungsten %.4f rel %+.3f%% z %+.2f\n", g.name, c, mean, rm, 100.0 * (mean - rm) / rm, z);
-    }
-  }
+  testing::expect_regions_match_reference(r, read_image(cornell_dir() + "/TungstenRender.exr"),
+                                          testing::kCornellDiffuseWalls, 0.02, 1e-3);
 }
 
 }  // namespace

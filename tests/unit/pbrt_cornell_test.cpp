@@ -7,11 +7,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "pathspace/accel/accel.h"
-#include "pathspace/film/film.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
+#include "support/integrator_comparison.h"
+#include "support/reference_regions.h"
 
 namespace pathspace {
 namespace {
@@ -52,63 +51,19 @@ TEST(PbrtCornellBox, GeometryLightsCamera) {
   EXPECT_NE(warnings[0].find("scene-v4.pbrt:6:1: warning: PixelFilter \"triangle\""), std::string::npos) << warnings[0];
 }
 
-struct Region {
-  const char* name;
-  float x0, y0, x1, y1;  // fractions of the image
-};
-
 TEST(PbrtCornellBox, RenderMatchesTungstenOnDiffuseWalls) {
   REQUIRE_CORNELL();
   constexpr int kRes = 128;
   SceneLoadOptions o;
   o.width = o.height = kRes;
-  Scene scene = load_scene(cornell_dir() + "/scene-v4.pbrt", o, nullptr);
-  Accel accel(scene);
-  Film film(kRes, kRes);
-  RenderRequest req;
-  req.spp = 32;
-  req.settings.seed = 7;
-  const RenderStats stats = render(scene, accel, req, film);
-  EXPECT_EQ(stats.dropped_samples, 0u);
-  const Image mean = film.mean(), var = film.variance_of_mean();
-  for (const Rgb& c : mean.pixels) ASSERT_TRUE(all_finite(c));
-
-  const Image ref = read_image(cornell_dir() + "/TungstenRender.exr");
-  ASSERT_EQ(ref.width % kRes, 0);
-  const int k = ref.width / kRes;  // box-downsample the reference to our pixel grid
-  const Region regions[] = {{"back wall", 0.55f, 0.25f, 0.75f, 0.45f},
-                            {"back wall upper left", 0.2f, 0.15f, 0.4f, 0.3f},
-                            {"red wall", 0.03f, 0.3f, 0.12f, 0.6f},
-                            {"green wall", 0.89f, 0.3f, 0.97f, 0.6f}};
-  // Šidák: 4 regions x 3 channels at family-wise alpha = 1e-3.
-  const double alpha = 1.0 - std::pow(1.0 - 1e-3, 1.0 / 12.0);
-  double lo = 0.0, hi = 10.0;  // two-sided critical z: erfc(z / sqrt 2) = alpha
-  for (int i = 0; i < 100; ++i) ((std::erfc(0.5 * (lo + hi) / std::sqrt(2.0)) > alpha) ? lo : hi) = 0.5 * (lo + hi);
-  const double z_crit = lo;
-  for (const Region& r : regions) {
-    const int x0 = int(r.x0 * kRes), x1 = int(r.x1 * kRes), y0 = int(r.y0 * kRes), y1 = int(r.y1 * kRes);
-    double sum[3] = {0, 0, 0}, var_sum[3] = {0, 0, 0}, ref_sum[3] = {0, 0, 0};
-    const double n = double((x1 - x0) * (y1 - y0));
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) {
-        for (int c = 0; c < 3; ++c) {
-          sum[c] += mean.at(x, y)[c];
-          var_sum[c] += var.at(x, y)[c];
-        }
-        for (int yy = y * k; yy < (y + 1) * k; ++yy)
-          for (int xx = x * k; xx < (x + 1) * k; ++xx)
-            for (int c = 0; c < 3; ++c) ref_sum[c] += ref.at(xx, yy)[c] / double(k * k);
-      }
-    for (int c = 0; c < 3; ++c) {
-      const double m = sum[c] / n, rm = ref_sum[c] / n;
-      // Our noise (variance of the region mean) plus a 2% allowance for what differs by design:
-      // Tungsten's tent filter and spectral-vs-RGB details, and the reference's own noise.
-      const double sigma = std::sqrt(var_sum[c] / (n * n) + (0.02 * rm) * (0.02 * rm));
-      const double z = (m - rm) / sigma;
-      EXPECT_LT(std::fabs(z), z_crit) << r.name << " channel " << c << ": ours " << m << ", Tungsten " << rm;
-      std::printf("%-22s ch%d ours %.4f tungsten %.4f rel %+.3f%% z %+.2f\n", r.name, c, m, rm, 100.0 * (m - rm) / rm, z);
-    }
-  }
+  const Scene scene = load_scene(cornell_dir() + "/scene-v4.pbrt", o, nullptr);
+  IntegratorSettings settings;
+  settings.seed = 7;
+  const testing::Rendered r = testing::render_integrator(scene, "pt", settings, 32);
+  for (const Rgb& c : r.mean.pixels) ASSERT_TRUE(all_finite(c));
+  // Our noise plus a 2% allowance for what differs by design: Tungsten's tent filter and
+  // spectral-vs-RGB details, and the reference's own noise.
+  testing::expect_regions_match_reference(r, read_image(cornell_dir() + "/TungstenRender.exr"), testing::kCornellDiffuseWalls, 0.02, 1e-3);
 }
 
 }  // namespace

@@ -26,11 +26,20 @@ PS_INLINE Ray spawn_ray(const Vec3& p, const Vec3& ng, const Vec3& d, float epsi
   return {offset_origin(p, ng, d, epsilon), d, 0.f, kInfinity};
 }
 
-// Shadow ray from surface point p (geometric normal ng) along unit direction d to a point at
-// distance dist (infinite for lights at infinity); the last epsilon is excluded so the light's own
-// surface does not occlude.
+// Shadow ray from surface point p (geometric normal ng) along unit direction d to the point at
+// distance dist (infinite for lights at infinity). The origin is pushed off the surface as for
+// spawn_ray, and the ray is re-aimed from there at the target: the push shortens the way to the
+// target by up to epsilon / |cos| (parallel surfaces, e.g. a ceiling and an upward-facing lamp seen
+// at a grazing angle), so a fixed `dist - 2 epsilon` overshot into the target's own surface and
+// the target occluded itself (veach-bidir's ceiling lost 3/4 of its direct light). The last epsilon
+// before the target is excluded.
 PS_INLINE Ray spawn_shadow_ray(const Vec3& p, const Vec3& ng, const Vec3& d, float dist, float epsilon) {
-  return {offset_origin(p, ng, d, epsilon), d, 0.f, isinf(dist) ? kInfinity : dist - 2.f * epsilon};
+  const Vec3 o = offset_origin(p, ng, d, epsilon);
+  if (isinf(dist)) return {o, d, 0.f, kInfinity};
+  const Vec3 to_target = p + d * dist - o;
+  const float len = length(to_target);
+  if (!(len > epsilon)) return {o, d, 0.f, 0.f};  // target within epsilon: nothing can occlude
+  return {o, to_target / len, 0.f, len - epsilon};
 }
 
 }  // namespace pathspace
