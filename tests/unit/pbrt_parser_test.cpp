@@ -211,11 +211,11 @@ TEST(PbrtParser, SyntaxErrorsCarryFileLineColumn) {
 
 TEST(PbrtParser, UnsupportedFeaturesWarnWithLocation) {
   std::vector<std::string> w;
-  load("Shape \"disk\" \"float radius\" 1\nShape \"sphere\" \"float zmax\" 0.5 \"float wobble\" 2\n"
+  load("Shape \"cylinder\" \"float radius\" 1\nShape \"sphere\" \"float zmax\" 0.5 \"float wobble\" 2\n"
        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
        "Material \"coateddiffuse\" \"float roughness\" 0.1\nShape \"sphere\"\n",
        &w);
-  EXPECT_TRUE(has_warning(w, "test.pbrt:5:1: warning: Shape \"disk\" is not supported")) << w.size();
+  EXPECT_TRUE(has_warning(w, "test.pbrt:5:1: warning: Shape \"cylinder\" is not supported")) << w.size();
   EXPECT_TRUE(has_warning(w, "test.pbrt:6:1: warning: partial sphere"));
   EXPECT_TRUE(has_warning(w, "test.pbrt:6:33: warning: Shape \"sphere\": parameter \"float wobble\" is not supported"));
   EXPECT_TRUE(has_warning(w, "test.pbrt:7:1: warning: MakeNamedMedium"));

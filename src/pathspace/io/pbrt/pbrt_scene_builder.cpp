@@ -8,9 +8,13 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
+#include "pathspace/io/environment_file.h"
+#include "pathspace/io/pbrt/pbrt_environment.h"
 #include "pathspace/io/pbrt/pbrt_materials.h"
 #include "pathspace/io/pbrt/pbrt_missing_files.h"
+#include "pathspace/io/pbrt/pbrt_tessellated_shapes.h"
 #include "pathspace/io/pbrt/pbrt_parser.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
 #include "pathspace/io/ply_reader.h"
@@ -183,7 +187,10 @@ class Builder {
     } else if (d == "Shape") {
       shape(st);
     } else if (d == "ObjectBegin") {
-      warn(st.loc, "object instancing is not supported: the shapes of object \"" + st.strings[0] + "\" are skipped");
+      if (object_depth_ > 0) throw Error(st.loc, "ObjectBegin inside object \"" + current_object_ + "\"");
+      if (objects_.count(st.strings[0])) warn(st.loc, "object \"" + st.strings[0] + "\" redefined");
+      current_object_ = st.strings[0];
+      objects_[current_object_].clear();
       stack_.push_back({gs_, false});
       ++object_depth_;
     } else if (d == "ObjectEnd") {
@@ -192,7 +199,7 @@ class Builder {
       gs_ = stack_.back().first;
       stack_.pop_back();
     } else if (d == "ObjectInstance") {
-      warn(st.loc, "ObjectInstance \"" + st.strings[0] + "\" skipped (instancing is not supported)");
+      instance(st);
     }
   }
 
@@ -264,12 +271,13 @@ class Builder {
       if (const Param* f = st.find("filename")) {
         if (image_missing(st, *f, "environment map", "a constant white environment (radiance 1 x scale)")) {
           mark_all(st);
-          if (options_.substitute_missing_textures) add_environment(Rgb(kMissingEnvironmentRadiance) * scale);
+          if (options_.substitute_missing_textures) add_environment(Rgb(kMissingEnvironmentRadiance) * scale, st.loc);
           return;
         }
-        throw Error(f->loc, "image environment not supported yet (infinite light with a filename)");
+        image_environment(st, *f, scale);
+        return;
       }
-      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale);
+      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale, st.loc);
     } else {
       warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
       mark_all(st);
@@ -277,7 +285,11 @@ class Builder {
   }
 
   // Constant environments add up exactly, so a second infinite light joins the first (a Scene holds one).
-  void add_environment(const Rgb& radiance) {
+  void add_environment(const Rgb& radiance, const FileLoc& loc) {
+    if (!scene_.environment_image.empty()) {
+      warn(loc, "a second infinite light next to an image environment is not supported; skipped");
+      return;
+    }
     for (Light& l : scene_.lights)
       if (l.type == LightType::environment) {
         l.value += radiance;
@@ -286,10 +298,63 @@ class Builder {
     scene_.add_environment_light(radiance);
   }
 
+  // An image infinite light (io/pbrt/pbrt_environment.h); "illuminance" rescales as pbrt-v4 does.
+  void image_environment(const Statement& st, const Param& file, float scale) {
+    file.used = true;
+    std::filesystem::path path(file.strings[0]);
+    if (path.is_relative()) path = std::filesystem::path(folder_of(st)) / path;
+    const float illuminance = float(st.get_float("illuminance", -1.0));
+    bool has_environment = false;
+    for (const Light& l : scene_.lights) has_environment = has_environment || l.type == LightType::environment;
+    if (has_environment) {
+      warn(st.loc, "a second infinite light next to another is not supported with an image; skipped");
+      return;
+    }
+    EnvironmentImage image;
+    try {
+      image = read_pbrt_environment(path.string(), gs_.ctm, st.loc, warnings_);
+    } catch (const Error& e) {
+      throw Error(file.loc, std::string("environment map: ") + e.what());
+    }
+    if (illuminance > 0.f) {
+      const double k = pbrt_map_illuminance(image);
+      if (!(k > 0.0)) throw Error(st.loc, "\"illuminance\" given for an environment map that is black above the horizon");
+      scale *= float(illuminance / k);
+    }
+    scene_.add_environment_map(std::move(image), Rgb(scale));
+  }
+
+  // pbrt-v4 instancing, flattened: the object's shapes are added again with the instance's transform
+  // applied on top of the one each shape was defined with (Embree instances would save memory;
+  // the scenes we read have few instances). Unsupported parameters are reported at the first use.
+  void instance(const Statement& st) {
+    if (object_depth_ > 0) throw Error(st.loc, "ObjectInstance inside ObjectBegin");
+    const auto it = objects_.find(st.strings[0]);
+    if (it == objects_.end()) throw Error(st.loc, "object \"" + st.strings[0] + "\" is not defined");
+    const bool first_use = instanced_.insert(st.strings[0]).second;
+    const GraphicsState saved = gs_;
+    for (const auto& [shape_st, shape_gs] : it->second) {
+      Statement copy = shape_st;
+      for (const Param& p : copy.params) p.used = false;
+      gs_ = shape_gs;
+      gs_.ctm = saved.ctm * shape_gs.ctm;
+      shape(copy);
+      if (first_use)
+        for (const Param& p : copy.params)
+          if (!p.used) warn(p.loc, copy.title() + ": parameter \"" + p.type + " " + p.name + "\" is not supported; ignored");
+    }
+    gs_ = saved;
+  }
+
   void shape(const Statement& st) {
     const std::string& type = st.strings[0];
-    if (object_depth_ > 0 || gs_.material == kInterfaceMaterial) {
-      if (gs_.material == kInterfaceMaterial) warn(st.loc, "shape with material \"interface\" skipped (participating media are not supported)");
+    if (object_depth_ > 0) {  // kept for ObjectInstance, with the graphics state it was defined in
+      objects_[current_object_].push_back({st, gs_});
+      mark_all(st);
+      return;
+    }
+    if (gs_.material == kInterfaceMaterial) {
+      warn(st.loc, "shape with material \"interface\" skipped (participating media are not supported)");
       mark_all(st);
       return;
     }
@@ -337,6 +402,9 @@ class Builder {
       add_mesh(st, mesh.positions, mesh.normals, mesh.uvs, mesh.indices);
     } else if (type == "sphere") {
       sphere(st);
+    } else if (type == "disk" || type == "bilinearmesh") {
+      const ObjectMesh m = type == "disk" ? disk_mesh(st, warnings_) : bilinear_mesh(st, warnings_);
+      add_mesh(st, m.positions, m.normals, m.uvs, m.indices);
     } else {
       warn(st.loc, "Shape \"" + type + "\" is not supported; skipped");
       mark_all(st);
@@ -443,6 +511,9 @@ class Builder {
   bool missing_images_ = false;
   int default_material_ = -1;
   int object_depth_ = 0;
+  std::string current_object_;
+  std::map<std::string, std::vector<std::pair<Statement, GraphicsState>>> objects_;  // ObjectBegin .. ObjectEnd
+  std::set<std::string> instanced_;
   bool in_world_ = false, end_time_only_ = false;
   bool has_camera_ = false;
   Mat4 camera_from_world_;

@@ -1,0 +1,29 @@
+// pbrt-v4 shapes that pathspace renders as triangle meshes (pbrt-v4 "Shapes"): `disk` (a ring of
+// triangles whose area equals the disk's) and `bilinearmesh` (each bilinear patch split into two
+// triangles, exact for planar patches). The meshes are in object space; the scene builder
+// transforms and orients them like any trianglemesh.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/io/load_warnings.h"
+#include "pathspace/io/pbrt/pbrt_statement.h"
+#include "pathspace/math/vec3.h"
+
+namespace pathspace::pbrt {
+
+struct ObjectMesh {
+  std::vector<Vec3> positions, normals;  // normals: empty or one per position
+  std::vector<std::array<float, 2>> uvs;  // empty or one per position
+  std::vector<uint32_t> indices;
+};
+
+// Segments around a full disk (a partial one, phimax < 360, gets a proportional share).
+inline constexpr int kDiskSegments = 64;
+
+ObjectMesh disk_mesh(const Statement& st, LoadWarnings* warnings);
+ObjectMesh bilinear_mesh(const Statement& st, LoadWarnings* warnings);
+
+}  // namespace pathspace::pbrt
