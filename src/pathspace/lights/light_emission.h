@@ -106,19 +106,26 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, Point2 u_
         e->d = l.direction;
         e->pdf_w = 1.f;
         e->delta_direction = true;
-      } else {
+        e->le = l.value;
+      } else if (!scene.environment_map.texels) {
         e->d = square_to_uniform_sphere(u_dir);
         e->pdf_w = uniform_sphere_pdf();
+        e->le = l.value;
+      } else {
+        // Propagation is opposite to the direction towards the environment.
+        Vec3 w;
+        e->le = sample_environment(scene, l, u_dir, &w, &e->pdf_w);
+        e->d = -w;
+        if (!(e->pdf_w > 0.f)) return false;
       }
       // The disk lies on the far side of the bounding sphere (upstream), so every ray crosses the
       // whole scene; flux through it is value * pi R^2 per direction.
       e->p = disk_point(b.center - e->d * b.radius, e->d, b.radius, u_pos);
       e->n = e->ng = e->d;
-      e->le = l.value;
       e->pdf_a = 1.f / (kPi * b.radius * b.radius);
-      e->weight = l.value * (1.f / (e->pdf_a * e->pdf_w));
+      e->weight = e->le * (1.f / (e->pdf_a * e->pdf_w));
       e->infinite = true;
-      return !is_black(l.value) && b.radius > 0.f;
+      return !is_black(e->le) && b.radius > 0.f;
     }
   }
   return false;
@@ -154,7 +161,7 @@ PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::directional:
     case LightType::environment:
       *pdf_a = scene.bounds.radius > 0.f ? 1.f / (kPi * scene.bounds.radius * scene.bounds.radius) : 0.f;
-      *pdf_w = l.type == LightType::directional ? 1.f : uniform_sphere_pdf();
+      *pdf_w = l.type == LightType::directional ? 1.f : environment_pdf(scene, -d);
       return;
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "pathspace/geometry/interaction.h"
+#include "pathspace/lights/environment_light.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/warps.h"
@@ -100,18 +101,17 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       s->delta = true;
       return true;
     case LightType::environment:
-      s->wi = square_to_uniform_sphere(u);
+      s->li = sample_environment(scene, l, u, &s->wi, &s->pdf_w);
       s->dist = kInfinity;
-      s->li = l.value;
-      s->pdf_w = uniform_sphere_pdf();
       s->delta = false;
-      return true;
+      return s->pdf_w > 0.f && !is_black(s->li);
   }
   return false;
 }
 
 // Solid-angle pdf with which sample_light would produce the direction from `ref` to the point `p`
-// (normal n) on light l; for the environment light p and n are unused.
+// (normal n) on light l; for the environment light only the direction p - ref matters (pass
+// ref + w).
 PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& ref, const Vec3& p, const Vec3& n) {
   switch (l.type) {
     case LightType::area_triangle: {
@@ -129,7 +129,7 @@ PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& re
       }
       return detail::solid_angle_from_area(1.f / (kFourPi * r2), ref, p, n);
     }
-    case LightType::environment: return uniform_sphere_pdf();
+    case LightType::environment: return environment_pdf(scene, normalize(p - ref));
     default: return 0.f;  // delta lights cannot be hit
   }
 }

@@ -85,6 +85,11 @@ void Scene::add_environment_light(const Rgb& radiance) {
   lights.push_back(l);
 }
 
+void Scene::add_environment_map(EnvironmentImage image, const Rgb& scale) {
+  environment_image = std::move(image);
+  add_environment_light(scale);
+}
+
 Bounds3 Scene::geometry_bounds() const {
   Bounds3 b;
   for (const Triangle& t : triangles)
@@ -111,7 +116,8 @@ float Scene::light_power(size_t i) const {
     }
     case LightType::point: return kFourPi * luminance(l.value);
     case LightType::directional: return kPi * r * r * luminance(l.value);
-    case LightType::environment: return kFourPi * kPi * r * r * luminance(l.value);
+    case LightType::environment:
+      return kFourPi * kPi * r * r * luminance(environment_image.empty() ? l.value : l.value * environment_image.sphere_mean());
   }
   return 0.f;
 }
@@ -144,6 +150,7 @@ void Scene::finalize() {
   const Bounds3 b = geometry_bounds();
   bounds_ = has_bounds_override ? bounds_override : (b.empty() ? BoundingSphere{Vec3(), 1.f} : bounding_sphere(b));
 
+  if (!environment_image.empty()) environment_image.prepare();
   environment_light_ = -1;
   std::vector<float> weights(lights.size(), 1.f);
   for (size_t i = 0; i < lights.size(); ++i) {
@@ -153,6 +160,7 @@ void Scene::finalize() {
     }
     if (light_selection == LightSelection::power) weights[i] = light_power(i);
   }
+  if (!environment_image.empty() && environment_light_ < 0) throw Error("an environment image without an environment light");
   light_distribution_.build(weights);
   finalized_ = true;
 }
@@ -181,6 +189,7 @@ SceneView Scene::view() const {
   v.num_lights = uint32_t(lights.size());
   v.light_selection = light_distribution_.view();
   v.environment_light = environment_light_;
+  v.environment_map = environment_image.view();
   v.camera = camera;
   v.bounds = bounds_;
   v.ray_epsilon = ray_epsilon;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/scene/environment_image.h"
 #include "pathspace/scene/image_texture.h"
 #include "pathspace/scene/scene_view.h"
 
@@ -26,6 +27,7 @@ class Scene {
   std::vector<Material> materials;
   std::vector<ImageTexture> textures;  // referenced by Material::diffuse_texture etc.
   std::vector<Light> lights;
+  EnvironmentImage environment_image;  // the environment light's image, or empty (constant)
   PinholeCamera camera;
   float ray_epsilon = 1e-4f;
   int max_path_segments = 10;
@@ -49,6 +51,8 @@ class Scene {
   void add_point_light(const Vec3& position, const Rgb& intensity);
   void add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance);
   void add_environment_light(const Rgb& radiance);
+  // An image environment: radiance = scale * image (lights/environment_map.h for the mappings).
+  void add_environment_map(EnvironmentImage image, const Rgb& scale);
 
   // Validates indices and derives bounds and the light distribution. Throws pathspace::Error.
   void finalize();

@@ -6,6 +6,7 @@
 
 #include "pathspace/camera/pinhole.h"
 #include "pathspace/geometry/shapes.h"
+#include "pathspace/lights/environment_map.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/materials/material.h"
 #include "pathspace/math/bbox.h"
@@ -30,6 +31,7 @@ struct SceneView {
   uint32_t num_lights = 0;
   DiscreteView light_selection;     // probability of choosing each light for NEE
   int32_t environment_light = -1;   // index of the environment light, or -1
+  EnvironmentMapView environment_map;  // its image (texels null: constant radiance)
   PinholeCamera camera;
   BoundingSphere bounds;            // of the geometry; used by infinite lights
   float ray_epsilon = 1e-4f;        // ray offset (scene scale)

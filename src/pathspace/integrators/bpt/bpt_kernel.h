@@ -137,7 +137,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       if (is_area_light(light)) {
         direct_pdf *= light_pdf(scene, light, hit.p, e.p, e.ng) * fabsf(dot(e.ng, e.d)) / d2;
       } else if (light.type == LightType::environment) {
-        direct_pdf *= uniform_sphere_pdf();
+        direct_pdf *= environment_pdf(scene, -e.d);
       }
       dvcm = mis(h, direct_pdf / emit_pdf);
       if (!e.infinite) dvcm *= mis(h, d2);  // infinite lights: no distance to the (proxy) origin
@@ -342,9 +342,9 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
           const float pick = scene.light_selection.probability(uint32_t(scene.environment_light));
           float pa, pw;
           emission_pdf(scene, env, ray.d, -ray.d, &pa, &pw);
-          w_light = mis(h, pick * uniform_sphere_pdf()) * dvcm + mis(h, pick * pa * pw) * dvc;
+          w_light = mis(h, pick * environment_pdf(scene, ray.d)) * dvcm + mis(h, pick * pa * pw) * dvc;
         }
-        const Rgb c = beta * env.value * (1.f / (1.f + w_light));
+        const Rgb c = beta * environment_radiance(scene, env, ray.d) * (1.f / (1.f + w_light));
         radiance += c;
         record(films, 0, segments + 1, pixel, c);
       }

@@ -167,7 +167,7 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) {
       if (bounces > 0 && settings.specular_emission && scene.environment_light >= 0)
-        out->direct += beta * scene.lights[scene.environment_light].value;
+        out->direct += beta * environment_radiance(scene, scene.lights[scene.environment_light], ray.d);
       return;
     }
     const Vec3 n_front = dot(hit.ng, -ray.d) >= 0.f ? hit.ng : -hit.ng;

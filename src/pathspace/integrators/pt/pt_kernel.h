@@ -111,10 +111,10 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
       if (scene.environment_light >= 0) {
         const Light& env = scene.lights[scene.environment_light];
         if (after_delta || !settings.nee) {
-          *radiance += beta * env.value;
+          *radiance += beta * environment_radiance(scene, env, ray.d);
         } else if (settings.bsdf_sampling) {
-          const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * uniform_sphere_pdf();
-          *radiance += beta * env.value * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
+          const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * environment_pdf(scene, ray.d);
+          *radiance += beta * environment_radiance(scene, env, ray.d) * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
         }
       }
       break;

@@ -79,7 +79,7 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) {
-      if (scene.environment_light >= 0) radiance += beta * scene.lights[scene.environment_light].value;
+      if (scene.environment_light >= 0) radiance += beta * environment_radiance(scene, scene.lights[scene.environment_light], ray.d);
       break;
     }
     // Without next event estimation emission always counts with weight 1.
@@ -181,7 +181,8 @@ PS_INLINE float max_photon_power(const SceneView& scene) {
       case LightType::area_sphere: scale = kPi * kFourPi * scene.spheres[l.shape].radius * scene.spheres[l.shape].radius; break;
       case LightType::point: scale = kFourPi; break;
       case LightType::directional: scale = disk; break;
-      case LightType::environment: scale = kFourPi * disk; break;
+      // An image's radiance over its pdf stays below 4 pi times the brightest texel in practice.
+      case LightType::environment: scale = kFourPi * disk * (scene.environment_map.texels ? scene.environment_map.max_texel : 1.f); break;
     }
     if (l.two_sided && is_area_light(l)) scale *= 2.f;
     m = fmaxf(m, max_component(l.value) * scale / p);

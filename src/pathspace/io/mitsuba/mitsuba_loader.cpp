@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/io/environment_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/mitsuba/mitsuba_materials.h"
 #include "pathspace/io/mitsuba/mitsuba_object.h"
@@ -197,7 +198,7 @@ class Builder {
     } else if (t == "envmap") {
       if (has_environment_) throw Error(o.loc(), "a scene can hold at most one environment emitter");
       has_environment_ = true;
-      scene_.add_environment_light(envmap_mean(o));
+      envmap(o);
     } else if (t == "spot") {
       w_->add(o.loc(), "spot emitters are not supported (pathspace has no spot light); skipped");
       o.ignore_all();
@@ -208,9 +209,9 @@ class Builder {
     o.warn_unused(w_);
   }
 
-  // An image environment as a constant one of its mean radiance over the sphere (rows of the
-  // latitude-longitude map weighted by sin(theta)): total irradiance kept, directionality lost.
-  Rgb envmap_mean(const Object& o) {
+  // An image environment: Mitsuba's lat-long mapping in the to_world frame (local y up,
+  // lights/environment_map.h), radiance = scale * image.
+  void envmap(const Object& o) {
     const std::string file = o.get_string("filename", "");
     std::filesystem::path path(file);
     if (path.is_relative()) path = std::filesystem::path(folder_) / path;
@@ -218,25 +219,17 @@ class Builder {
     if (file.empty() || !std::filesystem::is_regular_file(path, ec))
       throw Error(o.find("filename") ? doc_.loc(o.find("filename")->node) : o.loc(),
                   "environment map '" + file + "' not found (looked for " + path.string() + ")");
-    Image image;
+    const Mat4 m = o.get_transform("to_world");
+    EnvironmentImage image;
     try {
-      image = read_image(path.string());
+      image = read_environment_image(path.string(), EnvironmentMapping::lat_long, m.vector(Vec3(1, 0, 0)),
+                                     m.vector(Vec3(0, 1, 0)), m.vector(Vec3(0, 0, 1)));
+      const float scale = float(o.get_float("scale", 1.0));
+      o.ignore({"filter_type", "mis_compensation"});
+      scene_.add_environment_map(std::move(image), Rgb(scale));
     } catch (const Error& e) {
       throw Error(o.loc(), std::string("envmap: ") + e.what());
     }
-    double sum[3] = {0, 0, 0}, weight = 0;
-    for (int y = 0; y < image.height; ++y) {
-      const double s = std::sin(M_PI * (y + 0.5) / image.height);
-      for (int x = 0; x < image.width; ++x)
-        for (int c = 0; c < 3; ++c) sum[c] += s * image.at(x, y)[c];
-      weight += s * image.width;
-    }
-    const float scale = float(o.get_float("scale", 1.0));
-    o.ignore({"to_world", "filter_type", "mis_compensation"});
-    w_->add(o.loc(), "envmap '" + file + "' approximated by a constant environment of its mean radiance (image environments are not supported yet)");
-    const Rgb mean = weight > 0 ? Rgb(float(sum[0] / weight), float(sum[1] / weight), float(sum[2] / weight)) : Rgb();
-    if (!all_finite(mean)) throw Error(o.loc(), "envmap '" + file + "' holds NaN or infinite values");
-    return mean * scale;
   }
 
   const Document& doc_;
