@@ -1,5 +1,6 @@
 // Image textures as kernels see them: linear RGB texels (row 0 at the top) behind a raw pointer,
-// looked up with bilinear filtering and repeat (wrap) addressing after a uv scale and offset.
+// looked up with bilinear filtering (or nearest texel, for patterns with hard edges such as pbrt's
+// checkerboard) and repeat (wrap) addressing after a uv scale and offset.
 // v = 0 is the bottom row of the image (the pbrt and OBJ convention; images are stored top first).
 #pragma once
 
@@ -16,6 +17,7 @@ struct TextureView {
   int32_t width = 0, height = 0;
   float uscale = 1.f, vscale = 1.f;  // pbrt's uscale / vscale
   float udelta = 0.f, vdelta = 0.f;  // pbrt's udelta / vdelta
+  bool nearest = false;              // nearest texel instead of bilinear
 };
 
 namespace texture_detail {
@@ -37,6 +39,10 @@ PS_INLINE Rgb texture_lookup(const TextureView& t, Point2 uv) {
   using texture_detail::wrap_unit;
   const float s = wrap_unit(uv.x * t.uscale + t.udelta);
   const float r = wrap_unit(uv.y * t.vscale + t.vdelta);
+  if (t.nearest) {
+    const int xn = int(s * float(t.width)), yn = int((1.f - r) * float(t.height));
+    return texture_texel(t, xn < t.width ? xn : t.width - 1, yn < t.height ? yn : t.height - 1);
+  }
   const float x = s * float(t.width) - 0.5f, y = (1.f - r) * float(t.height) - 0.5f;
   const float fx = floorf(x), fy = floorf(y);
   const float ax = x - fx, ay = y - fy;

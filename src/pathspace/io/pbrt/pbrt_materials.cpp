@@ -143,6 +143,36 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
   return value;
 }
 
+// pbrt-v4's 2D checkerboard: tex1 where floor(s) + floor(t) is even, tex2 elsewhere, with
+// s = u uscale + udelta, t = v vscale + vdelta. Baked into 2x2 texels looked up by nearest texel,
+// with the uv transform halved (one texel per check). Returns the mean (the constant fallback).
+Rgb add_checkerboard_texture(const Statement& st, TextureTable* textures, LoadWarnings* w) {
+  const std::string& name = st.strings[0];
+  if (st.get_int("dimension", 2) != 2) throw Error(st.find("dimension")->loc, "checkerboard: only dimension 2 is supported");
+  if (image_param(st, "tex1", *textures) || image_param(st, "tex2", *textures))
+    w->add(st.loc, "checkerboard '" + name + "': image textures as checks approximated by their mean colours");
+  Rgb t1 = spectrum_param(st, "tex1", Rgb(1.f), *textures, w), t2 = spectrum_param(st, "tex2", Rgb(0.f), *textures, w);
+  if (st.strings[1] == "float") t1 = Rgb(average(t1)), t2 = Rgb(average(t2));
+  const std::string mapping = st.get_string("mapping", "uv");
+  const Rgb mean = (t1 + t2) * 0.5f;
+  if (st.strings[1] != "spectrum" || !textures->scene || mapping != "uv") {
+    w->add(st.loc, "checkerboard '" + name + "' approximated by its mean colour (" +
+                       (mapping != "uv" ? "mapping \"" + mapping + "\"" : std::string("float textures")) + " not supported)");
+    return mean;
+  }
+  ImageTexture t;
+  t.name = "checkerboard '" + name + "'";
+  t.width = t.height = 2;
+  t.texels = {t2, t1, t1, t2};  // top row: t odd; bottom row: t even (v = 0 is the bottom)
+  t.uscale = float(st.get_float("uscale", 1.0)) * 0.5f;
+  t.vscale = float(st.get_float("vscale", 1.0)) * 0.5f;
+  t.udelta = float(st.get_float("udelta", 0.0)) * 0.5f;
+  t.vdelta = float(st.get_float("vdelta", 0.0)) * 0.5f;
+  t.nearest = true;
+  textures->images[name] = {textures->scene->add_texture(std::move(t)), Rgb(1.f)};
+  return mean;
+}
+
 }  // namespace
 
 Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
@@ -172,6 +202,8 @@ void add_texture(const Statement& st, const std::string& folder, TextureTable* t
     if (tex && !scale) textures->images[name] = {tex->texture, tex->scale * spectrum_param(st, "scale", Rgb(1.f), *textures, w)};
     if (scale && !tex) textures->images[name] = {scale->texture, scale->scale * spectrum_param(st, "tex", Rgb(1.f), *textures, w)};
     if (tex && scale) w->add(st.loc, "scale texture '" + name + "' of two image textures approximated by their mean colours' product");
+  } else if (cls == "checkerboard") {
+    value = add_checkerboard_texture(st, textures, w);
   } else {
     w->add(st.loc, "texture class '" + cls + "' not supported; texture '" + name + "' taken as constant 0.5");
     for (const Param& p : st.params) p.used = true;
