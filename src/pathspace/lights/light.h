@@ -2,6 +2,7 @@
 // exactly as in cornell-variants.md §5:
 //   area_triangle / area_sphere: emitted radiance L_e (front side only unless two_sided)
 //   point:       radiant intensity I (W/sr); irradiance at x is I cos / |x - p|^2
+//   spot:        a point light whose intensity I is scaled by pbrt-v4's falloff around an axis
 //   directional: irradiance E on a surface perpendicular to the beam
 //   environment: constant radiance from every direction
 #pragma once
@@ -16,18 +17,36 @@ namespace pathspace {
 // Emission below this cosine (relative to the emitting side) is zero.
 inline constexpr float kMinEmitterCosine = 1e-6f;
 
-enum class LightType : uint8_t { area_triangle, area_sphere, point, directional, environment };
+enum class LightType : uint8_t { area_triangle, area_sphere, point, directional, environment, spot };
 
 struct Light {
   LightType type = LightType::point;
   uint32_t shape = 0;  // triangle or sphere index for area lights
   Rgb value;
-  Vec3 position;       // point
-  Vec3 direction;      // directional: unit direction of propagation
+  Vec3 position;       // point, spot
+  Vec3 direction;      // directional: unit direction of propagation; spot: unit axis of the cone
   bool two_sided = false;
+  float cos_total = -1.f;   // spot: no emission at angles whose cosine to the axis is below this
+  float cos_falloff = 1.f;  // spot: full intensity above this cosine; smoothstep in between
 };
 
-PS_INLINE bool is_delta_light(const Light& l) { return l.type == LightType::point || l.type == LightType::directional; }
+// Lights at a single point (delta position): point and spot.
+PS_INLINE bool is_point_light(const Light& l) { return l.type == LightType::point || l.type == LightType::spot; }
+PS_INLINE bool is_delta_light(const Light& l) { return is_point_light(l) || l.type == LightType::directional; }
+
+// pbrt-v4's spot falloff: smoothstep of the cosine between cos_total (0) and cos_falloff (1).
+PS_INLINE float spot_falloff(const Light& l, const Vec3& w) {
+  const float c = dot(w, l.direction);
+  if (c <= l.cos_total) return 0.f;
+  if (c >= l.cos_falloff) return 1.f;
+  const float t = (c - l.cos_total) / (l.cos_falloff - l.cos_total);
+  return t * t * (3.f - 2.f * t);
+}
+
+// Radiant intensity of a point or spot light towards the unit direction w (leaving the light).
+PS_INLINE Rgb point_intensity(const Light& l, const Vec3& w) {
+  return l.type == LightType::spot ? l.value * spot_falloff(l, w) : l.value;
+}
 PS_INLINE bool is_area_light(const Light& l) { return l.type == LightType::area_triangle || l.type == LightType::area_sphere; }
 
 // Sample towards a light from a reference point (next event estimation).

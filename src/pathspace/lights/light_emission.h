@@ -99,6 +99,18 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, Point2 u_
       e->weight = l.value * (1.f / e->pdf_w);  // I / pdf_w: flux carried by one direction sample
       e->delta_position = true;
       return !is_black(l.value);
+    case LightType::spot: {  // directions uniform in the cone; the falloff goes into the weight
+      const Frame f(l.direction);
+      e->p = l.position;
+      e->d = f.to_world(square_to_uniform_cone(u_dir, l.cos_total));
+      e->n = e->ng = e->d;
+      e->le = point_intensity(l, e->d);
+      e->pdf_a = 1.f;
+      e->pdf_w = uniform_cone_pdf(l.cos_total);
+      e->weight = e->le * (1.f / e->pdf_w);
+      e->delta_position = true;
+      return !is_black(e->le);
+    }
     case LightType::directional:
     case LightType::environment: {
       const BoundingSphere& b = scene.bounds;
@@ -157,6 +169,10 @@ PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::point:
       *pdf_a = 1.f;
       *pdf_w = uniform_sphere_pdf();
+      return;
+    case LightType::spot:
+      *pdf_a = 1.f;
+      *pdf_w = dot(d, l.direction) > l.cos_total ? uniform_cone_pdf(l.cos_total) : 0.f;
       return;
     case LightType::directional:
     case LightType::environment:

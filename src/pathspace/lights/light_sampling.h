@@ -82,16 +82,18 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       s->delta = false;
       return s->pdf_w > 0.f && isfinite(s->pdf_w) && !is_black(s->li);
     }
-    case LightType::point: {
+    case LightType::point:
+    case LightType::spot: {
       const Vec3 d = l.position - ref;
       const float d2 = length_squared(d);
+      if (!(d2 > 0.f)) return false;
       s->dist = sqrtf(d2);
       s->wi = d / s->dist;
       s->p = l.position;
-      s->li = l.value / d2;
+      s->li = point_intensity(l, -s->wi) / d2;
       s->pdf_w = 1.f;
       s->delta = true;
-      return d2 > 0.f;
+      return !is_black(s->li);
     }
     case LightType::directional:
       s->wi = -l.direction;

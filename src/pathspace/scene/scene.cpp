@@ -70,6 +70,17 @@ void Scene::add_point_light(const Vec3& position, const Rgb& intensity) {
   lights.push_back(l);
 }
 
+void Scene::add_spot_light(const Vec3& position, const Vec3& axis, const Rgb& intensity, float cos_total, float cos_falloff) {
+  Light l;
+  l.type = LightType::spot;
+  l.position = position;
+  l.direction = normalize(axis);
+  l.value = intensity;
+  l.cos_total = cos_total;
+  l.cos_falloff = cos_falloff > cos_total ? cos_falloff : cos_total + 1e-6f;  // keep the smoothstep defined
+  lights.push_back(l);
+}
+
 void Scene::add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance) {
   Light l;
   l.type = LightType::directional;
@@ -115,6 +126,8 @@ float Scene::light_power(size_t i) const {
       return kPi * kFourPi * rs * rs * luminance(l.value);
     }
     case LightType::point: return kFourPi * luminance(l.value);
+    // Integral of the smoothstep falloff over the sphere (pbrt-v4's SpotLight::Phi).
+    case LightType::spot: return kTwoPi * (1.f - 0.5f * (l.cos_falloff + l.cos_total)) * luminance(l.value);
     case LightType::directional: return kPi * r * r * luminance(l.value);
     case LightType::environment:
       return kFourPi * kPi * r * r * luminance(environment_image.empty() ? l.value : l.value * environment_image.sphere_mean());

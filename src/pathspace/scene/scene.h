@@ -49,6 +49,8 @@ class Scene {
   uint32_t add_sphere(const Vec3& center, float radius, uint32_t material, const Rgb& emission = Rgb(),
                       bool inward_normals = false);
   void add_point_light(const Vec3& position, const Rgb& intensity);
+  // pbrt-v4 spot light: intensity I on the axis, smoothstep falloff from cos_falloff to cos_total.
+  void add_spot_light(const Vec3& position, const Vec3& axis, const Rgb& intensity, float cos_total, float cos_falloff);
   void add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance);
   void add_environment_light(const Rgb& radiance);
   // An image environment: radiance = scale * image (lights/environment_map.h for the mappings).

@@ -255,7 +255,7 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   } else {
     emission_pdf(scene, light, ls.wi, -ls.wi, &pa, &pw);
     emit_to_z = pa * pw * cos_z;
-    if (light.type == LightType::point) emit_to_z /= ls.dist * ls.dist;
+    if (is_point_light(light)) emit_to_z /= ls.dist * ls.dist;
     direct = ls.pdf_w;  // 1 for delta lights, the sphere pdf for the environment
   }
   if (!(direct > 0.f)) return {};

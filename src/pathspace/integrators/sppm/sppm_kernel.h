@@ -179,7 +179,8 @@ PS_INLINE float max_photon_power(const SceneView& scene) {
         break;
       }
       case LightType::area_sphere: scale = kPi * kFourPi * scene.spheres[l.shape].radius * scene.spheres[l.shape].radius; break;
-      case LightType::point: scale = kFourPi; break;
+      case LightType::point:
+      case LightType::spot: scale = kFourPi; break;
       case LightType::directional: scale = disk; break;
       // An image's radiance over its pdf stays below 4 pi times the brightest texel in practice.
       case LightType::environment: scale = kFourPi * disk * (scene.environment_map.texels ? scene.environment_map.max_texel : 1.f); break;

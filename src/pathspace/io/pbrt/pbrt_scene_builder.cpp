@@ -260,6 +260,19 @@ class Builder {
       const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_) * scale;
       const std::vector<double> from = st.get_numbers("from");
       scene_.add_point_light(gs_.ctm.point(from.size() == 3 ? vec_at(from, 0) : Vec3()), i);
+    } else if (type == "spot") {
+      // pbrt-v4: the cone around from -> to; full intensity inside coneangle - conedelta, smoothstep
+      // falloff (in the cosine) out to coneangle.
+      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_) * scale;
+      const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
+      const Vec3 f = from.size() == 3 ? vec_at(from, 0) : Vec3(), t = to.size() == 3 ? vec_at(to, 0) : Vec3(0, 0, 1);
+      const Vec3 axis = gs_.ctm.vector(t - f);
+      if (!(length(axis) > 0.f)) throw Error(st.loc, "spot light: 'from' equals 'to'");
+      const double cone = st.get_float("coneangle", 30.0), delta = st.get_float("conedelta", 5.0);
+      if (!(cone > 0.0 && cone <= 180.0) || !(delta >= 0.0)) throw Error(st.loc, "spot light: need 0 < coneangle <= 180 and conedelta >= 0");
+      const float cos_total = float(std::cos(cone * M_PI / 180.0));
+      const float cos_falloff = float(std::cos(std::max(0.0, cone - delta) * M_PI / 180.0));
+      scene_.add_spot_light(gs_.ctm.point(f), axis, i, cos_total, cos_falloff);
     } else if (type == "distant") {
       const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale;
       const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
