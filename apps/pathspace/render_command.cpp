@@ -92,7 +92,7 @@ IntegratorSettings integrator_settings(const RenderOptions& o) {
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
-  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.xml/.ply/.obj file")
+  cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.xml/.gltf/.glb/.ply/.obj file")
       ->default_str(kDefaultSceneName);
   cmd->add_option("-i,--integrator", o->integrator, "Integrator (see 'pathspace info --integrators')")
       ->capture_default_str();
@@ -134,7 +134,7 @@ int run_render_command(const RenderOptions& o) {
   const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
   const bool from_file = names_scene_file(scene_name);
   const BuiltinSceneInfo* info = from_file ? nullptr : find_builtin_scene(scene_name);
-  if (!from_file && !info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.ply/.obj file");
+  if (!from_file && !info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
   SceneLoadOptions load_options;
   load_options.camera_position = parse_vec3(o.camera_pos, "--camera-pos");
   load_options.camera_target = parse_vec3(o.camera_target, "--camera-target");

@@ -47,6 +47,11 @@ Scene load(Format format, std::string_view bytes, const std::string& folder) {
       else write_file(mtl, bytes.substr(split + kMtlMarker.size()));
       return load_scene(obj, options, &warnings);
     }
+    case Format::gltf: {
+      const std::string path = folder + "/scene.gltf";
+      write_file(path, bytes);
+      return load_scene(path, options, &warnings);
+    }
     case Format::mitsuba:
 #if PATHSPACE_HAS_MITSUBA
       return mitsuba::load_mitsuba_string(std::string(bytes), "fuzz.xml", folder, options, &w, &settings);
@@ -65,6 +70,7 @@ const char* format_name(Format f) {
     case Format::ply: return "ply";
     case Format::obj: return "obj";
     case Format::mitsuba: return "mitsuba";
+    case Format::gltf: return "gltf";
   }
   return "";
 }

@@ -13,9 +13,9 @@
 
 namespace pathspace::fuzz {
 
-enum class Format { pbrt, ply, obj, mitsuba };
+enum class Format { pbrt, ply, obj, mitsuba, gltf };
 
-// "pbrt", "ply", "obj", "mitsuba": the corpus folder names (tests/fuzz/corpus/<name>/).
+// "pbrt", "ply", "obj", "mitsuba", "gltf": the corpus folder names (tests/fuzz/corpus/<name>/).
 const char* format_name(Format f);
 // False for mitsuba when this build has no Mitsuba loader.
 bool format_available(Format f);
@@ -39,6 +39,7 @@ class InputFolder {
 };
 
 // Loads `bytes` as a file of the given format. OBJ input is written to scene.obj in the folder;
+// glTF input to scene.gltf (JSON or GLB bytes alike: the loader looks at the content);
 // bytes after a line "#--- scene.mtl ---" become scene.mtl (so one input covers OBJ and MTL).
 Outcome load_bytes(Format format, std::string_view bytes, const InputFolder& folder);
 

@@ -53,7 +53,7 @@ TEST_P(FuzzCorpusReplay, EveryFileLoadsOrFailsWithLocation) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, FuzzCorpusReplay, ::testing::Values(Format::pbrt, Format::ply, Format::obj, Format::mitsuba),
+INSTANTIATE_TEST_SUITE_P(Formats, FuzzCorpusReplay, ::testing::Values(Format::pbrt, Format::ply, Format::obj, Format::mitsuba, Format::gltf),
                          [](const ::testing::TestParamInfo<Format>& i) { return std::string(fuzz::format_name(i.param)); });
 
 }  // namespace

@@ -328,8 +328,9 @@ void write_image(const std::string& path, const Image& image) {
   write_file_atomically(path, [&](const std::string& temp) { write_bytes(path, temp, bytes); });
 }
 
-Image read_image(const std::string& path, LdrEncoding ldr) {
-  const std::string bytes = read_file(path);
+Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file(path), ldr); }
+
+Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
   const std::string ext = lower_extension(path);
   // The content decides where it can; the extension picks the decoder whose error message fits.
   const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;

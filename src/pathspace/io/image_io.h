@@ -22,5 +22,8 @@ enum class LdrEncoding { srgb, linear };
 
 // Reads EXR, PFM, PNG (and what stb reads: JPG, HDR, TGA, BMP).
 Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb);
+// The same for bytes already in memory (images embedded in glTF files); `path` names them in
+// errors, and its extension (if any) picks the decoder where the content does not.
+Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr = LdrEncoding::srgb);
 
 }  // namespace pathspace

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/io/gltf/gltf_loader.h"
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
 #include "pathspace/io/obj_loader.h"
@@ -38,7 +39,7 @@ void add_ply_mesh(const std::string& path, Scene* scene) {
 
 bool is_scene_file(const std::string& path) {
   const std::string ext = scene_file_extension(path);
-  return ext == ".pbrt" || ext == ".xml" || ext == ".ply" || ext == ".obj";
+  return ext == ".pbrt" || ext == ".xml" || ext == ".ply" || ext == ".obj" || ext == ".gltf" || ext == ".glb";
 }
 
 PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up, float fov_degrees,
@@ -86,8 +87,9 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::
   const std::string ext = scene_file_extension(path);
   if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
   if (ext == ".xml") return mitsuba::load_mitsuba_file(path, options, &w, settings);
+  if (ext == ".gltf" || ext == ".glb") return gltf::load_gltf_file(path, options, &w);
   if (ext != ".ply" && ext != ".obj")
-    throw Error(FileLoc{path}, "unknown scene file type '" + ext + "' (expected .pbrt, .xml, .ply or .obj)");
+    throw Error(FileLoc{path}, "unknown scene file type '" + ext + "' (expected .pbrt, .xml, .gltf, .glb, .ply or .obj)");
   Scene scene;
   scene.name = path;
   if (ext == ".ply") add_ply_mesh(path, &scene);

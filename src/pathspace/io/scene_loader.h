@@ -1,5 +1,5 @@
-// Scene files: `load_scene` picks the parser by extension (.pbrt, .xml for Mitsuba, .ply, .obj, each
-// optionally .gz) and returns a finalised Scene. Unsupported or approximated features become warnings
+// Scene files: `load_scene` picks the parser by extension (.pbrt, .xml for Mitsuba, .gltf/.glb, .ply,
+// .obj, each optionally .gz) and returns a finalised Scene. Unsupported or approximated features become warnings
 // with file:line (collected in *warnings for the CLI to print); malformed input is a pathspace::Error.
 #pragma once
 
