@@ -2,8 +2,8 @@
 // whose rows vary with theta (zero below the horizon) and whose columns vary with phi, mapped so
 // that the map's up axis is world +z: L_out = a/pi * E with E = 2 pi int R(theta) cos sin dtheta,
 // R the bilinear row profile (the column factor averages to 1 over phi), integrated here by
-// Simpson's rule. PT with MIS, NEE only and BSDF sampling only, LT and BPT (t-tests of independent
-// whole-image means), and a constant equal-area map equal to a constant light.
+// Simpson's rule. PT with MIS, NEE only and BSDF sampling only, LT, BPT, SPPM and PCLT (t-tests of
+// independent whole-image means), and a constant equal-area map equal to a constant light.
 // alpha = 0.01, Sidak-corrected over the tests in this file.
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kTestsInFile = 6;
+constexpr int kTestsInFile = 8;
 const double kAlpha = testing::sidak(0.01, kTestsInFile);
 constexpr int kW = 32, kH = 16;
 const float kRows[kH] = {3.f, 2.5f, 0.5f, 4.f, 1.f, 1.5f, 0.2f, 2.f, 0, 0, 0, 0, 0, 0, 0, 0};
@@ -111,6 +111,8 @@ void expect_pass_means(const std::string& integrator, int passes, uint64_t seed)
   const Accel accel(scene);
   IntegratorSettings s;
   s.lt.light_paths = 65536;
+  s.sppm.photons = 262144;
+  s.pclt.light_paths = 262144;
   double sum = 0, sum_sq = 0;
   for (int p = 0; p < passes; ++p) {
     s.seed = seed + uint64_t(p) * 7919 + testing::test_seed_base();
@@ -130,6 +132,9 @@ void expect_pass_means(const std::string& integrator, int passes, uint64_t seed)
 
 TEST(EnvPlane, LtMatchesClosedForm) { expect_pass_means("lt", 30, 31); }
 TEST(EnvPlane, BptMatchesClosedForm) { expect_pass_means("bpt", 30, 41); }
+// The plane is flat and uniformly lit, so a gather ball covers pi r^2 of it: SPPM is unbiased here.
+TEST(EnvPlane, SppmMatchesClosedForm) { expect_pass_means("sppm", 30, 71); }
+TEST(EnvPlane, PcltMatchesClosedForm) { expect_pass_means("pclt", 30, 81); }
 
 // A constant equal-area image c equals the constant light c: a c on the plane (PT, MIS).
 TEST(EnvPlane, ConstantEqualAreaMapIsConstantLight) {
