@@ -415,20 +415,24 @@ TEST(MitsubaLoader, Emitters) {
       "</scene>",
       dir.path.string());
   const Scene& s = r.scene;
-  ASSERT_EQ(s.lights.size(), 4u);
+  ASSERT_EQ(s.lights.size(), 5u);
   EXPECT_EQ(s.lights[0].type, LightType::point);
   EXPECT_NEAR(distance(s.lights[0].position, Vec3(1, 2, 3)), 0.f, 1e-6f);
   EXPECT_EQ(s.lights[0].value, Rgb(4.f));
   EXPECT_NEAR(distance(s.lights[1].position, Vec3(0, 5, 0)), 0.f, 1e-6f);
   EXPECT_EQ(s.lights[1].value, Rgb(1.f));
-  EXPECT_NE(find_warning(r.warnings, "scene.xml:4:1: warning: spot emitters are not supported"), "");
-  EXPECT_EQ(s.lights[2].type, LightType::directional);
-  EXPECT_NEAR(s.lights[2].direction.y, -1.f, 1e-6f);
-  EXPECT_EQ(s.lights[2].value, Rgb(3.f));
-  EXPECT_EQ(s.lights[3].type, LightType::environment);
-  EXPECT_NEAR(s.lights[3].value.r, 0.5f, 1e-6f);
-  EXPECT_NEAR(s.lights[3].value.b, 2.f, 1e-6f);
-  EXPECT_NE(find_warning(r.warnings, "scene.xml:6:1: warning: envmap 'sky.exr' approximated by a constant environment"), "");
+  EXPECT_EQ(s.lights[2].type, LightType::spot);  // along +z, beam width 3/4 of the cutoff
+  EXPECT_NEAR(s.lights[2].direction.z, 1.f, 1e-6f);
+  EXPECT_NEAR(s.lights[2].cos_total, std::cos(20.0 * M_PI / 180.0), 1e-6);
+  EXPECT_NEAR(s.lights[2].cos_falloff, std::cos(15.0 * M_PI / 180.0), 1e-6);
+  EXPECT_NE(find_warning(r.warnings, "scene.xml:4:1: warning: spot emitter: Mitsuba's falloff"), "");
+  EXPECT_EQ(s.lights[3].type, LightType::directional);
+  EXPECT_NEAR(s.lights[3].direction.y, -1.f, 1e-6f);
+  EXPECT_EQ(s.lights[3].value, Rgb(3.f));
+  EXPECT_EQ(s.lights[4].type, LightType::environment);  // the image itself, times the scale
+  EXPECT_EQ(s.lights[4].value, Rgb(2.f));
+  EXPECT_FALSE(s.environment_image.empty());
+  EXPECT_EQ(find_warning(r.warnings, "approximated by a constant environment"), "");
 
   const Loaded c = load(scene3("<emitter type=\"constant\"><rgb name=\"radiance\" value=\"0.5\"/></emitter>"));
   ASSERT_EQ(c.scene.lights.size(), 3u);  // and scene3's two area-light triangles

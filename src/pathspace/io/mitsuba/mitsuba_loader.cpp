@@ -200,13 +200,28 @@ class Builder {
       has_environment_ = true;
       envmap(o);
     } else if (t == "spot") {
-      w_->add(o.loc(), "spot emitters are not supported (pathspace has no spot light); skipped");
-      o.ignore_all();
+      spot(o);
     } else {
       w_->add(o.loc(), "emitter type '" + t + "' is not supported at the top level; skipped");
       o.ignore_all();
     }
     o.warn_unused(w_);
+  }
+
+  // Mitsuba's spot: at the to_world origin, along its +z; full intensity inside beam_width (default
+  // 3/4 of cutoff_angle, degrees), nothing beyond cutoff_angle. Mitsuba fades linearly in the angle
+  // between them, pathspace's spot with pbrt-v4's smoothstep in the cosine (warning when they differ).
+  void spot(const Object& o) {
+    const Mat4 m = o.get_transform("to_world");
+    const double cutoff = o.get_float("cutoff_angle", 20.0);
+    const double beam = o.get_float("beam_width", cutoff * 0.75);
+    if (!(cutoff > 0.0 && cutoff <= 180.0) || !(beam >= 0.0)) throw Error(o.loc(), "spot emitter: need 0 < cutoff_angle <= 180 and beam_width >= 0");
+    const double inner = std::min(beam, cutoff);
+    if (inner < cutoff) w_->add(o.loc(), "spot emitter: Mitsuba's falloff (linear in the angle) approximated by a smoothstep in the cosine");
+    const Vec3 axis = m.vector(Vec3(0, 0, 1));
+    if (!(length(axis) > 0.f) || !all_finite(axis)) throw Error(o.loc(), "spot emitter: to_world is singular");
+    scene_.add_spot_light(m.point(Vec3()), axis, o.get_rgb("intensity", Rgb(1.f), folder_, w_),
+                          float(std::cos(cutoff * M_PI / 180.0)), float(std::cos(inner * M_PI / 180.0)));
   }
 
   // An image environment: Mitsuba's lat-long mapping in the to_world frame (local y up,
