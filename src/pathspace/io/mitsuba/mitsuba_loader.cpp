@@ -140,7 +140,7 @@ class Builder {
     const std::string id = doc_.attr(n, "id");
     if (id.empty()) w_->add(doc_.loc(n), "top-level <bsdf> without an id is never used; ignored");
     if (named_.count(id)) w_->add(doc_.loc(n), "bsdf id '" + id + "' redefined");
-    named_[id] = make_bsdf(doc_, n, named_, folder_, w_);
+    named_[id] = make_bsdf(doc_, n, named_, folder_, w_, &textures_);
     material_index_.erase(id);
   }
 
@@ -156,9 +156,9 @@ class Builder {
       const std::string id = doc_.attr(b[0], "id");
       const auto it = material_index_.find(id);
       if (it != material_index_.end()) return it->second;
-      return material_index_[id] = scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_));
+      return material_index_[id] = scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_, &textures_));
     }
-    return scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_));
+    return scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_, &textures_));
   }
 
   void shape(const Object& o) {
@@ -252,6 +252,7 @@ class Builder {
   LoadWarnings* w_;
   std::string folder_;
   Scene scene_;
+  TextureBinding textures_{&scene_, {}};
   NamedMaterials named_;
   std::map<std::string, uint32_t> material_index_;
   int default_material_ = -1;

@@ -76,13 +76,13 @@ Material dielectric(const Object& o, const std::string& folder, LoadWarnings* w)
 
 // Same approximation as the pbrt loader's coateddiffuse: Lambert base * (1 - F0) under a mirror
 // (plastic) or Phong (roughplastic, exponent 2/alpha^2 - 2 after Walter et al. 2007) coat of F0.
-Material plastic(const Object& o, const std::string& folder, LoadWarnings* w) {
+Material plastic(const Object& o, const std::string& folder, TextureBinding* textures, LoadWarnings* w) {
   const float eta = eta_of(o, 1.49f);  // Mitsuba's default int_ior is "polypropylene"
   const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
   const Rgb coat = o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) * f0;
   const float alpha = o.type() == "roughplastic" ? alpha_of(o, w, false) : 0.f;
   Material m;
-  m.diffuse = o.get_rgb("diffuse_reflectance", Rgb(0.5f), folder, w) * (1.f - f0);
+  m.diffuse = textured_rgb(o, "diffuse_reflectance", Rgb(0.5f), folder, textures, w, &m.diffuse_texture) * (1.f - f0);
   if (alpha < 1e-3f) {
     m.specular = coat;
   } else {
@@ -96,21 +96,21 @@ Material plastic(const Object& o, const std::string& folder, LoadWarnings* w) {
 }
 
 Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
-                          LoadWarnings* w, int depth);
+                          LoadWarnings* w, TextureBinding* textures, int depth);
 
 }  // namespace
 
 Material default_bsdf() { return make_diffuse(Rgb(0.5f)); }
 
 Material make_bsdf(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
-                   LoadWarnings* w) {
-  return make_bsdf_nested(doc, node, named, folder, w, 0);
+                   LoadWarnings* w, TextureBinding* textures) {
+  return make_bsdf_nested(doc, node, named, folder, w, textures, 0);
 }
 
 namespace {
 
 Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
-                          LoadWarnings* w, int depth) {
+                          LoadWarnings* w, TextureBinding* textures, int depth) {
   // Wrappers nest; a bound keeps hostile files from exhausting the stack.
   if (depth > 16) throw Error(doc.loc(node), "BSDFs nested more than 16 deep");
   if (std::string(node.name()) == "ref") {
@@ -127,20 +127,22 @@ Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const
     for (const pugi::xml_node& r : o.children("ref")) inner.push_back(r);
     if (inner.empty()) throw Error(o.loc(), o.title() + " needs a nested <bsdf> or <ref>");
     if (inner.size() > 1) w->add(o.loc(), o.title() + ": different front and back BSDFs are not supported; the first is used on both sides");
-    m = make_bsdf_nested(doc, inner[0], named, folder, w, depth + 1);
+    m = make_bsdf_nested(doc, inner[0], named, folder, w, textures, depth + 1);
     if (t == "twosided") m.two_sided = true;
     else {
       w->add(o.loc(), o.title() + " is not supported: its nested BSDF is used alone");
       o.ignore_all();
     }
   } else if (t == "diffuse") {
-    m = make_diffuse(o.get_rgb("reflectance", Rgb(0.5f), folder, w));
+    int32_t texture = -1;
+    m = make_diffuse(textured_rgb(o, "reflectance", Rgb(0.5f), folder, textures, w, &texture));
+    m.diffuse_texture = texture;
   } else if (t == "conductor" || t == "roughconductor") {
     m = conductor(o, folder, w);
   } else if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric") {
     m = dielectric(o, folder, w);
   } else if (t == "plastic" || t == "roughplastic") {
-    m = plastic(o, folder, w);
+    m = plastic(o, folder, textures, w);
   } else {
     w->add(o.loc(), "BSDF type '" + t + "' not supported; using grey diffuse 0.5");
     o.ignore_all();

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "pathspace/io/load_warnings.h"
+#include "pathspace/io/mitsuba/mitsuba_textures.h"
 #include "pathspace/io/mitsuba/mitsuba_xml.h"
 #include "pathspace/materials/material.h"
 
@@ -16,9 +17,10 @@ namespace pathspace::mitsuba {
 // Materials defined with an id (<bsdf id="..."> at the top level), for <ref id="..."/>.
 using NamedMaterials = std::map<std::string, Material>;
 
-// Converts the <bsdf> element `node`; textures resolve against `folder`.
+// Converts the <bsdf> element `node`; textures resolve against `folder`. With `textures`, bitmap
+// textures on diffuse reflectances become image textures of textures->scene (else mean colours).
 Material make_bsdf(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
-                   LoadWarnings* w);
+                   LoadWarnings* w, TextureBinding* textures = nullptr);
 
 // Mitsuba's default BSDF for shapes without one: one-sided diffuse of reflectance 0.5.
 Material default_bsdf();

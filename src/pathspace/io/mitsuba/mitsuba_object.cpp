@@ -157,7 +157,7 @@ Rgb Object::texture_rgb(const pugi::xml_node& node, const std::string& name, con
       throw Error(loc, "texture file '" + file + "' not found (looked for " + path.string() + ")");
     Image image;
     try {
-      image = read_image(path.string());
+      image = read_image(path.string(), tex.get_bool("raw", false) ? LdrEncoding::linear : LdrEncoding::srgb);
     } catch (const Error& e) {
       throw Error(loc, "bitmap texture: " + std::string(e.what()));
     }
@@ -167,11 +167,11 @@ Rgb Object::texture_rgb(const pugi::xml_node& node, const std::string& name, con
     const double n = double(std::max<size_t>(1, image.pixels.size()));
     const Rgb mean(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
     if (!all_finite(mean)) throw Error(loc, "bitmap texture '" + file + "' holds NaN or infinite values");
-    if (tex.get_bool("raw", false)) w->add(loc, "bitmap texture '" + file + "': raw=true ignored (8-bit images are always sRGB-decoded)");
     tex.ignore({"filter_type", "wrap_mode", "to_uv", "format"});
     tex.warn_unused(w);
     w->add(loc, "bitmap texture '" + file + "' for '" + name + "' approximated by its mean colour (" + std::to_string(mean.r) + ", " +
-                    std::to_string(mean.g) + ", " + std::to_string(mean.b) + "): textures are not supported yet");
+                    std::to_string(mean.g) + ", " + std::to_string(mean.b) +
+                    "): only diffuse reflectances (diffuse, plastic) are textured");
     return mean;
   }
   if (tex.type() == "checkerboard") {

@@ -41,7 +41,8 @@ class Object {
   std::string get_string(const std::string& name, const std::string& fallback) const;
   Vec3 get_vector(const std::string& name, const Vec3& fallback) const;  // <point>/<vector>
   // rgb, srgb (decoded to linear), spectrum (constant, or wavelength:value pairs averaged, with a
-  // warning), float, or a nested or referenced texture (a bitmap's mean colour, with a warning).
+  // warning), float, or a nested or referenced texture (a bitmap's mean colour, with a warning;
+  // mitsuba_textures.h binds bitmaps where a material can use the image).
   Rgb get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w) const;
   // <transform name=...>: its translate/rotate/scale/matrix/lookat children, each applied after
   // the previous ones (M = op * M); identity when absent.

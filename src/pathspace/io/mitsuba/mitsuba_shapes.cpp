@@ -1,6 +1,8 @@
 // Mitsuba shape tessellation and placement (see mitsuba_shapes.h). Local shapes follow Mitsuba's
 // definitions: rectangle [-1,1]^2 at z = 0 facing +z, cube [-1,1]^3 facing out, disk of radius 1 at
-// z = 0 facing +z, sphere of `radius` around `center`.
+// z = 0 facing +z, sphere of `radius` around `center`. Their uvs are Mitsuba's, stored with
+// v flipped (v = 1 - v_mitsuba: Mitsuba's v = 0 is an image's top row, pathspace's its bottom row;
+// see mitsuba_textures.h), so a bitmap lands where Mitsuba puts it.
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
 
 #include <cmath>
@@ -19,12 +21,19 @@ constexpr int kSphereRings = 32;  // ellipsoids only; spheres stay analytic
 struct LocalMesh {
   std::vector<Vec3> positions;
   std::vector<uint32_t> indices;
+  std::vector<Point2> uvs;  // empty or one per position, pathspace convention (v up)
 };
+
+Point2 from_mitsuba_uv(float u, float v) { return {u, 1.f - v}; }
 
 // Appends the mesh transformed by m. `flip` swaps the winding (analytic shapes under a mirroring
 // transform, flip_normals). Zero-area emitting triangles are dropped: they cannot be sampled.
 void add_mesh(const LocalMesh& mesh, const Mat4& m, bool flip, uint32_t material, const Rgb& le, const FileLoc& loc, Scene* s) {
   const uint32_t base = uint32_t(s->positions.size());
+  if (!mesh.uvs.empty()) {
+    s->uvs.resize(base);  // vertices added before without uvs get (0, 0) here
+    s->uvs.insert(s->uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+  }
   for (const Vec3& p : mesh.positions) {
     const Vec3 q = m.point(p);
     if (!all_finite(q)) throw Error(loc, "shape vertex is NaN or infinite after to_world");
@@ -50,39 +59,54 @@ void add_mesh(const LocalMesh& mesh, const Mat4& m, bool flip, uint32_t material
   }
 }
 
+// Mitsuba's rectangle: uv = ((x + 1) / 2, (y + 1) / 2).
 LocalMesh rectangle() {
-  return {{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, {0, 1, 2, 2, 3, 0}};
-}
-
-LocalMesh cube() {
-  LocalMesh m;
-  // Each face: its normal axis and the two tangent axes ordered so that cross(u, v) = normal.
-  const int axes[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
-  for (const auto& a : axes)
-    for (float sign : {1.f, -1.f}) {
-      const uint32_t base = uint32_t(m.positions.size());
-      for (const auto& [u, v] : {std::pair{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}}) {
-        float p[3];
-        p[a[0]] = sign;
-        p[a[1]] = u * sign;  // mirroring one tangent keeps the winding counter-clockwise from outside
-        p[a[2]] = v;
-        m.positions.push_back(Vec3(p[0], p[1], p[2]));
-      }
-      for (uint32_t i : {0u, 1u, 2u, 2u, 3u, 0u}) m.indices.push_back(base + i);
-    }
+  LocalMesh m{{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, {0, 1, 2, 2, 3, 0}, {}};
+  for (const Vec3& p : m.positions) m.uvs.push_back(from_mitsuba_uv(0.5f * (p.x + 1.f), 0.5f * (p.y + 1.f)));
   return m;
 }
 
+// Mitsuba's cube: each face maps onto [0, 1]^2. Per face the corners c0..c3 (counter-clockwise seen
+// from outside) carry Mitsuba's uvs (0, 1), (1, 1), (1, 0), (0, 0); the face's edge c0 -> c1 is
+// Mitsuba's u axis.
+LocalMesh cube() {
+  // Corner signs (x, y, z) of the faces -y, +y, +x, +z, -x, -z in Mitsuba's order.
+  const int corners[6][4][3] = {{{1, -1, -1}, {1, -1, 1}, {-1, -1, 1}, {-1, -1, -1}},
+                                {{1, 1, -1}, {-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}},
+                                {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+                                {{1, -1, 1}, {1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}},
+                                {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
+                                {{1, 1, -1}, {1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}}};
+  const float uv[4][2] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  LocalMesh m;
+  for (const auto& face : corners) {
+    const uint32_t base = uint32_t(m.positions.size());
+    for (int i = 0; i < 4; ++i) {
+      m.positions.push_back(Vec3(float(face[i][0]), float(face[i][1]), float(face[i][2])));
+      m.uvs.push_back(from_mitsuba_uv(uv[i][0], uv[i][1]));
+    }
+    for (uint32_t i : {0u, 1u, 2u, 3u, 0u, 2u}) m.indices.push_back(base + i);
+  }
+  return m;
+}
+
+// Mitsuba's disk uv is (radius, angle / 2 pi). Each fan triangle has its own three vertices: the
+// centre takes the triangle's mid angle and the rim vertex at angle 2 pi has v = 1 (no seam).
 LocalMesh disk() {
   // The polygon's radius is enlarged so that its area equals the disk's (emitted power unchanged).
   const double n = kDiskSegments, r = std::sqrt(M_PI / (0.5 * n * std::sin(2.0 * M_PI / n)));
   LocalMesh m;
-  m.positions.push_back(Vec3(0, 0, 0));
   for (int i = 0; i < kDiskSegments; ++i) {
-    const double phi = 2.0 * M_PI * i / n;
-    m.positions.push_back(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), 0.f));
+    const uint32_t base = uint32_t(m.positions.size());
+    const double phi0 = 2.0 * M_PI * i / n, phi1 = 2.0 * M_PI * (i + 1) / n;
+    m.positions.push_back(Vec3(0, 0, 0));
+    m.positions.push_back(Vec3(float(r * std::cos(phi0)), float(r * std::sin(phi0)), 0.f));
+    m.positions.push_back(Vec3(float(r * std::cos(phi1)), float(r * std::sin(phi1)), 0.f));
+    m.uvs.push_back(from_mitsuba_uv(0.f, float((i + 0.5) / n)));
+    m.uvs.push_back(from_mitsuba_uv(1.f, float(i / n)));
+    m.uvs.push_back(from_mitsuba_uv(1.f, float((i + 1) / n)));
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
   }
-  for (uint32_t i = 0; i < uint32_t(kDiskSegments); ++i) m.indices.insert(m.indices.end(), {0u, 1 + i, 1 + (i + 1) % kDiskSegments});
   return m;
 }
 
@@ -113,24 +137,31 @@ std::filesystem::path resolve(const Object& o, const std::string& folder) {
 LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w) {
   const std::filesystem::path path = resolve(o, folder);
   const bool face_normals = o.get_bool("face_normals", false);
+  const bool flip_uv = o.type() == "obj" && o.get_bool("flip_tex_coords", true);
   LocalMesh m;
   try {
+    // Mitsuba reads PLY uvs as they are and flips OBJ ones unless flip_tex_coords is false.
     if (o.type() == "ply") {
       PlyMesh ply = read_ply(path.string());
       if (!ply.normals.empty() && !face_normals)
         w->add(o.loc(), o.title() + ": vertex normals are not used for shading yet (flat shading)");
       m.positions = std::move(ply.positions);
       m.indices = std::move(ply.indices);
+      for (const auto& uv : ply.uvs) m.uvs.push_back(from_mitsuba_uv(uv[0], uv[1]));
     } else {
       Scene tmp;  // the OBJ's own materials and emitters are replaced by the XML's
       load_obj_into(path.string(), w, &tmp);
       m.positions = std::move(tmp.positions);
       for (const Triangle& t : tmp.triangles) m.indices.insert(m.indices.end(), {t.v[0], t.v[1], t.v[2]});
+      if (!tmp.uvs.empty()) {
+        tmp.uvs.resize(m.positions.size());
+        for (const Point2& uv : tmp.uvs) m.uvs.push_back(flip_uv ? uv : Point2{uv.x, 1.f - uv.y});
+      }
     }
   } catch (const Error& e) {
     throw Error(o.loc(), o.title() + ": " + e.what());
   }
-  o.ignore({"face_normals", "flip_tex_coords", "max_smooth_angle", "vertex_count", "face_count"});
+  o.ignore({"face_normals", "max_smooth_angle", "vertex_count", "face_count"});
   return m;
 }
 
