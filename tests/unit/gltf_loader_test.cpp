@@ -260,9 +260,13 @@ TEST(GltfLoader, PunctualLights) {
   EXPECT_NEAR(p.value.r, 8.f, 1e-6f);
   EXPECT_NEAR(p.value.b, 2.f, 1e-6f);
   EXPECT_TRUE(l.warned("lights[0].range ignored"));
-  EXPECT_EQ(l.scene.lights[1].type, LightType::point);
-  EXPECT_NEAR(l.scene.lights[1].value.g, 3.f, 1e-6f);
-  EXPECT_TRUE(l.warned("spot light approximated by a point light"));
+  const Light& spot = l.scene.lights[1];
+  EXPECT_EQ(spot.type, LightType::spot);
+  EXPECT_NEAR(spot.value.g, 3.f, 1e-6f);
+  expect_near(spot.direction, Vec3(0, 0, -1));  // the node's -z
+  EXPECT_NEAR(spot.cos_total, std::cos(0.5f), 1e-6f);
+  EXPECT_NEAR(spot.cos_falloff, 1.f, 1e-6f);  // innerConeAngle defaults to 0
+  EXPECT_TRUE(l.warned("spot falloff approximated"));
   const Light& d = l.scene.lights[2];
   EXPECT_EQ(d.type, LightType::directional);
   // Rotation -90 degrees about x turns -z into -y: the light shines straight down.

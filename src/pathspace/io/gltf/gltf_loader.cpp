@@ -118,10 +118,18 @@ class SceneWalk {
     if (!all_finite(value) || !(std::min({value.r, value.g, value.b}) >= 0.f)) c_.fail(name + ": color * intensity is negative or not finite");
     if (l.range > 0.0) c_.warn(name + ".range ignored (no cutoff distance)");
     const Vec3 position = world.point(Vec3());
-    if (l.type == "point" || l.type == "spot") {
-      if (l.type == "spot")
-        c_.warn(name + ": spot light approximated by a point light of the same intensity (cone ignored: it lights all directions)");
+    if (l.type == "point") {
       scene_->add_point_light(position, value);  // candela taken as our intensity unit
+    } else if (l.type == "spot") {
+      // Along the node's -z; full intensity inside innerConeAngle, nothing beyond outerConeAngle. The
+      // spec's suggested fade (squared, linear in the cosine) becomes pbrt-v4's smoothstep in the cosine.
+      const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
+      if (!(outer > 0.0 && outer <= M_PI / 2) || !(inner >= 0.0 && inner < outer))
+        c_.fail(name + ".spot: need 0 <= innerConeAngle < outerConeAngle <= pi/2");
+      const Vec3 d = world.vector(Vec3(0, 0, -1));
+      if (!(length(d) > 0.f) || !all_finite(d)) c_.fail(name + ": its node's transform collapses the light direction");
+      c_.warn(name + ": spot falloff approximated by pbrt-v4's smoothstep in the cosine");
+      scene_->add_spot_light(position, d, value, float(std::cos(outer)), float(std::cos(inner)));
     } else if (l.type == "directional") {
       const Vec3 d = world.vector(Vec3(0, 0, -1));  // lights shine along their node's -z
       if (!(length(d) > 0.f) || !all_finite(d)) c_.fail(name + ": its node's transform collapses the light direction");
