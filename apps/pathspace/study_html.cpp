@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "error_colormap.h"
+#include "pathspace/base/base64.h"
 #include "pathspace/base/error.h"
 
 namespace pathspace::cli {
@@ -31,23 +32,6 @@ std::string escape(const std::string& text) {
   return s;
 }
 
-std::string base64(const std::string& bytes) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t a = uint8_t(bytes[i]);
-    const uint32_t b = i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0;
-    const uint32_t c = i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0;
-    const uint32_t v = (a << 16) | (b << 8) | c;
-    out += table[(v >> 18) & 63];
-    out += table[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? table[v & 63] : '=';
-  }
-  return out;
-}
-
 // Each PNG becomes one CSS class holding its data URI; <div>s of that class show it. An image used
 // by several figures (a reused run, the reference) is therefore embedded once.
 class ImageSheet {
@@ -61,7 +45,7 @@ class ImageSheet {
       if (!in) throw Error("study: cannot read '" + dir_ + "/" + path + "' for the HTML page");
       std::ostringstream bytes;
       bytes << in.rdbuf();
-      css_ += fmt::format(".{}{{background-image:url(data:image/png;base64,{})}}\n", it->second, base64(bytes.str()));
+      css_ += fmt::format(".{}{{background-image:url(data:image/png;base64,{})}}\n", it->second, base64_encode(bytes.str()));
     }
     const int h = width > 0 ? kThumbWidth * height / width : kThumbWidth;
     return fmt::format("<div class=\"im {}\" style=\"height:{}px\" role=\"img\" title=\"{}\" aria-label=\"{}\"></div>",
