@@ -52,5 +52,14 @@ TEST(PbrtCheckerboard, UnsupportedFormsUseTheMean) {
   EXPECT_THROW(load_world("Texture \"c\" \"spectrum\" \"checkerboard\" \"integer dimension\" 3\n", &w), Error);
 }
 
+TEST(PbrtMixTexture, ConstantsMixExactly) {
+  std::vector<std::string> w;
+  const Scene s = load_world("Texture \"a\" \"spectrum\" \"constant\" \"rgb value\" [ 1 0 0 ]\n"
+                             "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"a\" \"rgb tex2\" [ 0 0 1 ] \"float amount\" 0.25\n"
+                             "Material \"diffuse\" \"texture reflectance\" \"m\"\n" + kQuad, &w);
+  EXPECT_EQ(s.materials[s.triangles[0].material].diffuse, Rgb(0.75f, 0.f, 0.25f));
+  EXPECT_TRUE(w.empty()) << ::testing::PrintToString(w);
+}
+
 }  // namespace
 }  // namespace pathspace

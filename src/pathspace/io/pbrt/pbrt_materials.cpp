@@ -204,6 +204,12 @@ void add_texture(const Statement& st, const std::string& folder, TextureTable* t
     if (tex && scale) w->add(st.loc, "scale texture '" + name + "' of two image textures approximated by their mean colours' product");
   } else if (cls == "checkerboard") {
     value = add_checkerboard_texture(st, textures, w);
+  } else if (cls == "mix") {
+    // pbrt-v4: (1 - amount) tex1 + amount tex2; exact for constants, image inputs by their means.
+    if (image_param(st, "tex1", *textures) || image_param(st, "tex2", *textures) || image_param(st, "amount", *textures))
+      w->add(st.loc, "mix texture '" + name + "': image inputs approximated by their mean colours");
+    const float amount = average(spectrum_param(st, "amount", Rgb(0.5f), *textures, w));
+    value = spectrum_param(st, "tex1", Rgb(0.f), *textures, w) * (1.f - amount) + spectrum_param(st, "tex2", Rgb(1.f), *textures, w) * amount;
   } else {
     w->add(st.loc, "texture class '" + cls + "' not supported; texture '" + name + "' taken as constant 0.5");
     for (const Param& p : st.params) p.used = true;
