@@ -10,6 +10,7 @@
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/lights/light_emission.h"
 #include "pathspace/materials/bsdf.h"
@@ -80,14 +81,11 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   const MisHeuristic h = st.mis;
   const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
 
-  float select_prob;
-  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
-  if (!(select_prob > 0.f)) return 0;
-  const Light& light = scene.lights[li];
-  EmissionSample e;
-  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
-  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
-  if (!sample_emission(scene, light, up, ud, &e)) return 0;
+  LightPathStart start;
+  if (!start_light_path(scene, sampler, &start)) return 0;
+  const Light& light = *start.light;
+  const EmissionSample& e = start.emission;
+  const float select_prob = start.select_prob;
   const float emit_pdf_a = e.pdf_a * select_prob;  // of the origin (on the disk for infinite lights)
   const float emit_pdf = emit_pdf_a * e.pdf_w;     // of origin and direction
   const bool delta_light = e.delta_position || e.delta_direction;

@@ -10,6 +10,7 @@
 
 #include "pathspace/film/splat_film.h"
 #include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/lights/light_emission.h"
@@ -107,15 +108,11 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const PinholeCamera& cam = scene.camera;
 
-  float select_prob;
-  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
-  if (!(select_prob > 0.f)) return;
-  const Light& light = scene.lights[li];
-  EmissionSample e;
-  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
-  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
-  if (!sample_emission(scene, light, up, ud, &e)) return;
-  const float inv_select = 1.f / select_prob;
+  LightPathStart start;
+  if (!start_light_path(scene, sampler, &start)) return;
+  const Light& light = *start.light;
+  const EmissionSample& e = start.emission;
+  const float inv_select = 1.f / start.select_prob;
 
   // Path length 1: the emitter seen by the camera. Only area lights have a visible surface; point,
   // directional and environment lights are never hit by camera rays either (PT agrees).

@@ -12,6 +12,7 @@
 #include "pathspace/hashgrid/stochastic_hash_map_view.h"
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
@@ -295,15 +296,11 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
   using pclt_detail::projection_visible;
   if (scene.num_lights == 0) return;
   const PinholeCamera& cam = scene.camera;
-  float select_prob;
-  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
-  if (!(select_prob > 0.f)) return;
-  const Light& light = scene.lights[li];
-  EmissionSample e;
-  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
-  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
-  if (!sample_emission(scene, light, up, ud, &e)) return;
-  const float inv_select = 1.f / select_prob;
+  LightPathStart start;
+  if (!start_light_path(scene, sampler, &start)) return;
+  const Light& light = *start.light;
+  const EmissionSample& e = start.emission;
+  const float inv_select = 1.f / start.select_prob;
 
   if (is_area_light(light)) {  // EL, as LT
     Projection pr;

@@ -12,6 +12,7 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/path_counters.h"
 #include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
 #include "pathspace/lights/light_emission.h"
 #include "pathspace/materials/bsdf_layers.h"
@@ -203,16 +204,11 @@ template <typename Tracer>
 PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
                              const SppmSettings& settings, const SppmGatherView& gather, PathCounters* counters,
                              PhotonCounters* photons) {
-  if (scene.num_lights == 0) return;
-  float select_prob;
-  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &select_prob);
-  if (!(select_prob > 0.f)) return;
-  const Light& light = scene.lights[li];
-  EmissionSample e;
-  const Point2 u_pos{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
-  const Point2 u_dir{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
-  if (!sample_emission(scene, light, u_pos, u_dir, &e)) return;
-  Rgb beta = e.weight * (1.f / select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
+  LightPathStart start;
+  if (!start_light_path(scene, sampler, &start)) return;
+  const Light& light = *start.light;
+  const EmissionSample& e = start.emission;
+  Rgb beta = e.weight * (1.f / start.select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
   Ray ray = is_area_light(light) ? spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon) : Ray{e.p, e.d, 0.f, kInfinity};
   // The shortest camera side is one segment, so light paths longer than max - 1 cannot join.
   for (int segments = 1; segments < gather.max_segments; ++segments) {

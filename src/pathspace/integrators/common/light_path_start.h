@@ -1,0 +1,30 @@
+// The start of every light path (LT, BPT light subpaths, SPPM photons, PCLT): a light picked by the
+// scene's light selection (light_dims::kLightSelect) and an emission sampled from it (kEmitPos,
+// kEmitDir), so that all four integrators draw their light paths from the same random numbers.
+#pragma once
+
+#include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/lights/light_emission.h"
+#include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/scene_view.h"
+
+namespace pathspace {
+
+struct LightPathStart {
+  const Light* light = nullptr;
+  float select_prob = 0.f;  // probability of having picked `light`
+  EmissionSample emission;
+};
+
+// False when the scene has no light or the sampled emission carries nothing.
+PS_INLINE bool start_light_path(const SceneView& scene, const Sampler& sampler, LightPathStart* s) {
+  if (scene.num_lights == 0) return false;
+  const uint32_t li = scene.light_selection.sample(sampler.at(light_dims::kLightSelect), &s->select_prob);
+  if (!(s->select_prob > 0.f)) return false;
+  s->light = &scene.lights[li];
+  const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
+  const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
+  return sample_emission(scene, *s->light, up, ud, &s->emission);
+}
+
+}  // namespace pathspace
