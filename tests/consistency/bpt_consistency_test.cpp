@@ -36,20 +36,15 @@ using testing::apply_mask;
 using testing::Rendered;
 using testing::specular_first_hit_mask;
 
-Rendered render_with(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings, uint32_t passes,
-                     int threads, std::vector<NamedImage>* aovs = nullptr) {
-  return testing::render_integrator(scene, integrator, settings, passes, threads, aovs);
-}
-
 TEST(BptDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 48, 48);
   IntegratorSettings s;
   s.seed = 9;
   s.bpt.strategy_images = 3;
   std::vector<NamedImage> aovs1, aovs2;
-  const Rendered one = render_with(scene, "bpt", s, 3, 1, &aovs1);
-  const Rendered two = render_with(scene, "bpt", s, 3, 2, &aovs2);
-  const Rendered again = render_with(scene, "bpt", s, 3, 2);
+  const Rendered one = testing::render_integrator(scene, "bpt", s, 3, 1, &aovs1);
+  const Rendered two = testing::render_integrator(scene, "bpt", s, 3, 2, &aovs2);
+  const Rendered again = testing::render_integrator(scene, "bpt", s, 3, 2);
   size_t lit = 0;
   for (size_t i = 0; i < one.mean.size(); ++i) {
     ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "pixel " << i;
@@ -94,8 +89,8 @@ TEST_P(BptPtAgree, CornellVariant) {
   bpt.bpt.max_segments = c.max_segments;
   pt.seed = seed_base() + 302;
   pt.pt.max_segments = c.max_segments;
-  const Rendered a = render_with(scene, "bpt", bpt, c.bpt_passes, 0);
-  const Rendered b = render_with(scene, "pt", pt, c.other_passes, 0);
+  const Rendered a = testing::render_integrator(scene, "bpt", bpt, c.bpt_passes, 0);
+  const Rendered b = testing::render_integrator(scene, "pt", pt, c.other_passes, 0);
   expect_same_image(a, b, fmt::format("bpt-vs-pt-{}-{}", c.scene, c.max_segments));
 }
 
@@ -122,8 +117,8 @@ TEST_P(BptLtAgree, CornellVariant) {
   lt.seed = seed_base() + 402;
   lt.lt.light_paths = 4096;
   lt.lt.max_segments = c.max_segments;
-  Rendered a = render_with(scene, "bpt", bpt, c.bpt_passes, 0);
-  Rendered b = render_with(scene, "lt", lt, c.other_passes, 0);
+  Rendered a = testing::render_integrator(scene, "bpt", bpt, c.bpt_passes, 0);
+  Rendered b = testing::render_integrator(scene, "lt", lt, c.other_passes, 0);
   apply_mask(&a, mask);
   apply_mask(&b, mask);
   expect_same_image(a, b, fmt::format("bpt-vs-lt-{}-{}", c.scene, c.max_segments));
@@ -142,8 +137,8 @@ TEST(BptHeuristics, BalanceAndPowerAgree) {
   power.seed = seed_base() + 501;
   balance.seed = seed_base() + 502;
   balance.bpt.mis = MisHeuristic::balance;
-  const Rendered a = render_with(scene, "bpt", power, 512, 0);
-  const Rendered b = render_with(scene, "bpt", balance, 512, 0);
+  const Rendered a = testing::render_integrator(scene, "bpt", power, 512, 0);
+  const Rendered b = testing::render_integrator(scene, "bpt", balance, 512, 0);
   expect_same_image(a, b, "bpt-power-vs-balance-gbs_c");
 }
 

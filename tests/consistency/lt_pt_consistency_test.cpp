@@ -36,21 +36,16 @@ using testing::apply_mask;
 using testing::Rendered;
 using testing::specular_first_hit_mask;
 
-Rendered render_with(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings, uint32_t passes,
-                     int threads, std::vector<NamedImage>* aovs = nullptr) {
-  return testing::render_integrator(scene, integrator, settings, passes, threads, aovs);
-}
-
 TEST(LtDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 48, 48);
   IntegratorSettings s;
   s.seed = 9;
-  const Rendered one = render_with(scene, "lt", s, 3, 1);
-  const Rendered two = render_with(scene, "lt", s, 3, 2);
-  const Rendered again = render_with(scene, "lt", s, 3, 2);
+  const Rendered one = testing::render_integrator(scene, "lt", s, 3, 1);
+  const Rendered two = testing::render_integrator(scene, "lt", s, 3, 2);
+  const Rendered again = testing::render_integrator(scene, "lt", s, 3, 2);
   s.lt.filter = LtFilter::gaussian;  // many splats per vertex, to more pixels
-  const Rendered g1 = render_with(scene, "lt", s, 2, 1);
-  const Rendered g2 = render_with(scene, "lt", s, 2, 2);
+  const Rendered g1 = testing::render_integrator(scene, "lt", s, 2, 1);
+  const Rendered g2 = testing::render_integrator(scene, "lt", s, 2, 2);
   size_t lit = 0;
   for (size_t i = 0; i < one.mean.size(); ++i) {
     ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "pixel " << i;
@@ -91,8 +86,8 @@ TEST_P(LtPtAgree, CornellVariant) {
   lt.lt.max_segments = c.max_segments;
   pt.seed = seed_base() + 102;
   pt.pt.max_segments = c.max_segments;
-  Rendered a = render_with(scene, "lt", lt, c.lt_passes, 0);
-  Rendered b = render_with(scene, "pt", pt, c.pt_passes, 0);
+  Rendered a = testing::render_integrator(scene, "lt", lt, c.lt_passes, 0);
+  Rendered b = testing::render_integrator(scene, "pt", pt, c.pt_passes, 0);
   apply_mask(&a, mask);
   apply_mask(&b, mask);
   expect_same_image(a, b, fmt::format("lt-vs-pt-{}-{}", c.scene, c.max_segments));
@@ -156,7 +151,7 @@ TEST(LtPtAgreeShadingNormals, BumpedCornellBox) {
   const Rendered b = pt_with_tracer(scene, tracer, 1024, seed_base() + 202);
   expect_same_image(a, b, "lt-vs-pt-shading-normals");
   // The bumped normals must change the image noticeably, or the test would prove nothing.
-  const Rendered flat = render_with(scene, "pt", IntegratorSettings{}, 1024, 0);
+  const Rendered flat = testing::render_integrator(scene, "pt", IntegratorSettings{}, 1024, 0);
   const testing::ImageZTest z = testing::image_z_test(flat.mean, flat.variance, b.mean, b.variance, 1e-3, kAlphaImage);
   EXPECT_FALSE(z.passed()) << "shading normals had no visible effect";
 }
