@@ -37,7 +37,7 @@ std::vector<Ray> incoherent_rays() {
 
 std::vector<Ray> camera_rays() {
   std::vector<Ray> rays(kRays);
-  const PinholeCamera& c = scene().camera;
+  const PerspectiveCamera& c = scene().camera;
   for (size_t i = 0; i < kRays; ++i) {
     const size_t p = i % (512 * 512);
     rays[i] = c.generate_ray(float(p % 512) + 0.5f, float(p / 512) + 0.5f);

@@ -37,7 +37,7 @@ Scene sphere_on_plane(EnvironmentImage image, const Rgb& value) {
   s.add_sphere(Vec3(0, 0, 0.7f), 0.7f, ball);
   if (image.empty()) s.add_environment_light(value);
   else s.add_environment_map(std::move(image), value);
-  s.camera = make_pinhole_camera(Vec3(0, -4, 2.5f), Vec3(0, 1, -0.45f), Vec3(0, 0, 1), 40.f, 20, 20);
+  s.camera = make_perspective_camera(Vec3(0, -4, 2.5f), Vec3(0, 1, -0.45f), Vec3(0, 0, 1), 40.f, 20, 20);
   s.finalize();
   return s;
 }

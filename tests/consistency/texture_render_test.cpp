@@ -47,7 +47,7 @@ Scene textured_quad_scene(int resolution) {
   s.add_quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), mat);
   s.uvs = {Point2{0, 0}, Point2{1, 0}, Point2{1, 1}, Point2{1, 1}, Point2{0, 1}, Point2{0, 0}};
   s.add_environment_light(Rgb(1.f));
-  s.camera = make_pinhole_camera(Vec3(0.05f, -0.03f, 3.f), Vec3(0, 0, -1), Vec3(0, 1, 0), 30.f, resolution, resolution);
+  s.camera = make_perspective_camera(Vec3(0.05f, -0.03f, 3.f), Vec3(0, 0, -1), Vec3(0, 1, 0), 30.f, resolution, resolution);
   s.finalize();
   return s;
 }

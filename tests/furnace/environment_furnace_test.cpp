@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "pathspace/camera/pinhole.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
 
@@ -71,7 +71,7 @@ Scene plane_scene(EnvironmentImage image, const Rgb& scale) {
   s.add_quad(Vec3(-e, -e, 0), Vec3(e, -e, 0), Vec3(e, e, 0), Vec3(-e, e, 0), m);
   if (image.empty()) s.add_environment_light(scale);
   else s.add_environment_map(std::move(image), scale);
-  s.camera = make_pinhole_camera(Vec3(0, 0, 1), Vec3(0.1f, 0.2f, -1.f), Vec3(0, 1, 0), 30.f, 16, 16);
+  s.camera = make_perspective_camera(Vec3(0, 0, 1), Vec3(0.1f, 0.2f, -1.f), Vec3(0, 1, 0), 30.f, 16, 16);
   s.finalize();
   return s;
 }

@@ -131,7 +131,7 @@ void expect_flux(const Scene& scene, double expected) {
 }
 
 Scene finalized(Scene s) {
-  s.camera = make_pinhole_camera(Vec3(0, -5, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 45.f, 8, 8);
+  s.camera = make_perspective_camera(Vec3(0, -5, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 45.f, 8, 8);
   s.finalize();
   return s;
 }

@@ -37,7 +37,7 @@ Material diffuse_mirror(float a_d, float a_s) {
 }
 
 void inside_camera(Scene& s) {
-  s.camera = make_pinhole_camera(Vec3(0.1f, -0.2f, 0.05f), Vec3(0.3f, 1.f, 0.2f), Vec3(0, 0, 1), 90.f, kResolution, kResolution);
+  s.camera = make_perspective_camera(Vec3(0.1f, -0.2f, 0.05f), Vec3(0.3f, 1.f, 0.2f), Vec3(0, 0, 1), 90.f, kResolution, kResolution);
   s.ray_epsilon = 1e-4f;
   s.max_path_segments = 1 << 20;  // effectively unlimited: Russian roulette ends paths
 }

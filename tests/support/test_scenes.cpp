@@ -10,7 +10,7 @@ void add_facing_quad(Scene& s, Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Vec3& inwar
 }
 
 void inside_camera(Scene& s, int resolution) {
-  s.camera = make_pinhole_camera(Vec3(0.1f, -0.2f, 0.05f), Vec3(0.3f, 1.f, 0.2f), Vec3(0, 0, 1), 90.f, resolution, resolution);
+  s.camera = make_perspective_camera(Vec3(0.1f, -0.2f, 0.05f), Vec3(0.3f, 1.f, 0.2f), Vec3(0, 0, 1), 90.f, resolution, resolution);
   s.ray_epsilon = 1e-4f;
   s.max_path_segments = 1 << 20;  // effectively unlimited: Russian roulette ends paths
 }
@@ -66,7 +66,7 @@ Scene make_plane_under_sky(float albedo, float sky, int resolution) {
   const float e = 1000.f;
   add_facing_quad(s, Vec3(-e, -e, 0), Vec3(e, -e, 0), Vec3(e, e, 0), Vec3(-e, e, 0), Vec3(0, 0, 1), m, Rgb());
   s.add_environment_light(Rgb(sky));
-  s.camera = make_pinhole_camera(Vec3(0, 0, 1), Vec3(0.1f, 0.2f, -1.f), Vec3(0, 1, 0), 60.f, resolution, resolution);
+  s.camera = make_perspective_camera(Vec3(0, 0, 1), Vec3(0.1f, 0.2f, -1.f), Vec3(0, 1, 0), 60.f, resolution, resolution);
   s.ray_epsilon = 1e-4f;
   s.finalize();
   return s;

@@ -15,9 +15,9 @@ void expect_dir(const Vec3& d, const Vec3& expected) {
   EXPECT_NEAR(d.z, expected.z, 2e-6f);
 }
 
-TEST(PinholeCamera, CornellCheckValues) {
+TEST(PerspectiveCamera, CornellCheckValues) {
   const Scene scene = make_builtin_scene("cornell-box", 512, 512);
-  const PinholeCamera& c = scene.camera;
+  const PerspectiveCamera& c = scene.camera;
   expect_dir(c.direction(0.f, 0.f), Vec3(-0.3513228f, 0.8834083f, 0.3101000f));
   expect_dir(c.direction(256.f, 256.f), Vec3(0.00688625313f, 0.998505473f, -0.0542161278f));
   expect_dir(c.direction(512.f, 512.f), Vec3(0.3632062f, 0.8397255f, -0.4036613f));
@@ -28,8 +28,8 @@ TEST(PinholeCamera, CornellCheckValues) {
   EXPECT_NEAR(1.f / std::sqrt(c.pixel_area()), 618.0387f, 1e-3f);
 }
 
-TEST(PinholeCamera, RasterRoundTrip) {
-  const PinholeCamera c = make_pinhole_camera(Vec3(1, 2, 3), Vec3(0.2f, 1, -0.1f), Vec3(0, 0, 1), 60.f, 320, 200);
+TEST(PerspectiveCamera, RasterRoundTrip) {
+  const PerspectiveCamera c = make_perspective_camera(Vec3(1, 2, 3), Vec3(0.2f, 1, -0.1f), Vec3(0, 0, 1), 60.f, 320, 200);
   Pcg32 rng(1, 1);
   for (int i = 0; i < 10000; ++i) {
     const float rx = rng.next_float() * 320.f, ry = rng.next_float() * 200.f;
@@ -45,8 +45,8 @@ TEST(PinholeCamera, RasterRoundTrip) {
 
 // pdf_direction integrates to 1 over the image's solid angle and importance integrates to
 // 1 over one pixel's directions (Monte Carlo over uniform directions in a cone covering the image).
-TEST(PinholeCamera, PdfAndImportanceNormalisation) {
-  const PinholeCamera c = make_pinhole_camera(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 50.f, 8, 6);
+TEST(PerspectiveCamera, PdfAndImportanceNormalisation) {
+  const PerspectiveCamera c = make_perspective_camera(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 50.f, 8, 6);
   const float cos_max = 0.7f;  // a cone containing the whole frustum (corner ~cos 0.86)
   const Frame f(c.forward);
   Pcg32 rng(3, 4);
@@ -65,8 +65,8 @@ TEST(PinholeCamera, PdfAndImportanceNormalisation) {
   EXPECT_NEAR(we_sum / n, 1.0, 0.03);
 }
 
-TEST(PinholeCamera, ConnectionMatchesImportance) {
-  const PinholeCamera c = make_pinhole_camera(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 45.f, 64, 64);
+TEST(PerspectiveCamera, ConnectionMatchesImportance) {
+  const PerspectiveCamera c = make_perspective_camera(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 45.f, 64, 64);
   const Vec3 p(0.3f, 4.f, -0.2f);
   float rx, ry, dist, factor;
   Vec3 wi;

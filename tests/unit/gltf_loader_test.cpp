@@ -111,7 +111,7 @@ TEST(GltfLoader, CameraLooksDownMinusZWithYUp) {
                            R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"aspectRatio":2.0,"znear":0.1}}],"meshes":[)" +
                            s.triangle_mesh() + "]";
   const Loaded l = load_text(dir, "c.gltf", s.b.gltf(rest));
-  const PinholeCamera& c = l.scene.camera;
+  const PerspectiveCamera& c = l.scene.camera;
   EXPECT_EQ(c.width, 1024);
   EXPECT_EQ(c.height, 512);
   expect_near(c.position, Vec3(0, 0, 5));

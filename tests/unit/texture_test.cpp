@@ -7,7 +7,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
-#include "pathspace/camera/pinhole.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/texture_file.h"
 #include "pathspace/scene/shading_material.h"
@@ -90,7 +90,7 @@ TEST(TextureFiles, PngIsSrgbDecodedUnlessLinear) {
   EXPECT_THROW(files.add(&scene, dir.file("missing.png"), LdrEncoding::srgb), Error);
 }
 
-PinholeCamera test_camera() { return make_pinhole_camera(Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8); }
+PerspectiveCamera test_camera() { return make_perspective_camera(Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8); }
 
 TEST(SurfaceAttributes, TriangleUvAndShadingNormalAreInterpolated) {
   Scene s;

@@ -44,7 +44,7 @@ Rgb voxel_colour(const VoxelKey& k) {
 
 }  // namespace
 
-HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PinholeCamera& camera, size_t pixels)
+HashedFilter::HashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels)
     : settings_(settings),
       width_(camera.width),
       height_(camera.height),

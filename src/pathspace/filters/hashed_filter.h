@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "pathspace/camera/pinhole.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "pathspace/film/image.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/filters/path_space_filter.h"
@@ -38,7 +38,7 @@ enum class FilterAov { voxel, count, level, probes };
 
 class HashedFilter final : public PathSpaceFilter {
  public:
-  HashedFilter(const HashedFilterSettings& settings, const PinholeCamera& camera, size_t pixels);
+  HashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
 
   const char* name() const override { return "hashed"; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;

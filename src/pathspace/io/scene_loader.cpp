@@ -42,9 +42,9 @@ bool is_scene_file(const std::string& path) {
   return ext == ".pbrt" || ext == ".xml" || ext == ".ply" || ext == ".obj" || ext == ".gltf" || ext == ".glb";
 }
 
-PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up, float fov_degrees,
+PerspectiveCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up, float fov_degrees,
                                int width, int height) {
-  PinholeCamera c;
+  PerspectiveCamera c;
   c.position = position;
   c.forward = normalize(forward);
   c.right = normalize(right);
@@ -62,7 +62,7 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   if (!place && !o.fov_degrees) return;
   const float fov = o.fov_degrees.value_or(kDefaultFov);
   if (!(fov > 0.f && fov < 180.f)) throw Error("--fov must be between 0 and 180 degrees");
-  PinholeCamera& c = scene->camera;
+  PerspectiveCamera& c = scene->camera;
   if (!place) {  // only the field of view changes
     c = make_file_camera(c.position, c.forward, c.right, c.up, fov, width, height);
     return;

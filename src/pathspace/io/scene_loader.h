@@ -37,7 +37,7 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::
 // A camera looking from `position` along `forward`, raster right = `right`, up = `up` (unit vectors
 // not required to form a right-handed frame: pbrt cameras are left-handed), with `fov_degrees`
 // spanning the shorter image axis.
-PinholeCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up,
+PerspectiveCamera make_file_camera(const Vec3& position, const Vec3& forward, const Vec3& right, const Vec3& up,
                                float fov_degrees, int width, int height);
 
 // Applies the camera options of `o` (position/target/up/fov), or frames the scene's bounds when

@@ -36,7 +36,7 @@ Scene make_builtin_scene(const std::string& name_or_id, int width, int height) {
 Scene make_cornell_box(unsigned mask, int width, int height) {
   Scene scene;
   // §2: camera. SmallVCM uses the same tan for x and y (square_pixels = false).
-  scene.camera = make_pinhole_camera(Vec3(-0.0439815f, -4.12529f, 0.222539f), Vec3(0.00688625f, 0.998505f, -0.0542161f),
+  scene.camera = make_perspective_camera(Vec3(-0.0439815f, -4.12529f, 0.222539f), Vec3(0.00688625f, 0.998505f, -0.0542161f),
                                      Vec3(3.73896e-4f, 0.0542148f, 0.998529f), 45.f, width, height, false);
   scene.ray_epsilon = 1e-3f;     // §6 (applied along the normal, see geometry/ray.h)
   scene.max_path_segments = 10;  // §6

@@ -28,7 +28,7 @@ class Scene {
   std::vector<ImageTexture> textures;  // referenced by Material::diffuse_texture etc.
   std::vector<Light> lights;
   EnvironmentImage environment_image;  // the environment light's image, or empty (constant)
-  PinholeCamera camera;
+  PerspectiveCamera camera;
   float ray_epsilon = 1e-4f;
   int max_path_segments = 10;
   LightSelection light_selection = LightSelection::uniform;

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "pathspace/camera/pinhole.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "pathspace/geometry/shapes.h"
 #include "pathspace/lights/environment_map.h"
 #include "pathspace/lights/light.h"
@@ -32,7 +32,7 @@ struct SceneView {
   DiscreteView light_selection;     // probability of choosing each light for NEE
   int32_t environment_light = -1;   // index of the environment light, or -1
   EnvironmentMapView environment_map;  // its image (texels null: constant radiance)
-  PinholeCamera camera;
+  PerspectiveCamera camera;
   BoundingSphere bounds;            // of the geometry; used by infinite lights
   float ray_epsilon = 1e-4f;        // ray offset (scene scale)
   int max_path_segments = 10;       // the scene's path length limit (camera ray = segment 1)

@@ -54,7 +54,7 @@ PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const V
   return sphere_normal(scene.spheres[l.shape], p);
 }
 
-PS_INLINE uint32_t raster_pixel(const PinholeCamera& cam, float rx, float ry) {
+PS_INLINE uint32_t raster_pixel(const PerspectiveCamera& cam, float rx, float ry) {
   const int i = min_int(int(rx), cam.width - 1), j = min_int(int(ry), cam.height - 1);
   return uint32_t(i) + uint32_t(j) * uint32_t(cam.width);
 }
@@ -77,7 +77,7 @@ template <typename Tracer>
 PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const BptSettings& st,
                               int max_segments, const BptFilms& films, PathCounters* counters, LightVertex* verts) {
   if (scene.num_lights == 0) return 0;
-  const PinholeCamera& cam = scene.camera;
+  const PerspectiveCamera& cam = scene.camera;
   const MisHeuristic h = st.mis;
   const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
 
@@ -312,7 +312,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
   using namespace bpt_detail;
   const int max_segments = min_int(st.max_segments > 0 ? st.max_segments : scene.max_path_segments, kBptMaxSegments);
   const MisHeuristic h = st.mis;
-  const PinholeCamera& cam = scene.camera;
+  const PerspectiveCamera& cam = scene.camera;
   LightVertex verts[kBptMaxSegments];
   const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, films, counters, verts);
 

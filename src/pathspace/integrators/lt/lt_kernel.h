@@ -22,7 +22,7 @@ namespace pathspace {
 
 namespace lt_detail {
 
-// A point projected onto the image plane. Unlike PinholeCamera::connect, the raster position is
+// A point projected onto the image plane. Unlike PerspectiveCamera::connect, the raster position is
 // not clipped to the image: a wide filter lets points just outside it reach border pixels.
 struct Projection {
   float rx = 0.f, ry = 0.f;
@@ -31,7 +31,7 @@ struct Projection {
   float factor = 0.f; // We cos_cam / dist^2 = 1 / (A_pixel cos^3 theta dist^2) (eq. 4 with A_p)
 };
 
-PS_INLINE bool project(const PinholeCamera& cam, const Vec3& p, Projection* out) {
+PS_INLINE bool project(const PerspectiveCamera& cam, const Vec3& p, Projection* out) {
   const Vec3 to_cam = cam.position - p;
   const float d2 = length_squared(to_cam);
   if (!(d2 > 0.f)) return false;
@@ -106,7 +106,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   using namespace lt_detail;
   if (scene.num_lights == 0) return;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
-  const PinholeCamera& cam = scene.camera;
+  const PerspectiveCamera& cam = scene.camera;
 
   LightPathStart start;
   if (!start_light_path(scene, sampler, &start)) return;

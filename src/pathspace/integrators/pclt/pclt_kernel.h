@@ -252,7 +252,7 @@ namespace pclt_detail {
 template <typename Tracer>
 PS_HD bool projection_visible(const SceneView& scene, const Tracer& tracer, const PcltLightView& lv, const Vec3& p,
                               const Vec3& ng, const lt_detail::Projection& pr, PathCounters* counters) {
-  const PinholeCamera& cam = scene.camera;
+  const PerspectiveCamera& cam = scene.camera;
   if (lv.visibility != PcltVisibility::shadow_ray && pr.rx >= 0.f && pr.rx < float(cam.width) && pr.ry >= 0.f &&
       pr.ry < float(cam.height)) {
     const size_t pixel = size_t(min_int(int(pr.rx), cam.width - 1)) + size_t(min_int(int(pr.ry), cam.height - 1)) * size_t(cam.width);
@@ -295,7 +295,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
   using namespace lt_detail;
   using pclt_detail::projection_visible;
   if (scene.num_lights == 0) return;
-  const PinholeCamera& cam = scene.camera;
+  const PerspectiveCamera& cam = scene.camera;
   LightPathStart start;
   if (!start_light_path(scene, sampler, &start)) return;
   const Light& light = *start.light;

@@ -176,7 +176,7 @@ void set_camera(const Context& c, const SceneWalk& walk, const SceneLoadOptions&
   const Vec3 forward = m.vector(Vec3(0, 0, -1)), up = m.vector(Vec3(0, 1, 0));
   const Vec3 right = cross(forward, up);
   if (!(length(right) > 0.f) || !all_finite(right)) c.fail(name + ": its node's transform is degenerate");
-  PinholeCamera& pc = scene->camera;
+  PerspectiveCamera& pc = scene->camera;
   pc = make_file_camera(m.point(Vec3()), forward, right, cross(normalize(right), normalize(forward)), 90.f, width, height);
   pc.tan_y = float(std::tan(yfov * 0.5));  // yfov is vertical whatever the image's aspect
   pc.tan_x = pc.tan_y * float(width) / float(height);

@@ -1,5 +1,5 @@
-// Pinhole camera: raster mapping, ray generation, importance We and its pdfs, and the camera
-// connection used by light tracing, BPT and PCLT (PCLT paper eq. 4). Conventions: raster x right,
+// Perspective camera (a pinhole for now): raster mapping, ray generation, importance We and its
+// pdfs, and the camera connection used by light tracing, BPT and PCLT (PCLT paper eq. 4). Conventions: raster x right,
 // y down, pixel (i, j) covers [i, i+1) x [j, j+1) (docs/conventions.md; cornell-variants.md §2).
 //
 // The image plane sits at distance 1 in front of the pinhole and spans [-tan_x, tan_x] x
@@ -13,7 +13,7 @@
 
 namespace pathspace {
 
-struct PinholeCamera {
+struct PerspectiveCamera {
   Vec3 position;
   Vec3 forward;  // unit view axis
   Vec3 right;    // unit, raster +x
@@ -84,9 +84,9 @@ struct PinholeCamera {
 // Camera from position, look direction, up hint and the horizontal full field of view.
 // `square_pixels` = false reproduces SmallVCM's convention: the same tan for x and y
 // (stretched pixels when W != H; cornell-variants.md §2).
-inline PinholeCamera make_pinhole_camera(const Vec3& position, const Vec3& forward_hint, const Vec3& up_hint,
+inline PerspectiveCamera make_perspective_camera(const Vec3& position, const Vec3& forward_hint, const Vec3& up_hint,
                                          float hfov_degrees, int width, int height, bool square_pixels = true) {
-  PinholeCamera c;
+  PerspectiveCamera c;
   c.position = position;
   c.forward = normalize(forward_hint);
   c.right = normalize(cross(c.forward, up_hint));
