@@ -60,32 +60,50 @@ void expect_same_image(const Rendered& a, const Rendered& b, const std::string& 
   write_image(dir + "/" + what + "-" + name_b + ".exr", b.mean);
 }
 
+namespace {
+// Lens samples the probe rays go through: the centre for a pinhole; for a thin lens the centre and
+// 8 points near the rim (concentric map of a 3x3 grid reaching 0.96 of the radius), since a pixel
+// integrates over the whole lens.
+std::vector<Point2> lens_probes(const PerspectiveCamera& c) {
+  if (c.is_pinhole()) return {Point2{0.5f, 0.5f}};
+  std::vector<Point2> u;
+  for (int k = 0; k < 9; ++k) u.push_back(Point2{0.02f + 0.48f * float(k % 3), 0.02f + 0.48f * float(k / 3)});
+  return u;
+}
+}  // namespace
+
 std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel) {
   const SceneView v = scene.view();
+  const std::vector<Point2> lens = lens_probes(v.camera);
   std::vector<bool> mask(size_t(v.camera.width) * size_t(v.camera.height), false);
   for (int j = 0; j < v.camera.height; ++j)
     for (int i = 0; i < v.camera.width; ++i)
-      for (int k = 0; k < 9; ++k) {
-        SurfaceHit hit;
-        const Ray ray = v.camera.generate_ray(float(i) + (0.05f + 0.45f * float(k % 3)), float(j) + (0.05f + 0.45f * float(k / 3)));
-        if (accel.intersect(ray, &hit) && !bsdf_has_non_delta(v.materials[hit.material]))
-          mask[size_t(i) + size_t(j) * size_t(v.camera.width)] = true;
-      }
+      for (int k = 0; k < 9; ++k)
+        for (const Point2& u : lens) {
+          SurfaceHit hit;
+          const Ray ray = v.camera.generate_ray(float(i) + (0.05f + 0.45f * float(k % 3)), float(j) + (0.05f + 0.45f * float(k / 3)), u);
+          if (accel.intersect(ray, &hit) && !bsdf_has_non_delta(v.materials[hit.material]))
+            mask[size_t(i) + size_t(j) * size_t(v.camera.width)] = true;
+        }
   return mask;
 }
 
 std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling) {
   const SceneView view = scene.view();
   const int w = scene.camera.width, h = scene.camera.height;
+  const std::vector<Point2> lens = lens_probes(view.camera);
+  const int probes = 16 * int(lens.size());
   std::vector<bool> keep(size_t(w) * size_t(h), true);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       bool ok = true;
       Vec3 n0;
       uint32_t m0 = 0;
-      for (int k = 0; k < 16 && ok; ++k) {
+      for (int k = 0; k < probes && ok; ++k) {
         SurfaceHit hit;
-        const Ray ray = view.camera.generate_ray(float(x) + (float(k % 4) + 0.5f) / 4.f, float(y) + (float(k / 4) + 0.5f) / 4.f);
+        const int r = k % 16;
+        const Ray ray = view.camera.generate_ray(float(x) + (float(r % 4) + 0.5f) / 4.f, float(y) + (float(r / 4) + 0.5f) / 4.f,
+                                                 lens[size_t(k / 16)]);
         if (!accel.intersect(ray, &hit)) {
           ok = false;
           break;

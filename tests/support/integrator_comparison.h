@@ -34,7 +34,8 @@ void expect_same_image(const Rendered& a, const Rendered& b, const std::string& 
                        const std::string& name_a = "a", const std::string& name_b = "b");
 
 // Pixels where any of 3x3 probe rays first hits a surface without a non-delta lobe (mirror, glass):
-// light paths cannot reach the camera through those.
+// light paths cannot reach the camera through those. With a thin lens each probe goes through 9
+// lens points (centre and near the rim).
 std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel);
 
 // SPPM's "smooth pixel" mask (sppm_pt_consistency_test.cpp, gathering_bpt_consistency_test.cpp): true where
@@ -42,6 +43,7 @@ std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel
 // non-emitting material, and 8 probe rays along that plane from each hit travel `reach` unoccluded,
 // i.e. where a gather ball of radius <= reach sees one flat surface (no edges, contacts, curved or
 // delta surfaces). With exclude_ceiling, pixels that see a downward-facing surface are dropped too.
+// With a thin lens the 4x4 primary rays go through 9 lens points each (a pixel sees a blend).
 std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling);
 
 // The kept pixels (keep[i]) as a one-row image, so that the z-test counts only those.

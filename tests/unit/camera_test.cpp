@@ -68,14 +68,17 @@ TEST(PerspectiveCamera, PdfAndImportanceNormalisation) {
 TEST(PerspectiveCamera, ConnectionMatchesImportance) {
   const PerspectiveCamera c = make_perspective_camera(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 45.f, 64, 64);
   const Vec3 p(0.3f, 4.f, -0.2f);
-  float rx, ry, dist, factor;
-  Vec3 wi;
-  ASSERT_TRUE(c.connect(p, &rx, &ry, &wi, &dist, &factor));
+  CameraProjection pr;
+  ASSERT_TRUE(c.connect(p, Point2{0.3f, 0.7f}, &pr));  // a pinhole ignores the lens sample
   const Vec3 d = normalize(p);
-  EXPECT_NEAR(dist, length(p), 1e-5f);
-  EXPECT_NEAR(wi.x, -d.x, 1e-6f);
+  EXPECT_NEAR(pr.dist, length(p), 1e-5f);
+  EXPECT_NEAR(pr.wi.x, -d.x, 1e-6f);
   // factor = We cos_cam / dist^2
-  EXPECT_NEAR(factor, c.importance(d) * dot(d, c.forward) / (dist * dist), 1e-3f * factor);
+  EXPECT_NEAR(pr.factor, c.importance(d) * dot(d, c.forward) / (pr.dist * pr.dist), 1e-3f * pr.factor);
+  float rx, ry;
+  ASSERT_TRUE(c.raster_from_direction(d, &rx, &ry));
+  EXPECT_EQ(pr.rx, rx);
+  EXPECT_EQ(pr.ry, ry);
 }
 
 }  // namespace

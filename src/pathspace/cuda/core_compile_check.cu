@@ -4,6 +4,7 @@
 // fails the build early. Nothing here runs; no GPU is needed.
 #include "pathspace/hashing/voxel_hash_table_view.h"
 #include "pathspace/integrators/bpt/bpt_kernel.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 
@@ -19,7 +20,7 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Rgb* out,
   if (i >= n) return;
   PathCounters counters;
   const Sampler sampler(0, i, 0);
-  const Ray ray = scene.camera.generate_ray(float(i % 16) + 0.5f, float(i / 16) + 0.5f);
+  const Ray ray = sample_camera_ray(scene.camera, sampler, i);  // pinhole or thin lens
   PathSample sample;
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample);
   out[i] = sample.value();

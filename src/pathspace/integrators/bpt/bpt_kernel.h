@@ -4,10 +4,13 @@
 // (t = 1, splatted as in lt_kernel.h) — with MIS weights from the recursive quantities dVCM / dVC of
 // Georgiev et al. 2012 (VCM tech. report, eqs. 31-47, merging terms dropped), as SmallVCM's BPT does.
 // Throughput follows Veach 1997 (§10.2); light subpaths use the adjoint shading-normal factor (§5.3).
+// Thin lens: the camera vertex is the sampled lens point; every t = 1 connection samples its own
+// lens point with the same density 1 / A_lens, which cancels from the weights (perspective_camera.h).
 #pragma once
 
 #include "pathspace/film/splat_film.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
@@ -93,17 +96,16 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   // s = 1, t = 1: the emitter point seen by the camera. Its rival is s = 0 (the camera ray hits the
   // point, density camera_pdf_a per camera sample) against n_light light paths.
   if (is_area_light(light)) {
-    float rx, ry, dist, factor;
-    Vec3 wi;
-    if (cam.connect(e.p, &rx, &ry, &wi, &dist, &factor)) {
-      const Rgb le = area_light_radiance(light, e.ng, wi);
+    CameraProjection pr;
+    if (cam.connect(e.p, connection_lens_sample(cam, sampler, 0), &pr)) {
+      const Rgb le = area_light_radiance(light, e.ng, pr.wi);
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, wi, dist, scene.ray_epsilon))) {
-          const float cos_light = fabsf(dot(e.ng, wi));
-          const float w_light = mis(h, factor * cos_light / (n_light * emit_pdf_a));
-          splat(films, 1, raster_pixel(cam, rx, ry), le * (cos_light / emit_pdf_a * factor * inv_paths / (1.f + w_light)));
+        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+          const float cos_light = fabsf(dot(e.ng, pr.wi));
+          const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
+          splat(films, 1, raster_pixel(cam, pr.rx, pr.ry), le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
         }
       }
     }
@@ -151,20 +153,20 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
     const Vec3 wo = frame.to_local(wo_world);
     if (bsdf_has_non_delta(mat)) {
       // t = 1 (PCLT eq. 4 with the LT kernel's adjoint factor), weighted against all camera-side strategies.
-      float rx, ry, dist, factor;
-      Vec3 wi_world;
-      if (cam.connect(hit.p, &rx, &ry, &wi_world, &dist, &factor)) {
-        const Vec3 wi = frame.to_local(wi_world);
+      CameraProjection pr;
+      if (cam.connect(hit.p, connection_lens_sample(cam, sampler, uint32_t(segments)), &pr)) {
+        const Vec3 wi = frame.to_local(pr.wi);
         const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, wi_world, dist, scene.ray_epsilon))) {
-            const float cos_cam = fabsf(dot(wi_world, hit.ng));
+          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+            // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
+            const float cos_cam = fabsf(dot(pr.wi, hit.ng));
             const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
-            const float w_light = mis(h, factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
-            const float scale = fabsf(wo.z) * cos_cam / cos_in * factor * inv_paths / (1.f + w_light);
-            splat(films, segments + 1, raster_pixel(cam, rx, ry), beta * f * scale);
+            const float w_light = mis(h, pr.factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
+            const float scale = fabsf(wo.z) * cos_cam / cos_in * pr.factor * inv_paths / (1.f + w_light);
+            splat(films, segments + 1, raster_pixel(cam, pr.rx, pr.ry), beta * f * scale);
           }
         }
       }
@@ -317,15 +319,14 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
   const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, films, counters, verts);
 
   const Sampler& sampler = camera_sampler;
-  const float rx = float(pixel % uint32_t(cam.width)) + sampler.at(dims::kPixelX);
-  const float ry = float(pixel / uint32_t(cam.width)) + sampler.at(dims::kPixelY);
-  Ray ray = cam.generate_ray(rx, ry);
-  // Eq. 31 for the camera: the per-pixel density of the direction is the image's times the pixel count.
+  Ray ray = sample_camera_ray(cam, sampler, pixel);
+  // Eq. 31 for the camera: the per-pixel density of the direction is the image's times the pixel
+  // count. The lens point's density 1 / A_lens is the same for t = 1 and cancels (header comment).
   const float pdf_pixel_w = cam.pdf_direction(ray.d) * float(cam.width) * float(cam.height);
   if (!(pdf_pixel_w > 0.f)) return {};
   float dvcm = mis(h, float(films.light_paths) / pdf_pixel_w), dvc = 0.f;
   Rgb radiance, beta(1.f);
-  Vec3 prev_p = cam.position;
+  Vec3 prev_p = ray.o;  // the pinhole or the sampled lens point
 
   for (int segments = 1;; ++segments) {
     SurfaceHit hit;

@@ -13,6 +13,9 @@ inline constexpr uint32_t kPixelX = 0;
 inline constexpr uint32_t kPixelY = 1;
 inline constexpr uint32_t kFirstVertex = 2;
 inline constexpr uint32_t kPerVertex = 8;
+// Thin-lens sample of the camera ray (and kLensU + 1): far above every per-vertex block, so a
+// pinhole render, which never reads it, keeps its dimensions and images.
+inline constexpr uint32_t kLensU = 0x40000000u;
 
 // Offsets inside a vertex's block.
 inline constexpr uint32_t kLightSelect = 0;

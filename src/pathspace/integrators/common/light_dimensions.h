@@ -20,6 +20,12 @@ inline constexpr uint32_t kLobe = 0;
 inline constexpr uint32_t kBsdfU = 1;  // and kBsdfU + 1
 inline constexpr uint32_t kRoulette = 3;
 
+// Thin-lens samples of the camera connections (LT, BPT t = 1, PCLT projection), two dimensions
+// each, in a range far above the per-vertex blocks: connection 0 is the emitter's (s = 1, t = 1),
+// connection v + 1 that of vertex v. Pinhole renders never read them.
+inline constexpr uint32_t kLensFirst = 0x40000000u;
+PS_HD inline constexpr uint32_t lens(uint32_t connection) { return kLensFirst + 2u * connection; }
+
 PS_HD inline constexpr uint32_t vertex(uint32_t index, uint32_t offset) { return kFirstVertex + index * kPerVertex + offset; }
 
 }  // namespace pathspace::light_dims

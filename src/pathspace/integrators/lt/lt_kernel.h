@@ -1,6 +1,7 @@
 // One light-traced path (device-safe, templated on the ray caster "Tracer" like pt_trace_path):
 // emit from a light (lights/light_emission.h), scatter with the adjoint BSDF (TransportMode::
-// importance) and connect every vertex to the pinhole camera by projection (PCLT paper eq. 4),
+// importance) and connect every vertex to the camera by projection (PCLT paper eq. 4; through a
+// sampled lens point for a thin lens, PerspectiveCamera::project),
 // splatting into a SplatFilmView through the box pixel filter or a wider reconstruction kernel
 // (PCLT sec. 5.2). Shading normals use Veach's adjoint correction (Veach 1997 §5.3, eq. 5.17):
 // a light-path vertex scales by |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|) on top of f |wi.ns|.
@@ -9,6 +10,7 @@
 #include "pathspace/integrators/common/light_path_step.h"
 
 #include "pathspace/film/splat_film.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/common/path_counters.h"
@@ -22,31 +24,9 @@ namespace pathspace {
 
 namespace lt_detail {
 
-// A point projected onto the image plane. Unlike PerspectiveCamera::connect, the raster position is
-// not clipped to the image: a wide filter lets points just outside it reach border pixels.
-struct Projection {
-  float rx = 0.f, ry = 0.f;
-  Vec3 wi;            // unit, from the point towards the camera
-  float dist = 0.f;
-  float factor = 0.f; // We cos_cam / dist^2 = 1 / (A_pixel cos^3 theta dist^2) (eq. 4 with A_p)
-};
-
-PS_INLINE bool project(const PerspectiveCamera& cam, const Vec3& p, Projection* out) {
-  const Vec3 to_cam = cam.position - p;
-  const float d2 = length_squared(to_cam);
-  if (!(d2 > 0.f)) return false;
-  const float d = sqrtf(d2);
-  const Vec3 dir = -to_cam / d;  // from the camera to p
-  const float c = dot(dir, cam.forward);
-  if (c <= 0.f) return false;
-  const float sx = dot(dir, cam.right) / c, sy = dot(dir, cam.up) / c;
-  out->rx = (sx / cam.tan_x + 1.f) * 0.5f * float(cam.width);
-  out->ry = (1.f - sy / cam.tan_y) * 0.5f * float(cam.height);
-  out->wi = to_cam / d;
-  out->dist = d;
-  out->factor = 1.f / (cam.pixel_area() * c * c * c * d2);
-  return isfinite(out->rx) && isfinite(out->ry) && isfinite(out->factor);
-}
+// A point projected onto the image plane (PerspectiveCamera::project): unlike connect, the raster
+// position is not clipped to the image, so a wide filter lets points just outside reach border pixels.
+using Projection = CameraProjection;
 
 // The filter's 1D profile at offset x (pixels) and its integral over [-r, r]; the 2D kernel is
 // the separable product, normalised to integrate to one pixel area so that a constant image stays
@@ -118,7 +98,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   // directional and environment lights are never hit by camera rays either (PT agrees).
   if (!settings.skip_emitter && is_area_light(light)) {
     Projection pr;
-    if (project(cam, e.p, &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
       const Rgb le = area_light_radiance(light, e.ng, pr.wi);
       if (!is_black(le)) {
         ++counters->rays;
@@ -154,7 +134,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     // shading-normal factor times |wi.ns| (Veach eq. 5.17).
     if (bsdf_has_non_delta(mat)) {
       Projection pr;
-      if (project(cam, hit.p, &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+      if (cam.project(hit.p, connection_lens_sample(cam, sampler, v + 1), &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
         const Vec3 wi = frame.to_local(pr.wi);
         const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
         if (!is_black(f)) {

@@ -13,6 +13,8 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/base/log.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/scene.h"
 
@@ -38,6 +40,15 @@ PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const Int
   if (s_.filter != LtFilter::box && !(s_.filter_radius > 0.f && s_.filter_radius <= 16.f))
     throw Error(fmt::format("pclt filter radius {} must be in (0, 16] pixels", s_.filter_radius));
   if (!(s_.epsilon >= 0.f && s_.epsilon < 1.f)) throw Error(fmt::format("pclt epsilon {} must be in [0, 1)", s_.epsilon));
+  // The z-buffer and plane shortcuts (sec. 5.3) compare with the first hit of one camera ray per
+  // pixel, i.e. they assume every projection goes through the same pinhole. With a thin lens each
+  // projection has its own lens point and a pixel sees a blend of surfaces, so those tests would be
+  // wrong, not just approximate: fall back to the shadow ray towards the sampled lens point.
+  if (s_.visibility != PcltVisibility::shadow_ray && !scene.camera.is_pinhole()) {
+    log::warning("pclt: the {} visibility shortcut assumes a pinhole camera; using shadow rays with the thin lens",
+                 s_.visibility == PcltVisibility::z_buffer ? "z-buffer" : "plane");
+    s_.visibility = PcltVisibility::shadow_ray;
+  }
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
   r0_ = s_.initial_radius > 0.f ? s_.initial_radius : s_.radius_fraction * view_.bounds.radius;
   if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("PCLT initial radius must be positive, not {}", r0_));
@@ -128,7 +139,6 @@ void PcltIntegrator::build_cache(uint32_t pass, float r) {
 
 void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
-  const int width = film.width();
   const float r = radius(pass);
   last_radius_ = r;
   splats_.clear();
@@ -141,10 +151,9 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(settings_.seed, pixel, pass);
-      const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
-      const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
       PcltEyeResult eye;
-      pclt_trace_eye(view_, accel_, sampler, view_.camera.generate_ray(rx, ry), uint32_t(pixel), s_, max_segments_, &local, &eye);
+      pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), uint32_t(pixel), s_,
+                     max_segments_, &local, &eye);
       stored_[pixel] = eye.stored;
       if (eye.stored) staging_[pixel] = eye.entry;
       if (!is_black(eye.direct)) sv.add(uint32_t(pixel), eye.direct);

@@ -247,8 +247,9 @@ struct PcltLightCounters {
 namespace pclt_detail {
 
 // Visibility of point p from the camera for the projection at raster (rx, ry) (sec. 5.3). The
-// shortcuts look at the pixel the point falls in; points outside the image (reached only by wide
-// filters) and the shadow-ray mode cast a ray.
+// shortcuts look at the pixel the point falls in and hold for a pinhole only (PcltIntegrator selects
+// the shadow ray for a thin lens); points outside the image (reached only by wide filters) and the
+// shadow-ray mode cast a ray towards the projection's lens point.
 template <typename Tracer>
 PS_HD bool projection_visible(const SceneView& scene, const Tracer& tracer, const PcltLightView& lv, const Vec3& p,
                               const Vec3& ng, const lt_detail::Projection& pr, PathCounters* counters) {
@@ -304,7 +305,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
 
   if (is_area_light(light)) {  // EL, as LT
     Projection pr;
-    if (project(cam, e.p, &pr) && reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
+    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
       const Rgb le = area_light_radiance(light, e.ng, pr.wi);
       if (!is_black(le) && (++lc->visibility_tests, projection_visible(scene, tracer, lv, e.p, e.ng, pr, counters))) {
         ++lc->projections;
@@ -338,7 +339,8 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
     // the other lobes of a directly seen vertex are the eye pass's.
     if (pclt_detail::has_diffuse(mat)) {
       Projection pr;
-      if (project(cam, hit.p, &pr) && reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
+      if (cam.project(hit.p, connection_lens_sample(cam, sampler, v + 1), &pr) &&
+          reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
         const Rgb f = pclt_detail::diffuse_eval(mat, wo, frame.to_local(pr.wi));
         if (!is_black(f)) {
           ++lc->visibility_tests;

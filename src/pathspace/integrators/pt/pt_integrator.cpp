@@ -4,6 +4,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/filters/hashed_filter.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/scene.h"
@@ -29,12 +30,6 @@ struct SharedCounters {
     into.paths += paths;
   }
 };
-
-Ray camera_ray(const SceneView& view, const Sampler& sampler, size_t pixel, int width) {
-  const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
-  const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
-  return view.camera.generate_ray(rx, ry);
-}
 
 }  // namespace
 
@@ -67,7 +62,7 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(settings_.seed, pixel, pass);
-      Rgb value = pt_trace_path(view_, accel_, sampler, camera_ray(view_, sampler, pixel, film.width()), settings_.pt, &local);
+      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_.pt, &local);
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
@@ -89,7 +84,7 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
     PathSample sample;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(settings_.seed, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, camera_ray(view_, sampler, pixel, film.width()), settings_.pt, &local, &sample);
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_.pt, &local, &sample);
       buffer_.store(pixel, uint32_t(pixel), sample);
     }
     shared.add(local);

@@ -11,6 +11,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/scene.h"
 
@@ -66,7 +67,6 @@ float SppmIntegrator::radius(uint32_t pass) {
 
 void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
-  const int width = film.width();
   const SppmSettings& s = settings_.sppm;
   const float r = radius(pass);
   last_radius_ = r;
@@ -79,9 +79,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
     uint64_t points = 0;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(settings_.seed, pixel, pass);
-      const float rx = float(pixel % size_t(width)) + sampler.at(dims::kPixelX);
-      const float ry = float(pixel / size_t(width)) + sampler.at(dims::kPixelY);
-      sppm_trace_eye(view_, accel_, sampler, view_.camera.generate_ray(rx, ry), s, max_segments_, &local, &direct_[pixel],
+      sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), s, max_segments_, &local, &direct_[pixel],
                      &points_[pixel]);
       points += points_[pixel].valid;
       flux_[3 * pixel] = flux_[3 * pixel + 1] = flux_[3 * pixel + 2] = 0;
