@@ -105,6 +105,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
   cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
   cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(CLI::Range(0.01, 179.0));
+  cmd->add_option("--lens-radius", o->lens_radius, "Thin lens radius in scene units for depth of field (0: pinhole; default: the scene's)")
+      ->check(CLI::Range(0.0, 1e30));
+  cmd->add_option("--focus-distance", o->focus_distance, "Distance of the plane in focus along the view axis (default: the scene's)")
+      ->check(CLI::Range(1e-30, 1e30));
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
   cmd->add_option("-d,--max-depth", o->max_depth, "Path length limit in segments, camera ray included (default: the scene's)")
@@ -178,6 +182,15 @@ int run_render_command(const RenderOptions& o) {
     res.height = scene.camera.height;
   } else {
     scene = make_builtin_scene(info->name, res.width, res.height);
+  }
+  if (o.lens_radius >= 0.f || o.focus_distance > 0.f) {
+    const PerspectiveCamera& c = scene.camera;
+    const float radius = o.lens_radius >= 0.f ? o.lens_radius : c.lens_radius;
+    const float focus = o.focus_distance > 0.f ? o.focus_distance : (c.is_pinhole() ? 0.f : c.focus_distance);
+    if (radius > 0.f && !(focus > 0.f))
+      throw UsageError("--lens-radius needs --focus-distance: the scene's camera is a pinhole and has no focus distance");
+    if (!(radius > 0.f) && o.focus_distance > 0.f) throw UsageError("--focus-distance needs a thin lens: give --lens-radius too");
+    if (!set_thin_lens(&scene.camera, radius, focus)) throw UsageError("invalid --lens-radius or --focus-distance");
   }
   scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
   scene.finalize();

@@ -20,6 +20,8 @@ struct RenderOptions {
   // Camera for scene files ("x,y,z"; empty: the file's camera, or framing the bounds for OBJ/PLY).
   std::string camera_pos, camera_target, camera_up;
   float fov = 0.f;  // degrees, shorter image axis; 0: the file's
+  float lens_radius = -1.f;    // thin lens radius in scene units (0: pinhole); < 0: the scene's
+  float focus_distance = 0.f;  // distance of the focus plane; 0: the scene's
   bool substitute_missing_textures = false;  // pbrt: neutral stand-ins for missing images (warnings)
   std::string integrator = "pt";
   uint32_t spp = 0;        // 0: unset

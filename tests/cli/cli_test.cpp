@@ -114,6 +114,17 @@ TEST_F(CliTest, HashedFilterWritesAovsAndReportsTheTable) {
   EXPECT_NE(json.at("outputs").get<std::string>().find("f.aov-voxel.exr"), std::string::npos);
 }
 
+// --lens-radius/--focus-distance give any scene a thin lens; a lens needs a focus distance, and
+// a focus distance needs a lens.
+TEST_F(CliTest, ThinLensOptions) {
+  expect_usage_error(std::string("render --lens-radius 0.2 ") + kSmall, "--focus-distance");
+  expect_usage_error(std::string("render --focus-distance 4 ") + kSmall, "--lens-radius");
+  expect_usage_error(std::string("render --lens-radius -1 --focus-distance 4 ") + kSmall, "--lens-radius");
+  const CliResult r = run(std::string("render -i bpt --lens-radius 0.2 --focus-distance 4 -o lens.pfm ") + kSmall);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "lens.pfm"));
+}
+
 TEST_F(CliTest, UnsupportedOutputFormatIsAUsageError) { expect_usage_error(std::string("render -o out.jpg ") + kSmall, "out.jpg"); }
 
 TEST_F(CliTest, UnwritableOutputFailsBeforeRendering) {

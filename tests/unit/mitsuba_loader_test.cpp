@@ -176,10 +176,36 @@ TEST(MitsubaLoader, DefaultsAndSubstitution) {
   expect_error(scene3("<default name=\"x\"/>"), "scene.xml:2:1:", "has no value");
 }
 
+// The thinlens sensor in both namings sets the camera's lens without a warning; both parameters are
+// required (Mitsuba 0.6 requires them; Mitsuba 3's focus_distance default 0 is degenerate).
+TEST(MitsubaLoader, ThinLensSensor) {
+  Loaded r = load(scene3("<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"0.1\"/>"
+                         "<float name=\"focus_distance\" value=\"2.5\"/></sensor>"));
+  EXPECT_TRUE(r.warnings.empty()) << ::testing::PrintToString(r.warnings);
+  EXPECT_EQ(r.scene.camera.lens_radius, 0.1f);
+  EXPECT_EQ(r.scene.camera.focus_distance, 2.5f);
+  r = load("<scene version=\"0.6.0\">\n<sensor type=\"thinlens\"><float name=\"apertureRadius\" value=\"0.2\"/>"
+           "<float name=\"focusDistance\" value=\"4\"/></sensor>\n"
+           "<shape type=\"rectangle\"><emitter type=\"area\"><rgb name=\"radiance\" value=\"1\"/></emitter></shape>\n</scene>\n");
+  EXPECT_EQ(r.scene.camera.lens_radius, 0.2f);
+  EXPECT_EQ(r.scene.camera.focus_distance, 4.f);
+  r = load(scene3("<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"0\"/>"
+                  "<float name=\"focus_distance\" value=\"1\"/></sensor>"));
+  EXPECT_TRUE(r.scene.camera.is_pinhole());
+  expect_error(scene3("<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"0.1\"/></sensor>"), "scene.xml:2:1:",
+               "focus_distance");
+  expect_error(scene3("<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"-1\"/>"
+                      "<float name=\"focus_distance\" value=\"1\"/></sensor>"),
+               "scene.xml:2:", "aperture_radius must be");
+  expect_error(scene3("<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"0.1\"/>"
+                      "<float name=\"focus_distance\" value=\"0\"/></sensor>"),
+               "scene.xml:2:", "focus_distance must be");
+}
+
 TEST(MitsubaLoader, SensorFilmSamplerIntegrator) {
   Loaded r = load(scene3(
       "<integrator type=\"path\"><integer name=\"max_depth\" value=\"-1\"/><boolean name=\"hide_emitters\" value=\"true\"/></integrator>\n"
-      "<sensor type=\"thinlens\"><float name=\"aperture_radius\" value=\"0.1\"/><string name=\"focal_length\" value=\"35mm\"/>\n"
+      "<sensor type=\"perspective\"><string name=\"focal_length\" value=\"35mm\"/>\n"
       "<film type=\"hdrfilm\"><integer name=\"width\" value=\"30\"/><integer name=\"height\" value=\"20\"/><rfilter type=\"gaussian\"/></film>\n"
       "<sampler type=\"stratified\"/></sensor>"));
   EXPECT_EQ(r.scene.max_path_segments, 1024);  // -1: unbounded
@@ -188,7 +214,6 @@ TEST(MitsubaLoader, SensorFilmSamplerIntegrator) {
   const double tan_diag = std::hypot(36.0, 24.0) / 70.0;
   EXPECT_NEAR(r.scene.camera.tan_y, tan_diag * 20.0 / std::hypot(30.0, 20.0), 1e-5);
   EXPECT_NE(find_warning(r.warnings, "scene.xml:2:63: warning: hide_emitters"), "") << ::testing::PrintToString(r.warnings);
-  EXPECT_NE(find_warning(r.warnings, "scene.xml:3:1: warning: thin lens sensor rendered as a pinhole"), "");
   EXPECT_NE(find_warning(r.warnings, "scene.xml:4:91: warning: reconstruction filter 'gaussian'"), "");
   // Options override the file's resolution.
   SceneLoadOptions o;

@@ -221,11 +221,40 @@ TEST(PbrtParser, UnsupportedFeaturesWarnWithLocation) {
   EXPECT_TRUE(has_warning(w, "test.pbrt:7:1: warning: MakeNamedMedium"));
   EXPECT_TRUE(has_warning(w, "test.pbrt:8:1: warning: coateddiffuse approximated"));
 
-  w.clear();
-  LoadWarnings lw(&w);
-  pbrt::load_pbrt_string("Camera \"perspective\" \"float lensradius\" 0.1 \"float focaldistance\" 3\nWorldBegin\nShape \"sphere\"\n",
-                         "lens.pbrt", "", {}, &lw, nullptr);
-  EXPECT_TRUE(has_warning(w, "lens.pbrt:1:1: warning: thin lens"));
+}
+
+// pbrt-v4's thin lens: lensradius and focaldistance (default 1e6) set the camera, without warnings;
+// an --fov override keeps the lens; bad values are errors at the Camera statement.
+TEST(PbrtParser, ThinLensCamera) {
+  auto load_camera = [](const std::string& camera, std::vector<std::string>* w, SceneLoadOptions o = {}) {
+    LoadWarnings lw(w);
+    return pbrt::load_pbrt_string(camera + "\nWorldBegin\nShape \"sphere\"\n", "lens.pbrt", "", o, &lw, nullptr);
+  };
+  std::vector<std::string> w;
+  Scene s = load_camera("Camera \"perspective\" \"float lensradius\" 0.1 \"float focaldistance\" 3", &w);
+  EXPECT_TRUE(w.empty()) << ::testing::PrintToString(w);
+  EXPECT_FALSE(s.camera.is_pinhole());
+  EXPECT_EQ(s.camera.lens_radius, 0.1f);
+  EXPECT_EQ(s.camera.focus_distance, 3.f);
+  s = load_camera("Camera \"perspective\" \"float lensradius\" 0.25", &w);
+  EXPECT_EQ(s.camera.lens_radius, 0.25f);
+  EXPECT_EQ(s.camera.focus_distance, 1e6f);  // pbrt-v4's default
+  s = load_camera("Camera \"perspective\" \"float focaldistance\" 3", &w);
+  EXPECT_TRUE(s.camera.is_pinhole());  // lensradius defaults to 0
+  SceneLoadOptions fov;
+  fov.fov_degrees = 30.f;
+  s = load_camera("Camera \"perspective\" \"float lensradius\" 0.1 \"float focaldistance\" 3", &w, fov);
+  EXPECT_EQ(s.camera.lens_radius, 0.1f);
+  EXPECT_EQ(s.camera.focus_distance, 3.f);
+  EXPECT_TRUE(w.empty()) << ::testing::PrintToString(w);
+  for (const char* bad : {"\"float lensradius\" -1", "\"float lensradius\" 0.1 \"float focaldistance\" 0"}) {
+    try {
+      load_camera(std::string("Camera \"perspective\" ") + bad, &w);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.location().to_string(), "lens.pbrt:1:1") << e.what();
+    }
+  }
 }
 
 }  // namespace

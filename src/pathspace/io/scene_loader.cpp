@@ -63,8 +63,10 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   const float fov = o.fov_degrees.value_or(kDefaultFov);
   if (!(fov > 0.f && fov < 180.f)) throw Error("--fov must be between 0 and 180 degrees");
   PerspectiveCamera& c = scene->camera;
+  const PerspectiveCamera file_camera = c;  // its thin lens survives the override
   if (!place) {  // only the field of view changes
     c = make_file_camera(c.position, c.forward, c.right, c.up, fov, width, height);
+    set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
     return;
   }
   const Bounds3 b = scene->geometry_bounds();
@@ -79,6 +81,7 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   const Vec3 right = cross(normalize(forward), normalize(up));
   if (!(length(right) > 1e-6f)) throw Error("camera up vector is parallel to the view direction");
   c = make_file_camera(pos, forward, right, cross(normalize(right), normalize(forward)), fov, width, height);
+  set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
 }
 
 Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,

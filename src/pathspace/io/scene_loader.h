@@ -42,6 +42,7 @@ PerspectiveCamera make_file_camera(const Vec3& position, const Vec3& forward, co
 
 // Applies the camera options of `o` (position/target/up/fov), or frames the scene's bounds when
 // `frame_bounds` and no position is given: looking along -z at the centre of the bounding sphere.
+// The camera's thin lens (radius, focus distance) is kept.
 void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int width, int height, Scene* scene);
 
 }  // namespace pathspace

@@ -62,6 +62,7 @@ class Builder {
     if (!(length(forward) > 0.f && length(up) > 0.f && length(right) > 0.f) || !all_finite(m.point(Vec3())))
       throw Error(sensor_loc_, "sensor to_world is singular");
     scene_.camera = make_file_camera(m.point(Vec3()), forward, right, up, fov_short, w, h);
+    set_thin_lens(&scene_.camera, aperture_radius_, focus_distance_);  // validated in sensor()
     apply_camera_options(options_, false, w, h, &scene_);
     scene_.max_path_segments = max_segments_;
     const Bounds3 b = scene_.geometry_bounds();
@@ -89,9 +90,15 @@ class Builder {
   void sensor(const Object& o) {
     if (o.type() != "perspective" && o.type() != "thinlens")
       throw Error(o.loc(), "sensor type '" + o.type() + "' is not supported (only perspective)");
-    if (o.type() == "thinlens") {
-      w_->add(o.loc(), "thin lens sensor rendered as a pinhole (no depth of field)");
-      o.ignore({"aperture_radius", "focus_distance"});
+    if (o.type() == "thinlens") {  // both parameters required, as in Mitsuba 0.6 (Mitsuba 3's focus_distance 0 is degenerate)
+      for (const char* name : {"aperture_radius", "focus_distance"})
+        if (!o.has(name)) throw Error(o.loc(), std::string("thinlens sensor needs ") + name + " (0.6: apertureRadius, focusDistance)");
+      aperture_radius_ = float(o.get_float("aperture_radius", 0.0));
+      focus_distance_ = float(o.get_float("focus_distance", 0.0));
+      if (!(aperture_radius_ >= 0.f && std::isfinite(aperture_radius_)))
+        throw Error(doc_.loc(o.find("aperture_radius")->node), "aperture_radius must be finite and >= 0");
+      if (!(focus_distance_ > 0.f && std::isfinite(focus_distance_)))
+        throw Error(doc_.loc(o.find("focus_distance")->node), "focus_distance must be finite and positive");
     }
     has_sensor_ = true;
     sensor_loc_ = o.loc();
@@ -260,6 +267,7 @@ class Builder {
   FileLoc sensor_loc_;
   Mat4 camera_to_world_;
   double fov_ = 45.0;
+  float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole
   std::string fov_axis_ = "x";
   int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;
 };

@@ -60,6 +60,7 @@ class Builder {
     if (!camera_from_world_.inverse(&world_from_camera)) throw Error(camera_loc_, "camera transform is singular");
     scene_.camera = make_file_camera(world_from_camera.point(Vec3()), world_from_camera.vector(Vec3(0, 0, 1)),
                                      world_from_camera.vector(Vec3(1, 0, 0)), world_from_camera.vector(Vec3(0, 1, 0)), fov_, w, h);
+    set_thin_lens(&scene_.camera, lens_radius_, focal_distance_);  // validated in camera()
     apply_camera_options(options_, false, w, h, &scene_);
     scene_.max_path_segments = max_depth_ + 1;
     const Bounds3 b = scene_.geometry_bounds();
@@ -244,8 +245,12 @@ class Builder {
     if (st.strings[0] != "perspective") throw Error(st.loc, "Camera \"" + st.strings[0] + "\" is not supported (only \"perspective\")");
     fov_ = float(st.get_float("fov", 90.0));
     if (!(fov_ > 0.f && fov_ < 180.f)) throw Error(st.loc, "fov must be between 0 and 180 degrees");
-    if (st.get_float("lensradius", 0.0) > 0.0) warn(st.loc, "thin lens camera is not supported: rendering with a pinhole (no depth of field)");
-    st.ignore({"focaldistance", "shutteropen", "shutterclose"});
+    // pbrt-v4's thin lens (defaults: lensradius 0 = pinhole, focaldistance 1e6), in scene units.
+    lens_radius_ = float(st.get_float("lensradius", 0.0));
+    focal_distance_ = float(st.get_float("focaldistance", 1e6));
+    if (!(lens_radius_ >= 0.f && std::isfinite(lens_radius_))) throw Error(st.loc, "lensradius must be finite and >= 0");
+    if (!(focal_distance_ > 0.f && std::isfinite(focal_distance_))) throw Error(st.loc, "focaldistance must be finite and positive");
+    st.ignore({"shutteropen", "shutterclose"});
     camera_from_world_ = gs_.ctm;
     has_camera_ = true;
     camera_loc_ = st.loc;
@@ -532,6 +537,7 @@ class Builder {
   Mat4 camera_from_world_;
   FileLoc camera_loc_;
   float fov_ = 90.f;
+  float lens_radius_ = 0.f, focal_distance_ = 1e6f;
   int film_width_ = 1280, film_height_ = 720, spp_ = 16, max_depth_ = 5;
   std::string image_name_;
 };
