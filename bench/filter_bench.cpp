@@ -75,6 +75,7 @@ void BM_HashedFilter(benchmark::State& state) {
   state.counters["lookup_ns"] = st.lookup_ms * per_vertex;
   state.counters["clear_ms"] = st.clear_ms / double(st.passes);
   state.counters["mean_probes"] = st.mean_probes();
+  state.counters["combined_pct"] = 100.0 * (1.0 - double(st.insertions) / double(st.vertices));
   state.counters["mean_voxel_count"] = set.mean_voxel_count;
   state.counters["occupancy_pct"] = 100.0 * double(st.occupied_cells_last) / double(st.cells);
 }

@@ -4,9 +4,14 @@
 #include <atomic>
 #include <chrono>
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for_each.h>
+
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
+#include "pathspace/filters/local_voxel_cache.h"
+#include "pathspace/hashing/voxel_key_batch.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -74,13 +79,18 @@ VoxelKey HashedFilter::key_of(const VertexBuffer& b, size_t i, uint64_t seed, ui
   return key_for_pass(b, i, pass_jitter_hash(seed, pass));
 }
 
-// Inlined into accumulate(): as a call it cost 11% of the accumulation time (docs/benchmarks.md).
-[[gnu::always_inline]] inline VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pass_hash) const {
-  const uint64_t h = mix64(pass_hash + uint64_t(i) * kGoldenGamma);
-  const VoxelKeyInput in{b.position[i],        b.geometric_normal[i], b.shading_normal[i], b.incident[i],
-                         b.previous_position[i], b.prefix_distance[i], b.roughness[i],     b.layer[i],
-                         b.selected[i]};
-  return make_voxel_key(settings_.key, in, bits_to_unit_float(h), bits_to_unit_float(h << 24));
+namespace {
+VoxelKeyInput key_input(const VertexBuffer& b, size_t i) {
+  return {b.position[i],          b.geometric_normal[i], b.shading_normal[i], b.incident[i], b.previous_position[i],
+          b.prefix_distance[i],   b.roughness[i],        b.layer[i],          b.selected[i]};
+}
+uint64_t jitter_seed(uint64_t pass_hash, size_t i) { return pass_hash + uint64_t(i) * kGoldenGamma; }
+}  // namespace
+
+// The scalar reference of the batched keys used by accumulate() (voxel_key_batch.h).
+VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pass_hash) const {
+  const uint64_t h = mix64(jitter_seed(pass_hash, i));
+  return make_voxel_key(settings_.key, key_input(b, i), bits_to_unit_float(h), bits_to_unit_float(h << 24));
 }
 
 void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
@@ -116,47 +126,20 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
       first_slot_of_pixel_[buffer.pixel[path]] = uint32_t(buffer.slot(path, 0));
 }
 
-// Per-thread combining of consecutive vertices that fall into the same voxel: camera paths are
-// processed in scanline order, so neighbouring vertices usually share a voxel (tens of vertices per
-// voxel by design). Their sums are combined locally and added to the table with one set of atomics
-// when the entry is evicted; integer sums make the result identical to adding one by one.
-struct LocalVoxelCache {
-  static constexpr int kEntries = 32;
-  struct Entry {
-    uint64_t index = 0;
-    uint32_t fingerprint = kEmptyFingerprint;
-    int64_t slot = -1;
-    uint64_t sum[3] = {0, 0, 0};
-    uint64_t count = 0;
-  };
-  Entry entries[kEntries];
-
-  Entry& entry_for(const VoxelHash& h) { return entries[(h.index ^ (h.index >> 17)) & (kEntries - 1)]; }
-  static bool holds(const Entry& e, const VoxelHash& h) {
-    return e.fingerprint == h.fingerprint && e.index == h.index && e.fingerprint != kEmptyFingerprint;
-  }
-  static void flush(const VoxelHashTableView& table, Entry& e) {
-    if (e.count > 0) {
-      VoxelCell& c = table.cells[e.slot];
-      for (int i = 0; i < 3; ++i) atomic_fetch_add(&c.sum[i], e.sum[i]);
-      atomic_fetch_add(&c.count, e.count);
-    }
-    e = Entry{};
-  }
-  void flush_all(const VoxelHashTableView& table) {
-    for (Entry& e : entries) flush(table, e);
-  }
-};
-
 void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   AccumulateCounters counters;
   const bool combine = settings_.local_combining;
   const uint64_t pass_hash = pass_jitter_hash(seed, pass);
+  const VoxelKeyIsa isa = widest_voxel_key_isa();
+  // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
+  // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
+  // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most.
+  tbb::enumerable_thread_specific<LocalVoxelCache> caches;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
-    LocalVoxelCache local;
+    LocalVoxelCache& local = caches.local();
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
     // is memory bound; ../shared/notes/performance.md).
@@ -165,10 +148,6 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     VoxelHash hashes[kBatch];
     uint64_t fixed_batch[kBatch][3];
     int n = 0;
-    auto add_to_entry = [](LocalVoxelCache::Entry& e, const uint64_t fixed[3]) {
-      for (int c = 0; c < 3; ++c) e.sum[c] += fixed[c];
-      ++e.count;
-    };
     auto process_batch = [&] {
       for (int j = 0; j < n; ++j) {
         const size_t i = batch[j];
@@ -176,7 +155,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
           slots_[i] = e.slot;
           probes_[i] = 0;
-          add_to_entry(e, fixed_batch[j]);
+          LocalVoxelCache::add(e, fixed_batch[j]);
           continue;
         }
         const ProbeResult pr = view.find_or_insert(hashes[j]);
@@ -189,35 +168,38 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           ++failures;
           continue;
         }
-        LocalVoxelCache::flush(view, e);
+        local.evict(view, e);
         e.index = hashes[j].index;
         e.fingerprint = hashes[j].fingerprint;
         e.slot = pr.slot;
-        add_to_entry(e, fixed_batch[j]);
-        if (!combine) LocalVoxelCache::flush(view, e);
+        LocalVoxelCache::add(e, fixed_batch[j]);
+        if (!combine) local.evict(view, e);
       }
       n = 0;
     };
-    // Keys and hashes are computed for a block of vertices first, in a loop without table access,
-    // so that the arithmetic of independent vertices overlaps; the table work follows per vertex.
-    constexpr int kKeyBlock = 64;
-    size_t block_slot[kKeyBlock];
-    VoxelHash block_hash[kKeyBlock];
+    // Keys and hashes are computed for a block of vertices first, eight or sixteen at a time
+    // (voxel_key_batch.h), in a loop without table access; the table work follows per vertex.
+    VoxelKeyBatch key_batch;
+    size_t block_slot[kVoxelKeyBatchSize];
     int block_n = 0, block_next = 0;
     size_t path = begin;
     int rec = 0;
     auto fill_block = [&] {
       block_n = block_next = 0;
-      while (block_n < kKeyBlock && path < end) {
+      while (block_n < kVoxelKeyBatchSize && path < end) {
         if (rec >= b.count[path]) {
           ++path;
           rec = 0;
           continue;
         }
         const size_t i = b.slot(path, rec++);
-        keys_[i] = key_for_pass(b, i, pass_hash);
-        block_slot[block_n] = i;
-        block_hash[block_n++] = hash_voxel_key(keys_[i], settings_.key.normal);
+        key_batch.set_input(block_n, key_input(b, i), jitter_seed(pass_hash, i));
+        block_slot[block_n++] = i;
+      }
+      compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
+      for (int j = 0; j < block_n; ++j) {
+        keys_[block_slot[j]] = key_batch.keys[j];
+        __builtin_prefetch(&local.entry_for(key_batch.hashes[j]), 1, 3);  // an L2 miss when vertices are incoherent
       }
     };
     for (;;) {
@@ -227,7 +209,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       }
       {
         const size_t i = block_slot[block_next];
-        const VoxelHash h = block_hash[block_next++];
+        const VoxelHash h = key_batch.hashes[block_next++];
         ++vertices;
         uint64_t fixed[3];
         if (!to_fixed_point(b.contribution[i], fixed)) {
@@ -245,7 +227,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         if (combine && LocalVoxelCache::holds(e, h)) {
           slots_[i] = e.slot;
           probes_[i] = 0;
-          add_to_entry(e, fixed);
+          LocalVoxelCache::add(e, fixed);
           continue;
         }
         const uint64_t home = h.index & view.mask;
@@ -258,9 +240,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       }
     }
     process_batch();
-    local.flush_all(view);
     counters.add(vertices, insertions, failures, not_accumulated, probes, probes_max);
   });
+  tbb::parallel_for_each(caches.begin(), caches.end(), [&](LocalVoxelCache& c) { c.flush_all(view); });
   stats_.vertices += counters.vertices;
   stats_.insertions += counters.insertions;
   stats_.probe_failures += counters.failures;
