@@ -1,7 +1,7 @@
 // Consistency of the thin-lens camera across the integrators (camera/perspective_camera.h). Scene:
 // the Cornell box with the glossy floor and the ceiling light (mask 257, "glossy_area" in the LT and
-// BPT tests) plus a diffuse sphere near the front, 24x24, seen through a lens of radius 0.5 focused
-// on the sphere: the back wall, the light and the box edges are blurred over about 3 pixels.
+// BPT tests) plus a diffuse sphere floating near the front, 24x24, seen through a lens of radius 0.5
+// focused on the sphere: the back wall, the light and the box edges blur over about 3 pixels.
 //  - PT and BPT agree (BPT's camera vertex is the sampled lens point; every t = 1 connection samples
 //    its own; a wrong lens term in the MIS weights would bias BPT). PT gets 4x BPT's passes for its
 //    heavy-tailed glossy caustics (E-D-G-L), as in bpt_consistency_test.cpp;
@@ -9,6 +9,7 @@
 //  - SPPM and PCLT (eye passes through the lens; PCLT also projects through it, and its pixel cache
 //    holds the glossy floor's E-G-D records) agree with BPT on the smooth pixels of the gathering
 //    test's mask, whose probe rays go through 9 lens points (gathering_bpt_consistency_test.cpp);
+//    SPPM without the glossy floor (its radius bias at the light's highlight, see below);
 //  - PCLT's z-buffer shortcut, which assumes a pinhole, falls back to the shadow ray: its image is
 //    bit-identical to the shadow-ray render of the same seed;
 //  - power: the pinhole image of the same scene is rejected against the lens image.
@@ -40,7 +41,7 @@ constexpr float kInitialRadius = 0.04f;  // SPPM and PCLT, as gathering_bpt_cons
 
 Scene make_lens_cornell(float lens_radius) {
   Scene scene = make_cornell_box(kGlossyFloor | kLightCeiling, kSize, kSize);
-  const Vec3 centre(0.45f, -0.55f, -0.88f);
+  const Vec3 centre(0.45f, -0.55f, -0.3f);  // 0.58 above the floor
   scene.add_sphere(centre, 0.4f, scene.add_material(make_diffuse(Rgb(0.8f, 0.7f, 0.2f))));
   const float focus = dot(centre - scene.camera.position, scene.camera.forward);  // about 3.5; back wall 5.4
   EXPECT_TRUE(set_thin_lens(&scene.camera, lens_radius, focus));
@@ -99,13 +100,19 @@ void expect_gathering_agrees(const char* integrator, uint64_t seed) {
   IntegratorSettings g = seeded(seed);
   g.sppm.photons = 100000;
   g.sppm.initial_radius = kInitialRadius;
-  g.pclt.light_paths = 100000;
+  g.pclt.light_paths = 50000;  // half the gathering test's: PCLT's light paths cost twice SPPM's
   g.pclt.initial_radius = kInitialRadius;
   const Rendered a = testing::render_integrator(scene, accel, integrator, g, 128);
   const Rendered b = bpt_reference(scene, accel, seed + 1);
-  const std::vector<bool> keep = testing::smooth_pixels(scene, accel, 3.f * kInitialRadius, false);
+  // SPPM gathers at its visible point on the glossy floor, where the light's highlight varies within
+  // the gather ball: its radius bias there is 20-25% in a few pixels whatever the photon count (SPPM
+  // darker; measured with the lens at 5*10^4, 10^5 and 2*10^5 photons and with the pinhole at 5*10^4,
+  // seeds 0-3: 1-6 failing pixels, allowance 2), so SPPM is compared on the walls. PCLT's floor
+  // pixels are projections (f_D) and cache records on the walls after the glossy bounce: kept.
+  const bool sppm = std::string(integrator) == "sppm";
+  const std::vector<bool> keep = testing::smooth_pixels(scene, accel, 3.f * kInitialRadius, false, sppm);
   const size_t kept = size_t(std::count(keep.begin(), keep.end(), true));
-  EXPECT_GT(kept, keep.size() / 5) << "the mask should keep the middle of the walls and the floor";
+  EXPECT_GT(kept, keep.size() / (sppm ? 8 : 5)) << "the mask should keep the middle of the walls (and the floor)";
   const Rendered ca{compact_pixels(a.mean, keep), compact_pixels(a.variance, keep)};
   const Rendered cb{compact_pixels(b.mean, keep), compact_pixels(b.variance, keep)};
   std::printf("%s: kept %zu of %zu pixels\n", integrator, kept, keep.size());

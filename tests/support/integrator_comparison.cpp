@@ -88,7 +88,7 @@ std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel
   return mask;
 }
 
-std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling) {
+std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling, bool exclude_glossy) {
   const SceneView view = scene.view();
   const int w = scene.camera.width, h = scene.camera.height;
   const std::vector<Point2> lens = lens_probes(view.camera);
@@ -114,7 +114,7 @@ std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float re
           m0 = hit.material;
         }
         ok = hit.material == m0 && dot(hit.ng, n0) > 0.999f && hit.light == kNoLight && bsdf_has_non_delta(m) &&
-             is_black(m.specular);
+             is_black(m.specular) && !(exclude_glossy && !is_black(m.glossy));
         const Frame f(hit.ng);
         for (int d = 0; d < 8 && ok; ++d) {
           const float a = float(d) * kPi / 4.f;

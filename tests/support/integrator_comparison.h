@@ -44,7 +44,9 @@ std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel
 // i.e. where a gather ball of radius <= reach sees one flat surface (no edges, contacts, curved or
 // delta surfaces). With exclude_ceiling, pixels that see a downward-facing surface are dropped too.
 // With a thin lens the 4x4 primary rays go through 9 lens points each (a pixel sees a blend).
-std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling);
+// With exclude_glossy, pixels that see a surface with a glossy lobe are dropped too.
+std::vector<bool> smooth_pixels(const Scene& scene, const Accel& accel, float reach, bool exclude_ceiling,
+                                bool exclude_glossy = false);
 
 // The kept pixels (keep[i]) as a one-row image, so that the z-test counts only those.
 Image compact_pixels(const Image& img, const std::vector<bool>& keep);
