@@ -47,11 +47,15 @@ TEST(ShippedScenes, EveryFormLoadsWithoutWarnings) {
       // The one expected warning: pbrt-v4 itself reads only square environment maps.
       const bool lat_long_pbrt = s.name == "textured-room" && form == "scene.pbrt";
       EXPECT_EQ(warnings.size(), lat_long_pbrt ? 1u : 0u) << s.name << "/" << form << ": " << ::testing::PrintToString(warnings);
-      if (lat_long_pbrt && warnings.size() == 1) EXPECT_NE(warnings[0].find("read as a pbrt-v3 lat-long map"), std::string::npos);
+      if (lat_long_pbrt && warnings.size() == 1) {
+        EXPECT_NE(warnings[0].find("read as a pbrt-v3 lat-long map"), std::string::npos);
+      }
       if (triangles == 0) triangles = scene.triangles.size();
       EXPECT_EQ(scene.triangles.size(), triangles) << s.name << "/" << form;
       EXPECT_EQ(scene.max_path_segments, 10) << s.name << "/" << form;
-      if (s.name == "textured-room") EXPECT_FALSE(scene.textures.empty()) << form;
+      if (s.name == "textured-room") {
+        EXPECT_FALSE(scene.textures.empty()) << form;
+      }
     }
   }
 }
