@@ -153,7 +153,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         const size_t i = batch[j];
         LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
         if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
-          slots_[i] = e.slot;
+          slots_[i] = int64_t(e.slot);
           probes_[i] = 0;
           LocalVoxelCache::add(e, fixed_batch[j]);
           continue;
@@ -169,9 +169,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           continue;
         }
         local.evict(view, e);
-        e.index = hashes[j].index;
-        e.fingerprint = hashes[j].fingerprint;
-        e.slot = pr.slot;
+        LocalVoxelCache::open(e, hashes[j], uint64_t(pr.slot));
         LocalVoxelCache::add(e, fixed_batch[j]);
         if (!combine) local.evict(view, e);
       }
@@ -225,7 +223,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
-          slots_[i] = e.slot;
+          slots_[i] = int64_t(e.slot);
           probes_[i] = 0;
           LocalVoxelCache::add(e, fixed);
           continue;

@@ -34,7 +34,8 @@ struct ProbeResult {
 PS_INLINE bool to_fixed_point(const Rgb& v, uint64_t out[3]) {
   for (int c = 0; c < 3; ++c) {
     if (!(v[c] >= 0.f && v[c] <= kMaxAccumulatedValue)) return false;  // also rejects NaN
-    out[c] = uint64_t(v[c] * kFixedPointScale + 0.5f);
+    // Through int64 (values stay below 2^41): float -> uint64 has no single x86 instruction.
+    out[c] = uint64_t(int64_t(v[c] * kFixedPointScale + 0.5f));
   }
   return true;
 }
