@@ -43,18 +43,12 @@ Scene load_small(const std::string& name, int width, int height) {
 
 Image tungsten(const std::string& name) { return read_image(scene_dir(name) + "/TungstenRender.exr"); }
 
-IntegratorSettings seeded(uint64_t seed) {
-  IntegratorSettings s;
-  s.seed = testing::test_seed_base() + seed;
-  return s;
-}
-
 TEST(VeachMis, PtAndBptAgreeAndTheWallMatchesTungsten) {
   REQUIRE_SCENE("veach-mis");
   const Scene scene = load_small("veach-mis", 64, 36);  // 1/20 of 1280x720
   const Accel accel(scene);
-  const Rendered pt = testing::render_integrator(scene, accel, "pt", seeded(41), 1024);
-  const Rendered bpt = testing::render_integrator(scene, accel, "bpt", seeded(42), 256);
+  const Rendered pt = testing::render_integrator(scene, accel, "pt", testing::seeded(41), 1024);
+  const Rendered bpt = testing::render_integrator(scene, accel, "bpt", testing::seeded(42), 256);
   testing::expect_same_image(pt, bpt, "veach-mis-pt-vs-bpt", 1e-3, "pt", "bpt");
   // The back wall above the plates: lit directly by the spheres (our next event estimate at a wall
   // point equals the closed-form irradiance of each sphere) and indirectly by the plates, whose GGX
@@ -70,10 +64,10 @@ TEST(VeachBidir, LtAndBptAgreeAndRoomMatchesTungsten) {
   REQUIRE_SCENE("veach-bidir");
   const Scene scene = load_small("veach-bidir", 32, 32);  // 1/32 of 1024x1024
   const Accel accel(scene);
-  IntegratorSettings lt = seeded(43);
+  IntegratorSettings lt = testing::seeded(43);
   lt.lt.light_paths = 100000;
   Rendered a = testing::render_integrator(scene, accel, "lt", lt, 64);
-  Rendered b = testing::render_integrator(scene, accel, "bpt", seeded(44), 512);
+  Rendered b = testing::render_integrator(scene, accel, "bpt", testing::seeded(44), 512);
   const std::vector<bool> mask = testing::specular_first_hit_mask(scene, accel);  // the egg, the lamp's metal
   testing::apply_mask(&a, mask);
   testing::apply_mask(&b, mask);
@@ -93,7 +87,7 @@ TEST_P(WaterCaustic, BelowTheWaterMatchesTungsten) {
   REQUIRE_SCENE("water-caustic");
   const Scene scene = load_small("water-caustic", 32, 32);  // 1/32 of 1024x1024
   const Accel accel(scene);
-  IntegratorSettings s = seeded(45);
+  IntegratorSettings s = testing::seeded(45);
   s.sppm.photons = 20000;
   s.pclt.light_paths = 20000;
   const Rendered r = testing::render_integrator(scene, accel, GetParam(), s, 128);

@@ -49,12 +49,6 @@ Scene make_lens_cornell(float lens_radius) {
   return scene;
 }
 
-IntegratorSettings seeded(uint64_t seed) {
-  IntegratorSettings s;
-  s.seed = testing::test_seed_base() + seed;
-  return s;
-}
-
 // The z-test with its numbers printed (for the record), then the shared assertion with evidence.
 void expect_same(const Rendered& a, const Rendered& b, const std::string& what, const char* na, const char* nb) {
   const testing::ImageZTest z = testing::image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, kAlphaImage);
@@ -64,20 +58,20 @@ void expect_same(const Rendered& a, const Rendered& b, const std::string& what, 
 }
 
 Rendered bpt_reference(const Scene& scene, const Accel& accel, uint64_t seed) {
-  return testing::render_integrator(scene, accel, "bpt", seeded(seed), 512);
+  return testing::render_integrator(scene, accel, "bpt", testing::seeded(seed), 512);
 }
 
 TEST(ThinLensAgree, PtAndBpt) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  const Rendered pt = testing::render_integrator(scene, accel, "pt", seeded(401), 2048);
+  const Rendered pt = testing::render_integrator(scene, accel, "pt", testing::seeded(401), 2048);
   const Rendered bpt = bpt_reference(scene, accel, 402);
   expect_same(pt, bpt, "thin-lens-pt-vs-bpt", "pt", "bpt");
 
   // The comparison can see the lens: the pinhole render of the same scene is rejected.
   const Scene pinhole = make_lens_cornell(0.f);
   const Accel pinhole_accel(pinhole);
-  const Rendered sharp = testing::render_integrator(pinhole, pinhole_accel, "bpt", seeded(403), 512);
+  const Rendered sharp = testing::render_integrator(pinhole, pinhole_accel, "bpt", testing::seeded(403), 512);
   const testing::ImageZTest z = testing::image_z_test(sharp.mean, sharp.variance, bpt.mean, bpt.variance, 1e-3, kAlphaImage);
   std::printf("pinhole vs lens: %zu of %zu pixels differ (allowed %zu)\n", z.failed, z.pixels, z.allowed);
   EXPECT_FALSE(z.passed()) << "the pinhole image should differ from the lens image";
@@ -86,7 +80,7 @@ TEST(ThinLensAgree, PtAndBpt) {
 TEST(ThinLensAgree, LtAndBpt) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings lt = seeded(411);
+  IntegratorSettings lt = testing::seeded(411);
   lt.lt.light_paths = 8192;
   const Rendered a = testing::render_integrator(scene, accel, "lt", lt, 256);
   const Rendered b = bpt_reference(scene, accel, 412);
@@ -97,7 +91,7 @@ TEST(ThinLensAgree, LtAndBpt) {
 void expect_gathering_agrees(const char* integrator, uint64_t seed) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings g = seeded(seed);
+  IntegratorSettings g = testing::seeded(seed);
   g.sppm.photons = 100000;
   g.sppm.initial_radius = kInitialRadius;
   g.pclt.light_paths = 50000;  // half the gathering test's: PCLT's light paths cost twice SPPM's
@@ -125,7 +119,7 @@ TEST(ThinLensAgree, PcltAndBpt) { expect_gathering_agrees("pclt", 431); }
 TEST(ThinLensPclt, ZBufferShortcutFallsBackToShadowRays) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings s = seeded(441);
+  IntegratorSettings s = testing::seeded(441);
   s.pclt.light_paths = 20000;
   const Rendered ray = testing::render_integrator(scene, accel, "pclt", s, 4);
   s.pclt.visibility = PcltVisibility::z_buffer;

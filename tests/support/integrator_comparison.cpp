@@ -143,4 +143,10 @@ uint64_t test_seed_base() {
   return env ? std::strtoull(env, nullptr, 10) * 16 : 0;
 }
 
+IntegratorSettings seeded(uint64_t seed) {
+  IntegratorSettings s;
+  s.seed = test_seed_base() + seed;
+  return s;
+}
+
 }  // namespace pathspace::testing

@@ -54,4 +54,7 @@ Image compact_pixels(const Image& img, const std::vector<bool>& keep);
 // PATHSPACE_TEST_SEED=k shifts the seeds of the statistical comparisons (robustness reruns).
 uint64_t test_seed_base();
 
+// Default settings with seed test_seed_base() + seed.
+IntegratorSettings seeded(uint64_t seed);
+
 }  // namespace pathspace::testing

@@ -2,7 +2,7 @@
 // (sec. 3.1) in structure-of-arrays form, so that the compiler runs it on 8 or 16 vertices per
 // instruction. Computing keys one vertex at a time was 60-70% of the filter's accumulation cost
 // (docs/benchmarks.md). The results equal make_voxel_key() and hash_voxel_key() bit for bit on
-// every instruction set (tests/unit/voxel_key_batch_test.cpp), so images do not depend on the CPU.
+// every instruction set (tests/filter/voxel_key_batch_test.cpp), so images do not depend on the CPU.
 #pragma once
 
 #include <cstdint>
