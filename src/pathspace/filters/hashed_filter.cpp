@@ -182,17 +182,21 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     int block_n = 0, block_next = 0;
     size_t path = begin;
     int rec = 0;
+    const int records_per_path = b.records_per_path();
     auto fill_block = [&] {
       block_n = block_next = 0;
+      // Without a branch per slot: every slot is written to the next lane, which only advances
+      // when the slot holds a record (a quarter of second-bounce paths have none, in no
+      // predictable pattern, and a mispredicted branch cost more than the copy).
       while (block_n < kVoxelKeyBatchSize && path < end) {
-        if (rec >= b.count[path]) {
-          ++path;
-          rec = 0;
-          continue;
-        }
-        const size_t i = b.slot(path, rec++);
+        const size_t i = b.slot(path, rec);
         key_batch.set_input(block_n, key_input(b, i), jitter_seed(pass_hash, i));
-        block_slot[block_n++] = i;
+        block_slot[block_n] = i;
+        block_n += rec < b.count[path] ? 1 : 0;
+        if (++rec == records_per_path) {
+          rec = 0;
+          ++path;
+        }
       }
       compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
       for (int j = 0; j < block_n; ++j) {
