@@ -45,7 +45,9 @@ const VertexSet& vertex_set(int kind) {
       set->positions.push_back(b.position[b.slot(p, r)]);
       set->contributions.push_back(b.contribution[b.slot(p, r)]);
     }
-  HashedFilter filter(HashedFilterSettings{}, set->scene().camera, size_t(kWidth) * kHeight);
+  HashedFilterSettings debug;
+  debug.debug_images = true;  // for the count image below
+  HashedFilter filter(debug, set->scene().camera, size_t(kWidth) * kHeight);
   std::vector<Rgb> filtered;
   filter.filter(b, 0, 0, &filtered);
   const Image counts = filter.aov(FilterAov::count);

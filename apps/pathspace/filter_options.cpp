@@ -58,6 +58,7 @@ void apply_filter_options(const FilterOptions& o, IntegratorSettings* settings) 
   h.min_count = o.min_count;
   h.neighbour_search = o.neighbours;
   h.multi_level = o.multi_level;
+  h.debug_images = o.aovs;
 }
 
 }  // namespace pathspace::cli

@@ -109,5 +109,34 @@ TEST(HashedFilter, TinyTableFallsBackToUnfilteredContributions) {
   for (const Rgb& v : f.mean.pixels) EXPECT_TRUE(all_finite(v));
 }
 
+// Debug images (AOVs) keep per-vertex keys and counts only when asked for; asking must not change
+// the image, and a render that asks for AOVs without them gets none rather than stale data.
+TEST(HashedFilter, DebugImagesOnlyWhenRequestedAndImageUnchanged) {
+  const Scene scene = make_builtin_scene("cornell-box", 48, 48);
+  const Accel accel(scene);
+  auto render_aovs = [&](bool debug_images, RenderStats* stats) {
+    Film film(scene.camera.width, scene.camera.height);
+    RenderRequest req;
+    req.spp = 2;
+    req.want_aovs = true;
+    req.settings = hashed_settings(11);
+    req.settings.filter.hashed.debug_images = debug_images;
+    *stats = render(scene, accel, req, film);
+    return film.mean();
+  };
+  RenderStats plain, debug;
+  const Image a = render_aovs(false, &plain);
+  const Image b = render_aovs(true, &debug);
+  EXPECT_TRUE(bit_identical(a, b));
+  EXPECT_TRUE(plain.aovs.empty());
+  ASSERT_EQ(debug.aovs.size(), 4u);
+  for (const NamedImage& aov : debug.aovs) {
+    if (aov.name != "count") continue;
+    double sum = 0.0;
+    for (const Rgb& v : aov.image.pixels) sum += v.r;
+    EXPECT_GT(sum / double(aov.image.pixels.size()), 1.0) << "a voxel averages several vertices";
+  }
+}
+
 }  // namespace
 }  // namespace pathspace

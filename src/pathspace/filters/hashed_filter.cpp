@@ -95,11 +95,13 @@ VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pa
 
 void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
   const size_t slots = buffer.paths() * size_t(buffer.records_per_path());
-  keys_.resize(slots);
+  // Per-slot keys, probe counts and voxel counts are kept only when something reads them after
+  // accumulation (neighbour search, debug images): storing them cost ~10% of the accumulation.
+  keys_.resize(keeps_keys() ? slots : 0);
+  probes_.resize(settings_.debug_images ? slots : 0);
+  counts_.resize(settings_.debug_images ? slots : 0);
   slots_.resize(slots);
-  coarse_slots_.resize(slots);
-  probes_.resize(slots);
-  counts_.resize(slots);
+  coarse_slots_.resize(coarse_table_ ? slots : 0);
   filtered->resize(slots);
 
   auto t0 = std::chrono::steady_clock::now();
@@ -120,6 +122,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   stats_.expected_fingerprint_collisions_last = occ.expected_fingerprint_collisions;
   ++stats_.passes;
 
+  if (!settings_.debug_images) return;
   first_slot_of_pixel_.assign(size_t(width_) * size_t(height_), UINT32_MAX);
   for (size_t path = 0; path < buffer.paths(); ++path)
     if (buffer.count[path] > 0 && buffer.pixel[path] < first_slot_of_pixel_.size())
@@ -133,6 +136,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const bool combine = settings_.local_combining;
   const uint64_t pass_hash = pass_jitter_hash(seed, pass);
   const VoxelKeyIsa isa = widest_voxel_key_isa();
+  const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
   // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most.
@@ -154,13 +158,13 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
         if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
           slots_[i] = int64_t(e.slot);
-          probes_[i] = 0;
+          if (keep_probes) probes_[i] = 0;
           LocalVoxelCache::add(e, fixed_batch[j]);
           continue;
         }
         const ProbeResult pr = view.find_or_insert(hashes[j]);
         ++insertions;
-        probes_[i] = uint16_t(pr.probes);
+        if (keep_probes) probes_[i] = uint16_t(pr.probes);
         probes += uint64_t(pr.probes);
         probes_max = std::max(probes_max, uint64_t(pr.probes));
         slots_[i] = pr.slot;
@@ -200,7 +204,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       }
       compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
       for (int j = 0; j < block_n; ++j) {
-        keys_[block_slot[j]] = key_batch.keys[j];
+        if (keep_keys) keys_[block_slot[j]] = key_batch.keys[j];
         __builtin_prefetch(&local.entry_for(key_batch.hashes[j]), 1, 3);  // an L2 miss when vertices are incoherent
       }
     };
@@ -210,25 +214,26 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         if (block_n == 0) break;
       }
       {
-        const size_t i = block_slot[block_next];
-        const VoxelHash h = key_batch.hashes[block_next++];
+        const int j = block_next++;
+        const size_t i = block_slot[j];
+        const VoxelHash h = key_batch.hashes[j];
         ++vertices;
         uint64_t fixed[3];
         if (!to_fixed_point(b.contribution[i], fixed)) {
           slots_[i] = kNotAccumulated;
-          probes_[i] = 0;
+          if (keep_probes) probes_[i] = 0;
           ++not_accumulated;
           continue;
         }
         if (coarse_table_) {
-          const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(keys_[i]), settings_.key.normal));
+          const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key_batch.keys[j]), settings_.key.normal));
           coarse_slots_[i] = cr.slot;
           if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
           slots_[i] = int64_t(e.slot);
-          probes_[i] = 0;
+          if (keep_probes) probes_[i] = 0;
           LocalVoxelCache::add(e, fixed);
           continue;
         }
@@ -279,6 +284,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   const uint64_t min_count = uint64_t(std::max(0, settings_.min_count));
+  const bool keep_counts = settings_.debug_images;
   std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0};
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t low = 0, neighbour_lookups = 0, multi = 0;
@@ -288,11 +294,11 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         const int64_t s = slots_[i];
         if (s < 0) {
           (*filtered)[i] = b.contribution[i];
-          counts_[i] = 0;
+          if (keep_counts) counts_[i] = 0;
           continue;
         }
         const VoxelCell& cell = view.cells[s];
-        counts_[i] = uint32_t(std::min<uint64_t>(cell.count, UINT32_MAX));
+        if (keep_counts) counts_[i] = uint32_t(std::min<uint64_t>(cell.count, UINT32_MAX));
         Rgb average = from_fixed_point(cell.sum, cell.count);
         if (cell.count < min_count) {
           ++low;
@@ -319,6 +325,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
 }
 
 Image HashedFilter::aov(FilterAov which) const {
+  if (!settings_.debug_images) throw Error("the hashed filter's debug images need HashedFilterSettings::debug_images (--aov)");
   Image img(width_, height_);
   for (size_t p = 0; p < first_slot_of_pixel_.size() && p < img.size(); ++p) {
     const uint32_t i = first_slot_of_pixel_[p];

@@ -47,14 +47,16 @@ class HashedFilter final : public PathSpaceFilter {
   const HashedFilterStats& stats() const { return stats_; }
   void reset_stats();
   const VoxelHashTable& table() const { return table_; }
-  // AOV of the last filtered pass (width x height of the camera).
+  // AOV of the last filtered pass (width x height of the camera); needs settings.debug_images.
   Image aov(FilterAov which) const;
+  bool has_debug_images() const { return settings_.debug_images; }
 
   // Key of a record (exposed for tests and benchmarks).
   VoxelKey key_of(const VertexBuffer& buffer, size_t slot, uint64_t seed, uint32_t pass) const;
 
  private:
   VoxelKey key_for_pass(const VertexBuffer& buffer, size_t slot, uint64_t pass_hash) const;
+  bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
   Rgb neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const;

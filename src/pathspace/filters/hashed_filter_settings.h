@@ -13,6 +13,7 @@ struct HashedFilterSettings {
   bool neighbour_search = false;  // sec. 3.3.1: add the 26 neighbouring voxels of a low-count voxel
   bool multi_level = false;       // sec. 3.3.2: also accumulate one level coarser, use it when low-count
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
+  bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
 };
 
 }  // namespace pathspace

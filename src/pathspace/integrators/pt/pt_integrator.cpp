@@ -97,7 +97,7 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
 std::string PtIntegrator::report() const { return filter_ ? filter_->report() : std::string(); }
 
 std::vector<NamedImage> PtIntegrator::aovs() const {
-  if (!hashed_) return {};
+  if (!hashed_ || !hashed_->has_debug_images()) return {};  // the CLI's --aov turns them on
   return {{"voxel", hashed_->aov(FilterAov::voxel)},
           {"count", hashed_->aov(FilterAov::count)},
           {"level", hashed_->aov(FilterAov::level)},
