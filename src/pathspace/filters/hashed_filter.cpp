@@ -19,8 +19,7 @@ namespace pathspace {
 namespace {
 
 constexpr size_t kGrain = 2048;
-constexpr int64_t kNotInserted = -1;  // probe limit reached
-constexpr int64_t kNotAccumulated = -2;  // contribution not representable (NaN, negative, huge)
+constexpr int32_t kNotAccumulated = -2;  // contribution not representable (NaN, negative, huge)
 
 double milliseconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -157,7 +156,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         const size_t i = batch[j];
         LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
         if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
-          slots_[i] = int64_t(e.slot);
+          slots_[i] = int32_t(e.slot);
           if (keep_probes) probes_[i] = 0;
           LocalVoxelCache::add(e, fixed_batch[j]);
           continue;
@@ -167,7 +166,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         if (keep_probes) probes_[i] = uint16_t(pr.probes);
         probes += uint64_t(pr.probes);
         probes_max = std::max(probes_max, uint64_t(pr.probes));
-        slots_[i] = pr.slot;
+        slots_[i] = int32_t(pr.slot);  // -1: probe limit reached
         if (pr.slot < 0) {
           ++failures;
           continue;
@@ -227,12 +226,12 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         }
         if (coarse_table_) {
           const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key_batch.keys[j]), settings_.key.normal));
-          coarse_slots_[i] = cr.slot;
+          coarse_slots_[i] = int32_t(cr.slot);
           if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
-          slots_[i] = int64_t(e.slot);
+          slots_[i] = int32_t(e.slot);
           if (keep_probes) probes_[i] = 0;
           LocalVoxelCache::add(e, fixed);
           continue;
@@ -291,7 +290,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
     for (size_t path = begin; path < end; ++path) {
       for (int r = 0; r < b.count[path]; ++r) {
         const size_t i = b.slot(path, r);
-        const int64_t s = slots_[i];
+        const int32_t s = slots_[i];
         if (s < 0) {
           (*filtered)[i] = b.contribution[i];
           if (keep_counts) counts_[i] = 0;

@@ -67,7 +67,7 @@ class HashedFilter final : public PathSpaceFilter {
   std::unique_ptr<VoxelHashTable> coarse_table_;  // multi-level accumulation
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;
-  std::vector<int64_t> slots_, coarse_slots_;
+  std::vector<int32_t> slots_, coarse_slots_;  // table cell per record slot; < 0: not in the table
   std::vector<uint16_t> probes_;
   std::vector<uint32_t> counts_;
   std::vector<uint32_t> first_slot_of_pixel_;

@@ -33,8 +33,8 @@ uint64_t next_power_of_two(uint64_t x) {
 VoxelHashTable::VoxelHashTable(uint64_t cells, int max_probes) {
   if (max_probes < 1) throw Error("the probe limit must be at least 1");
   const uint64_t n = next_power_of_two(cells < kFingerprintsPerLine ? kFingerprintsPerLine : cells);
-  // Slots are 32-bit in the filter's combining cache (filters/local_voxel_cache.h).
-  if (n > (uint64_t(1) << 32)) throw Error("the voxel hash table is limited to 2^32 cells");
+  // The filter keeps each vertex's cell as a signed 32-bit index (negative: not in the table).
+  if (n > (uint64_t(1) << 31)) throw Error("the voxel hash table is limited to 2^31 cells");
   fingerprints_.reset(allocate_lines<uint32_t>(n));
   cells_.reset(allocate_lines<VoxelCell>(n));
   view_.fingerprints = fingerprints_.get();
