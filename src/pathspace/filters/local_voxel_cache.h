@@ -23,7 +23,7 @@ struct LocalVoxelCache {
     uint64_t sum[3] = {0, 0, 0};
     uint32_t fingerprint = kEmptyFingerprint;
     // Low half of the table index: with the fingerprint it names the table cell, since equal
-    // (home cell, fingerprint) always probe to the same cell and tables have at most 2^32 cells.
+    // (home cell, fingerprint) always probe to the same cell and tables have at most 2^31 cells.
     uint32_t index_low = 0;
     uint32_t slot = 0;
     uint32_t count = 0;

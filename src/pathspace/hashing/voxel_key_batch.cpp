@@ -18,15 +18,14 @@ namespace {
 
 constexpr int kN = kVoxelKeyBatchSize;
 
-// Lane-wise forms of voxel_key.h's helpers, written without branches or calls so that they
-// vectorise; each performs the same float operations in the same order as its scalar original.
+// Lane-wise forms of the voxel_key.h helpers that branch or call (level_of_detail, octahedral_bin),
+// written with selects so that they vectorise; each performs the same float operations in the same
+// order as its scalar original. mix64 and power_of_two are used as they are.
 inline int lod_lane(float psf_pixel, float distance) {
   const float target = psf_pixel * (distance > 1e-6f ? distance : 1e-6f) * 1.41421356f;
   const int e = int((std::bit_cast<uint32_t>(target) >> 23) & 0xffu) - 127;
   return e < -60 ? -60 : (e > 60 ? 60 : e);
 }
-
-inline float pow2_lane(int level) { return std::bit_cast<float>(uint32_t(127 + level) << 23); }
 
 inline uint32_t octahedral_lane(float x, float y, float z, int bins) {
   const float l1 = fabsf(x) + fabsf(y) + fabsf(z);
@@ -42,11 +41,6 @@ inline uint32_t octahedral_lane(float x, float y, float z, int bins) {
   return uint32_t(1 + iu * bins + iw);
 }
 
-inline uint64_t mix_lane(uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
 
 // Algorithm 1 on lanes [0, n); see make_voxel_key() for the meaning of each step. Options are
 // template arguments or bit masks: a select on a scalar flag inside the loop keeps it scalar.
@@ -67,7 +61,7 @@ template <bool kJitter>
     const float qx = b.px[j] - b.prev_x[j], qy = b.py[j] - b.prev_y[j], qz = b.pz[j] - b.prev_z[j];
     const int l = lod_lane(psf_pixel, b.prefix_distance[j] + sqrtf(qx * qx + qy * qy + qz * qz));
     // Jitter in the tangent plane of the geometric normal (Frame(ng): Duff et al. 2017).
-    const uint64_t h = mix_lane(b.jitter_seed[j]);
+    const uint64_t h = mix64(b.jitter_seed[j]);
     // 24-bit values, converted through int32 (exact) because a vector u64 -> float needs AVX-512.
     const float u0 = float(int32_t(h >> 40)) * 0x1p-24f, u1 = float(int32_t((h << 24) >> 40)) * 0x1p-24f;
     const float nx = b.ngx[j], ny = b.ngy[j], nz = b.ngz[j];
@@ -76,7 +70,7 @@ template <bool kJitter>
     const float bb = nx * ny * a;
     const float sx = 1.f + sign * nx * nx * a, sy = sign * bb, sz = -sign * nx;
     const float tx = bb, ty = sign + ny * ny * a, tz = -ny;
-    const float edge = pow2_lane(l);
+    const float edge = power_of_two(l);
     const float j0 = (u0 - 0.5f) * edge, j1 = (u1 - 0.5f) * edge;
     float xx = b.px[j], xy = b.py[j], xz = b.pz[j];
     int lj = l;
@@ -87,7 +81,7 @@ template <bool kJitter>
       const float rx = xx - b.prev_x[j], ry = xy - b.prev_y[j], rz = xz - b.prev_z[j];
       lj = lod_lane(psf_pixel, b.prefix_distance[j] + sqrtf(rx * rx + ry * ry + rz * rz));
     }
-    const float inv_edge = pow2_lane(-lj);
+    const float inv_edge = power_of_two(-lj);
     cx[j] = int32_t(floorf(xx * inv_edge));
     cy[j] = int32_t(floorf(xy * inv_edge));
     cz[j] = int32_t(floorf(xz * inv_edge));
@@ -104,8 +98,8 @@ template <bool kJitter>
                                 (uint64_t(b.layer[j] & 3u) << 22) | (uint64_t(b.selected[j] & 3u) << 20) |
                                 (uint64_t(dbin[j] & 1023u) << 10);
     const uint64_t normal_word = uint64_t(nbin[j] & 1023u);
-    index[j] = mix_lane(position ^ mix_lane(attributes | (normal_word & normal_index_mask)));
-    const uint64_t f = mix_lane(mix_lane((attributes | normal_word) ^ 0x5bd1e9955bd1e995ull) + position * 0x2545f4914f6cdd1dull);
+    index[j] = mix64(position ^ mix64(attributes | (normal_word & normal_index_mask)));
+    const uint64_t f = mix64(mix64((attributes | normal_word) ^ 0x5bd1e9955bd1e995ull) + position * 0x2545f4914f6cdd1dull);
     const uint32_t fp = uint32_t(f >> 32);
     fingerprint[j] = fp == kEmptyFingerprintValue ? 1u : fp;
   }
