@@ -1,0 +1,147 @@
+// Every vertex gets exactly the average of the vertices that share its voxel key (Binder et al.
+// 2021, sec. 3.2), computed here independently from the scalar key (HashedFilter::key_of): with
+// empty record slots between the vertices, several records per path, unrepresentable
+// contributions, and the two low-count fallbacks (26 neighbours, sec. 3.3.1; one level coarser,
+// sec. 3.3.2). Fixed-point sums make the expected values exact, so the comparison is exact.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
+
+#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/sampling/rng.h"
+#include "pathspace/scene/builtin_scenes.h"
+
+namespace pathspace {
+namespace {
+
+using KeyTuple = std::array<int64_t, 8>;
+
+KeyTuple tuple_of(const VoxelKey& k) {
+  return {k.cell[0], k.cell[1], k.cell[2], k.level, k.normal_bin, k.direction_bin, k.layer, k.selected};
+}
+
+struct Sum {
+  uint64_t s[3] = {0, 0, 0};
+  uint64_t count = 0;
+};
+
+// Vertices on two planes, denser towards one corner so that voxels range from one to hundreds of
+// vertices; about a third of the slots are empty.
+VertexBuffer make_buffer(size_t paths, int records_per_path, uint64_t seed) {
+  VertexBuffer b;
+  b.resize(paths, records_per_path);
+  Pcg32 rng(seed, 7);
+  for (size_t path = 0; path < paths; ++path) {
+    const int count = int(rng.next_bounded(uint32_t(records_per_path + 1)));
+    b.count[path] = uint8_t(count);
+    for (int r = 0; r < count; ++r) {
+      const size_t i = b.slot(path, r);
+      const float u = rng.next_float(), v = rng.next_float();
+      const bool floor = rng.next_float() < 0.5f;
+      const Vec3 n = floor ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+      b.position[i] = floor ? Vec3(u * u * u, 0.f, v * v) : Vec3(u * u, v * v * v, -1.f);
+      b.previous_position[i] = b.position[i] + Vec3(0.3f, 0.8f, 1.5f);
+      b.prefix_distance[i] = 0.5f * float(r);
+      b.geometric_normal[i] = b.shading_normal[i] = n;
+      b.incident[i] = normalize(Vec3(0.3f, 0.8f, 1.5f));
+      b.roughness[i] = r == 0 ? 1.f : 0.2f;  // the second record is glossy: direction in the key
+      b.selected[i] = uint8_t(r);
+      b.contribution[i] = Rgb(rng.next_float(), 2.f * rng.next_float(), 0.5f * rng.next_float());
+      if (rng.next_bounded(97) == 0) b.contribution[i] = Rgb(-1.f, 0.f, 0.f);  // not accumulated
+      if (rng.next_bounded(101) == 0) b.contribution[i].g = std::numeric_limits<float>::quiet_NaN();
+    }
+  }
+  return b;
+}
+
+enum class Fallback { none, neighbours, coarser };
+
+void expect_exact_averages(Fallback fallback, int records_per_path, int threads_seed) {
+  const Scene scene = make_builtin_scene("cornell-box", 64, 64);
+  HashedFilterSettings settings;
+  settings.key.psf_scale = 3.f;
+  settings.min_count = 6;
+  settings.neighbour_search = fallback == Fallback::neighbours;
+  settings.multi_level = fallback == Fallback::coarser;
+  HashedFilter filter(settings, scene.camera, size_t(1) << 16);  // large enough: no probe-limit fallbacks
+  const VertexBuffer b = make_buffer(20000, records_per_path, uint64_t(threads_seed));
+  const uint64_t seed = 42;
+  const uint32_t pass = 3;
+  std::vector<Rgb> filtered;
+  filter.filter(b, seed, pass, &filtered);
+  ASSERT_EQ(filter.stats().probe_failures, 0u);
+
+  std::map<KeyTuple, Sum> voxels, coarse_voxels;
+  std::vector<VoxelKey> keys(filtered.size());
+  std::vector<bool> accumulated(filtered.size(), false);
+  for (size_t path = 0; path < b.paths(); ++path)
+    for (int r = 0; r < b.count[path]; ++r) {
+      const size_t i = b.slot(path, r);
+      uint64_t fixed[3];
+      if (!to_fixed_point(b.contribution[i], fixed)) continue;
+      accumulated[i] = true;
+      keys[i] = filter.key_of(b, i, seed, pass);
+      for (Sum* s : {&voxels[tuple_of(keys[i])], &coarse_voxels[tuple_of(coarser_key(keys[i]))]}) {
+        for (int c = 0; c < 3; ++c) s->s[c] += fixed[c];
+        ++s->count;
+      }
+    }
+  ASSERT_GT(voxels.size(), 500u);
+
+  size_t low = 0, checked = 0;
+  for (size_t path = 0; path < b.paths(); ++path)
+    for (int r = 0; r < b.count[path]; ++r) {
+      const size_t i = b.slot(path, r);
+      const Rgb got = filtered[i];
+      SCOPED_TRACE(testing::Message() << "slot " << i);
+      if (!accumulated[i]) {  // keeps its own contribution (NaN included)
+        for (int c = 0; c < 3; ++c)
+          if (std::isnan(b.contribution[i][c])) ASSERT_TRUE(std::isnan(got[c]));
+          else ASSERT_EQ(got[c], b.contribution[i][c]);
+        continue;
+      }
+      const Sum own = voxels.at(tuple_of(keys[i]));
+      Sum expected = own;
+      if (own.count < uint64_t(settings.min_count)) {
+        ++low;
+        if (fallback == Fallback::neighbours) {
+          expected = Sum{};
+          for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dx = -1; dx <= 1; ++dx) {
+                VoxelKey n = keys[i];
+                n.cell[0] += dx, n.cell[1] += dy, n.cell[2] += dz;
+                const auto it = voxels.find(tuple_of(n));
+                if (it == voxels.end()) continue;
+                for (int c = 0; c < 3; ++c) expected.s[c] += it->second.s[c];
+                expected.count += it->second.count;
+              }
+        } else if (fallback == Fallback::coarser) {
+          const Sum coarse = coarse_voxels.at(tuple_of(coarser_key(keys[i])));
+          if (coarse.count > own.count) expected = coarse;
+        }
+      }
+      const Rgb want = from_fixed_point(expected.s, expected.count);
+      ASSERT_EQ(got.r, want.r);
+      ASSERT_EQ(got.g, want.g);
+      ASSERT_EQ(got.b, want.b);
+      ++checked;
+    }
+  EXPECT_GT(low, checked / 20) << "the low-count fallback must be exercised";
+  EXPECT_LT(low, checked / 2) << "most voxels must hold several vertices";
+}
+
+TEST(HashedFilterAverages, EveryVertexGetsItsVoxelAverage) { expect_exact_averages(Fallback::none, 1, 1); }
+TEST(HashedFilterAverages, SeveralRecordsPerPath) { expect_exact_averages(Fallback::none, 2, 2); }
+TEST(HashedFilterAverages, NeighbourSearchAddsTheTwentySixNeighbours) {
+  expect_exact_averages(Fallback::neighbours, 2, 3);
+}
+TEST(HashedFilterAverages, MultiLevelUsesTheCoarserVoxel) { expect_exact_averages(Fallback::coarser, 2, 4); }
+
+}  // namespace
+}  // namespace pathspace
