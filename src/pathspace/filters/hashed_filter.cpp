@@ -156,9 +156,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         const size_t i = batch[j];
         LocalVoxelCache::Entry& e = local.entry_for(hashes[j]);
         if (combine && LocalVoxelCache::holds(e, hashes[j])) {  // an earlier vertex of this batch opened it
-          slots_[i] = int32_t(e.slot);
+          slots_[i] = int32_t(LocalVoxelCache::slot(e));
           if (keep_probes) probes_[i] = 0;
-          LocalVoxelCache::add(e, fixed_batch[j]);
+          local.add(view, e, fixed_batch[j]);
           continue;
         }
         const ProbeResult pr = view.find_or_insert(hashes[j]);
@@ -173,7 +173,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         }
         local.evict(view, e);
         LocalVoxelCache::open(e, hashes[j], uint64_t(pr.slot));
-        LocalVoxelCache::add(e, fixed_batch[j]);
+        local.add(view, e, fixed_batch[j]);
         if (!combine) local.evict(view, e);
       }
       n = 0;
@@ -204,7 +204,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
       for (int j = 0; j < block_n; ++j) {
         if (keep_keys) keys_[block_slot[j]] = key_batch.keys[j];
-        __builtin_prefetch(&local.entry_for(key_batch.hashes[j]), 1, 3);  // an L2 miss when vertices are incoherent
+        local.prefetch(key_batch.hashes[j]);  // an L2 miss when vertices are incoherent
       }
     };
     for (;;) {
@@ -231,9 +231,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
-          slots_[i] = int32_t(e.slot);
+          slots_[i] = int32_t(LocalVoxelCache::slot(e));
           if (keep_probes) probes_[i] = 0;
-          LocalVoxelCache::add(e, fixed);
+          local.add(view, e, fixed);
           continue;
         }
         const uint64_t home = h.index & view.mask;

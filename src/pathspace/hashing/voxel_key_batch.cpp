@@ -58,13 +58,13 @@ template <bool kJitter>
 
 #pragma omp simd
   for (int j = 0; j < n; ++j) {
-    const float qx = b.px[j] - b.prev_x[j], qy = b.py[j] - b.prev_y[j], qz = b.pz[j] - b.prev_z[j];
+    const float qx = b.p[j].x - b.prev_p[j].x, qy = b.p[j].y - b.prev_p[j].y, qz = b.p[j].z - b.prev_p[j].z;
     const int l = lod_lane(psf_pixel, b.prefix_distance[j] + sqrtf(qx * qx + qy * qy + qz * qz));
     // Jitter in the tangent plane of the geometric normal (Frame(ng): Duff et al. 2017).
     const uint64_t h = mix64(b.jitter_seed[j]);
     // 24-bit values, converted through int32 (exact) because a vector u64 -> float needs AVX-512.
     const float u0 = float(int32_t(h >> 40)) * 0x1p-24f, u1 = float(int32_t((h << 24) >> 40)) * 0x1p-24f;
-    const float nx = b.ngx[j], ny = b.ngy[j], nz = b.ngz[j];
+    const float nx = b.ng[j].x, ny = b.ng[j].y, nz = b.ng[j].z;
     const float sign = copysignf(1.f, nz);
     const float a = -1.f / (sign + nz);
     const float bb = nx * ny * a;
@@ -72,13 +72,13 @@ template <bool kJitter>
     const float tx = bb, ty = sign + ny * ny * a, tz = -ny;
     const float edge = power_of_two(l);
     const float j0 = (u0 - 0.5f) * edge, j1 = (u1 - 0.5f) * edge;
-    float xx = b.px[j], xy = b.py[j], xz = b.pz[j];
+    float xx = b.p[j].x, xy = b.p[j].y, xz = b.p[j].z;
     int lj = l;
     if constexpr (kJitter) {
       xx = xx + sx * j0 + tx * j1;
       xy = xy + sy * j0 + ty * j1;
       xz = xz + sz * j0 + tz * j1;
-      const float rx = xx - b.prev_x[j], ry = xy - b.prev_y[j], rz = xz - b.prev_z[j];
+      const float rx = xx - b.prev_p[j].x, ry = xy - b.prev_p[j].y, rz = xz - b.prev_p[j].z;
       lj = lod_lane(psf_pixel, b.prefix_distance[j] + sqrtf(rx * rx + ry * ry + rz * rz));
     }
     const float inv_edge = power_of_two(-lj);
@@ -87,8 +87,8 @@ template <bool kJitter>
     cz[j] = int32_t(floorf(xz * inv_edge));
     level[j] = lj;
     // Both bins are computed for every lane and then selected: a branch would keep the loop scalar.
-    const uint32_t normal_bin = octahedral_lane(b.nsx[j], b.nsy[j], b.nsz[j], normal_bins);
-    const uint32_t direction_bin = octahedral_lane(b.wox[j], b.woy[j], b.woz[j], direction_bins);
+    const uint32_t normal_bin = octahedral_lane(b.ns[j].x, b.ns[j].y, b.ns[j].z, normal_bins);
+    const uint32_t direction_bin = octahedral_lane(b.wo[j].x, b.wo[j].y, b.wo[j].z, direction_bins);
     nbin[j] = normal_bin & normal_mask;
     dbin[j] = b.roughness[j] < glossy ? direction_bin : 0u;
 

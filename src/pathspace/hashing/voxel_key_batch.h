@@ -14,26 +14,22 @@ namespace pathspace {
 inline constexpr int kVoxelKeyBatchSize = 64;
 
 struct VoxelKeyBatch {
-  // Inputs, one lane per vertex (fill lanes [0, n)).
-  alignas(64) float px[kVoxelKeyBatchSize], py[kVoxelKeyBatchSize], pz[kVoxelKeyBatchSize];
-  alignas(64) float prev_x[kVoxelKeyBatchSize], prev_y[kVoxelKeyBatchSize], prev_z[kVoxelKeyBatchSize];
-  alignas(64) float ngx[kVoxelKeyBatchSize], ngy[kVoxelKeyBatchSize], ngz[kVoxelKeyBatchSize];
-  alignas(64) float nsx[kVoxelKeyBatchSize], nsy[kVoxelKeyBatchSize], nsz[kVoxelKeyBatchSize];
-  alignas(64) float wox[kVoxelKeyBatchSize], woy[kVoxelKeyBatchSize], woz[kVoxelKeyBatchSize];
+  // Inputs, one lane per vertex (fill lanes [0, n)). Vectors are kept whole (the kernel reads
+  // them with stride-3 loads): copying each vertex's vectors as three separate floats cost
+  // more than the key arithmetic (docs/benchmarks.md).
+  alignas(64) Vec3 p[kVoxelKeyBatchSize], prev_p[kVoxelKeyBatchSize];
+  alignas(64) Vec3 ng[kVoxelKeyBatchSize], ns[kVoxelKeyBatchSize], wo[kVoxelKeyBatchSize];
   alignas(64) float prefix_distance[kVoxelKeyBatchSize], roughness[kVoxelKeyBatchSize];
   alignas(64) uint64_t jitter_seed[kVoxelKeyBatchSize];  // mixed into the two jitter numbers
-  alignas(64) uint32_t layer[kVoxelKeyBatchSize], selected[kVoxelKeyBatchSize];
+  alignas(64) uint8_t layer[kVoxelKeyBatchSize], selected[kVoxelKeyBatchSize];
 
   // Outputs.
   VoxelKey keys[kVoxelKeyBatchSize];
   VoxelHash hashes[kVoxelKeyBatchSize];
 
   void set_input(int lane, const VoxelKeyInput& v, uint64_t seed) {
-    px[lane] = v.p.x, py[lane] = v.p.y, pz[lane] = v.p.z;
-    prev_x[lane] = v.prev_p.x, prev_y[lane] = v.prev_p.y, prev_z[lane] = v.prev_p.z;
-    ngx[lane] = v.ng.x, ngy[lane] = v.ng.y, ngz[lane] = v.ng.z;
-    nsx[lane] = v.ns.x, nsy[lane] = v.ns.y, nsz[lane] = v.ns.z;
-    wox[lane] = v.wo.x, woy[lane] = v.wo.y, woz[lane] = v.wo.z;
+    p[lane] = v.p, prev_p[lane] = v.prev_p;
+    ng[lane] = v.ng, ns[lane] = v.ns, wo[lane] = v.wo;
     prefix_distance[lane] = v.prefix_distance;
     roughness[lane] = v.roughness;
     jitter_seed[lane] = seed;
