@@ -14,9 +14,9 @@ namespace pathspace {
 inline constexpr int kVoxelKeyBatchSize = 64;
 
 struct VoxelKeyBatch {
-  // Inputs, one lane per vertex (fill lanes [0, n)). Vectors are kept whole (the kernel reads
-  // them with stride-3 loads): copying each vertex's vectors as three separate floats cost
-  // more than the key arithmetic (docs/benchmarks.md).
+  // Inputs, one lane per vertex (fill lanes [0, n)). Vectors are kept whole and the kernel reads
+  // them with stride-3 loads: filling them is a little cheaper than splitting each vector into
+  // three float arrays (docs/benchmarks.md).
   alignas(64) Vec3 p[kVoxelKeyBatchSize], prev_p[kVoxelKeyBatchSize];
   alignas(64) Vec3 ng[kVoxelKeyBatchSize], ns[kVoxelKeyBatchSize], wo[kVoxelKeyBatchSize];
   alignas(64) float prefix_distance[kVoxelKeyBatchSize], roughness[kVoxelKeyBatchSize];
