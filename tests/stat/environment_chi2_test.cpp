@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "pathspace/lights/light_emission.h"
+#include "pathspace/scene/light_emission.h"
 #include "pathspace/scene/environment_image.h"
 #include "support/chi2.h"
 #include "support/statistics.h"

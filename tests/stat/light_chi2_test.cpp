@@ -1,4 +1,4 @@
-// Chi-square tests of next-event estimation (lights/light_sampling.h): the directions produced by
+// Chi-square tests of next-event estimation (scene/light_sampling.h): the directions produced by
 // sample_light against light_pdf, which must agree, for a sphere seen from outside (cone
 // sampling), a sphere seen from inside (area sampling) and triangles (area sampling converted to
 // solid angle). Every sample's pdf_w must also equal light_pdf at the sampled point.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "pathspace/lights/light_sampling.h"
+#include "pathspace/scene/light_sampling.h"
 #include "support/chi2.h"
 #include "support/statistics.h"
 

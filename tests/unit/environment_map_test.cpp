@@ -8,7 +8,7 @@
 
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
-#include "pathspace/lights/environment_light.h"
+#include "pathspace/scene/environment_light.h"
 #include "pathspace/sampling/rng.h"
 #include "pathspace/scene/environment_image.h"
 #include "support/temp_dir.h"

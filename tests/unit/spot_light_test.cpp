@@ -9,7 +9,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
-#include "pathspace/lights/light_emission.h"
+#include "pathspace/scene/light_emission.h"
 #include "pathspace/sampling/rng.h"
 #include "support/statistics.h"
 

@@ -10,7 +10,7 @@
 
 #include "pathspace/film/film.h"
 #include "pathspace/filters/vertex_buffer.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/stats/path_counters.h"
 
 namespace pathspace {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pathspace/integrators/common/path_sample.h"
+#include "pathspace/filters/path_sample.h"
 
 namespace pathspace {
 

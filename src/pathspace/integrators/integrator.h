@@ -11,7 +11,7 @@
 #include "pathspace/film/film.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/filters/filter_settings.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"

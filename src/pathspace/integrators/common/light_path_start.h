@@ -4,7 +4,7 @@
 #pragma once
 
 #include "pathspace/integrators/common/light_dimensions.h"
-#include "pathspace/lights/light_emission.h"
+#include "pathspace/scene/light_emission.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/scene_view.h"
 

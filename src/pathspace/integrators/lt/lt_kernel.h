@@ -1,5 +1,5 @@
 // One light-traced path (device-safe, templated on the ray caster "Tracer" like pt_trace_path):
-// emit from a light (lights/light_emission.h), scatter with the adjoint BSDF (TransportMode::
+// emit from a light (scene/light_emission.h), scatter with the adjoint BSDF (TransportMode::
 // importance) and connect every vertex to the camera by projection (PCLT paper eq. 4; through a
 // sampled lens point for a thin lens, PerspectiveCamera::project),
 // splatting into a SplatFilmView through the box pixel filter or a wider reconstruction kernel
@@ -13,9 +13,9 @@
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
-#include "pathspace/lights/light_emission.h"
+#include "pathspace/scene/light_emission.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/shading_material.h"

@@ -13,10 +13,10 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
-#include "pathspace/lights/light_sampling.h"
+#include "pathspace/scene/light_sampling.h"
 #include "pathspace/scene/shading_material.h"
 
 namespace pathspace {

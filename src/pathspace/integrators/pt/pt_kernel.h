@@ -9,10 +9,10 @@
 #pragma once
 
 #include "pathspace/integrators/common/dimensions.h"
-#include "pathspace/integrators/common/path_sample.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/filters/path_sample.h"
+#include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
-#include "pathspace/lights/light_sampling.h"
+#include "pathspace/scene/light_sampling.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/shading_material.h"

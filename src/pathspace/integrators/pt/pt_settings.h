@@ -1,7 +1,7 @@
 // Path tracing parameters and their defaults.
 #pragma once
 
-#include "pathspace/integrators/common/vertex_selection.h"
+#include "pathspace/filters/vertex_selection.h"
 #include "pathspace/sampling/mis.h"
 
 namespace pathspace {

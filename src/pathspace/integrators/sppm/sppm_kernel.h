@@ -10,11 +10,11 @@
 
 #include "pathspace/hashgrid/hash_grid_view.h"
 #include "pathspace/integrators/common/dimensions.h"
-#include "pathspace/integrators/common/path_counters.h"
+#include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
-#include "pathspace/lights/light_emission.h"
+#include "pathspace/scene/light_emission.h"
 #include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/parallel/atomics.h"
 #include "pathspace/sampling/sampler.h"
@@ -197,7 +197,7 @@ struct PhotonCounters {
   uint64_t gathered = 0;  // (photon vertex, visible point) pairs that added flux
 };
 
-// One photon path: emitted by sample_emission (lights/light_emission.h), scattered with importance
+// One photon path: emitted by sample_emission (scene/light_emission.h), scattered with importance
 // transport, depositing at every non-delta vertex including the first (SPPM has no separate direct
 // lighting).
 template <typename Tracer>

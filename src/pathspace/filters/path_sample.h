@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "pathspace/integrators/common/vertex_selection.h"
+#include "pathspace/filters/vertex_selection.h"
 #include "pathspace/materials/bsdf_layers.h"
 
 namespace pathspace {

@@ -5,7 +5,7 @@
 // from a disk of the scene's bounding sphere perpendicular to the propagation direction.
 #pragma once
 
-#include "pathspace/lights/light_sampling.h"
+#include "pathspace/scene/light_sampling.h"
 
 namespace pathspace {
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "pathspace/geometry/interaction.h"
-#include "pathspace/lights/environment_light.h"
+#include "pathspace/scene/environment_light.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/warps.h"
