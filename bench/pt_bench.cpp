@@ -1,10 +1,12 @@
 // Path tracing throughput on the default scene (cornell-box, 512x512): one pass = one sample per
-// pixel. Counters: samples/s (= paths/s), Mrays/s; 1 and 2 threads for the scaling ratio.
+// pixel. Counters: samples/s (= paths/s), Mrays/s; 1 and 2 threads for the scaling ratio. One
+// benchmark iteration = one pass of a RenderSession made outside the timed loop (as the CLI renders).
 #include <benchmark/benchmark.h>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/session/render_session.h"
 
 namespace pathspace {
 namespace {
@@ -12,18 +14,14 @@ namespace {
 void BM_PtCornellBox(benchmark::State& state) {
   static const Scene scene = make_builtin_scene("cornell-box", 512, 512);
   static const Accel accel(scene);
-  Film film(512, 512);
-  RenderRequest req;
-  req.spp = 1;
-  req.threads = int(state.range(0));
-  uint64_t rays = 0, paths = 0;
-  uint64_t seed = 0;
-  for (auto _ : state) {
-    req.settings.seed = seed++;
-    const RenderStats st = render(scene, accel, req, film);
-    rays += st.rays;
-    paths += st.paths;
-  }
+  RenderConfig config = make_render_config("pt", PtSettings{}, 0);
+  config.threads = int(state.range(0));
+  // Non-owning handles: scene and accel are static.
+  RenderSession session(std::shared_ptr<const Scene>(std::shared_ptr<void>(), &scene),
+                        std::shared_ptr<const Accel>(std::shared_ptr<void>(), &accel), config);
+  for (auto _ : state) session.run(RunLimit::for_passes(1));
+  const RenderStats st = session.stats();
+  const uint64_t rays = st.rays, paths = st.paths;
   state.counters["paths_per_s"] = benchmark::Counter(double(paths), benchmark::Counter::kIsRate);
   state.counters["Mrays_per_s"] = benchmark::Counter(double(rays) * 1e-6, benchmark::Counter::kIsRate);
   state.counters["rays_per_path"] = double(rays) / double(paths);

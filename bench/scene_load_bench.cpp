@@ -11,9 +11,9 @@
 #include <fstream>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/ply_reader.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/session/render.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -99,10 +99,7 @@ void BM_TimeToFirstPixel(benchmark::State& state) {
     const auto t1 = clock::now();
     const Accel accel(scene);
     const auto t2 = clock::now();
-    Film film(64, 64);
-    RenderRequest request;
-    request.spp = 1;
-    render(scene, accel, request, film);
+    render(scene, accel, RenderConfig{}, RunLimit::for_passes(1));
     const auto t3 = clock::now();
     load_s += std::chrono::duration<double>(t1 - t0).count();
     accel_s += std::chrono::duration<double>(t2 - t1).count();

@@ -1,4 +1,5 @@
-// `pathspace info`: lists the built-in scenes, the integrators and the build.
+// `pathspace info`: lists the built-in scenes, the integrators and filters with their options (from
+// the registry, as text or --json for tools), and the build.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,8 @@ namespace pathspace::cli {
 struct InfoOptions {
   bool scenes = false;
   bool integrators = false;
+  bool json = false;
+  bool markdown = false;
 };
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options);

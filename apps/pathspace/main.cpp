@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compare_command.h"
+#include "pathspace/options/option_spec.h"
 #include "info_command.h"
 #include "render_command.h"
 #include "study_command.h"
@@ -72,6 +73,9 @@ int main(int argc, char** argv) {
   } catch (const UsageError& e) {
     const std::string hint = e.hint().empty() ? "run '" + command + " --help' for usage" : e.hint();
     fmt::print(stderr, "{}: error: {} ({})\n", command, one_line(e.what()), hint);
+    return kExitUsage;
+  } catch (const pathspace::OptionError& e) {
+    fmt::print(stderr, "{}: error: {} (run '{} --help' for usage)\n", command, one_line(e.what()), command);
     return kExitUsage;
   } catch (const std::exception& e) {
     fmt::print(stderr, "{}: error: {}\n", command, one_line(e.what()));

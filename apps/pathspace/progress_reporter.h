@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "pathspace/integrators/render.h"
+#include "pathspace/session/render_session.h"
 
 namespace pathspace::cli {
 

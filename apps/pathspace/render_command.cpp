@@ -8,8 +8,10 @@
 #include <fmt/format.h>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/integrator.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/integrator_registry.h"
+#include "pathspace/session/render.h"
+#include "pathspace/session/render_session.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
@@ -48,12 +50,6 @@ std::vector<std::string> output_paths(const RenderOptions& o, const std::string&
   return {base + ".exr", base + ".png"};
 }
 
-void check_integrator(const std::string& name) {
-  const auto& names = integrator_names();
-  if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  throw UsageError(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(names, ", ")));
-}
-
 std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
   if (text.empty()) return std::nullopt;
   Vec3 v;
@@ -70,22 +66,24 @@ bool names_scene_file(const std::string& scene) {
   return is_scene_file(scene) || (!find_builtin_scene(scene) && std::filesystem::is_regular_file(scene, ec));
 }
 
-IntegratorSettings integrator_settings(const RenderOptions& o) {
-  IntegratorSettings s;
-  s.seed = o.seed;
-  s.pt.max_segments = o.max_depth > 0 ? o.max_depth : -1;
-  s.pt.nee = !o.no_nee;
-  s.pt.bsdf_sampling = !o.no_bsdf_sampling;
-  s.pt.mis = o.mis == "balance" ? MisHeuristic::balance : MisHeuristic::power;
-  if (!s.pt.nee && !s.pt.bsdf_sampling) throw UsageError("--no-nee and --no-bsdf-sampling together would render black");
-  apply_filter_options(o.filter, &s);
-  if (s.filter.kind != FilterKind::none && o.integrator != "pt")
-    throw UsageError("--filter " + o.filter.filter + " needs --integrator pt (path space filtering filters camera paths)");
-  apply_lt_options(o.lt, o.integrator, &s);
-  apply_bpt_options(o.bpt, o.integrator, &s);
-  apply_sppm_options(o.sppm, o.integrator, &s);
-  apply_pclt_options(o.pclt, o.integrator, &s);
-  return s;
+// The integrator, filter and their options, checked against the registry (usage errors name the
+// integrators or filter an option belongs to).
+RenderConfig render_config(const RenderOptions& o) {
+  try {
+    RenderConfig config = configure_render(o.integrator, o.filter, o.registry.given());
+    config.seed = o.seed;
+    config.threads = o.threads;
+    return config;
+  } catch (const OptionError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+// The names of the registered filters, with "none".
+std::vector<std::string> filter_choices() {
+  std::vector<std::string> names = {FilterChoice::kNone};
+  for (const std::string& n : filter_registry().names()) names.push_back(n);
+  return names;
 }
 
 }  // namespace
@@ -94,7 +92,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
   cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.xml/.gltf/.glb/.ply/.obj file")
       ->default_str(kDefaultSceneName);
-  cmd->add_option("-i,--integrator", o->integrator, "Integrator (see 'pathspace info --integrators')")
+  cmd->add_option("-i,--integrator", o->integrator,
+                  fmt::format("Integrator: {} (see 'pathspace info --integrators')", integrator_registry().joined_names()))
+      ->capture_default_str();
+  cmd->add_option("--filter", o->filter, "Path space filter of the selected vertices (with an integrator that composes with it)")
+      ->check(CLI::IsMember(filter_choices()))
       ->capture_default_str();
   CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16)")->check(CLI::Range(1u, 1u << 24));
   cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp")
@@ -111,25 +113,16 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(CLI::Range(1e-30, 1e30));
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
-  cmd->add_option("-d,--max-depth", o->max_depth, "Path length limit in segments, camera ray included (default: the scene's)")
-      ->check(CLI::Range(1, 1024));
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
   cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)");
   cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file");
   cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
-  cmd->add_flag("--no-nee", o->no_nee, "PT: no next event estimation (BSDF sampling only)");
-  cmd->add_flag("--no-bsdf-sampling", o->no_bsdf_sampling, "PT: emission only through next event estimation");
-  cmd->add_option("--mis", o->mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
   cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
       ->check(CLI::IsMember({"uniform", "power"}))
       ->capture_default_str();
-  add_filter_options(cmd, &o->filter);
-  add_lt_options(cmd, &o->lt);
-  add_bpt_options(cmd, &o->bpt);
-  add_sppm_options(cmd, &o->sppm);
-  add_pclt_options(cmd, &o->pclt);
+  o->registry.add_to(cmd);
   return cmd;
 }
 
@@ -148,10 +141,9 @@ int run_render_command(const RenderOptions& o) {
   if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
                      o.substitute_missing_textures))
     throw UsageError("--camera-pos, --camera-target, --camera-up, --fov and --substitute-missing-textures apply to scene files only");
-  check_integrator(o.integrator);
   Resolution res = parse_resolution(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
-  const IntegratorSettings settings = integrator_settings(o);
+  const RenderConfig config = render_config(o);
   const std::string display_name = from_file ? std::filesystem::path(scene_name).stem().string() : info->name;
   const std::vector<std::string> outputs = output_paths(o, display_name);
   for (const std::string& path : outputs) {
@@ -194,45 +186,38 @@ int run_render_command(const RenderOptions& o) {
   }
   scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
   scene.finalize();
-  Accel accel(scene);
-  Film film(res.width, res.height);
-
-  RenderRequest request;
-  request.integrator = o.integrator;
-  request.spp = o.spp > 0 ? o.spp : (file_settings.spp > 0 ? uint32_t(file_settings.spp) : 16);
-  request.time_limit_s = o.time_s;
-  request.threads = o.threads;
-  request.settings = settings;
-  request.want_aovs = o.filter.aovs || bpt_wants_aovs(o.bpt);
-  ProgressReporter progress(stdout, film.pixel_count(), o.quiet);
-  request.on_progress = [&](const RenderProgress& p) { progress.update(p); };
+  RenderSession session(std::move(scene), config);
+  const uint32_t spp = o.spp > 0 ? o.spp : (file_settings.spp > 0 ? uint32_t(file_settings.spp) : 16);
+  const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(spp);
+  ProgressReporter progress(stdout, uint64_t(res.width) * uint64_t(res.height), o.quiet);
   if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", display_name, from_file ? scene_name : info->id, res.width, res.height, o.integrator);
-  const RenderStats stats = render(scene, accel, request, film);
+  session.run(limit, [&](const RenderProgress& p) { progress.update(p); });
   progress.finish();
+  const RenderSnapshot result = session.snapshot();
+  const RenderStats& stats = result.stats;
 
-  const Image image = film.mean();
-  for (const std::string& path : outputs) write_image(path, image);
+  for (const std::string& path : outputs) write_image(path, result.mean);
   std::vector<std::string> written = outputs;
   if (!o.variance_path.empty()) {
-    write_image(o.variance_path, film.variance_of_mean());
+    write_image(o.variance_path, result.variance);
     written.push_back(o.variance_path);
   }
-  for (const NamedImage& aov : stats.aovs) {
+  for (const NamedImage& aov : result.aovs) {
     const std::filesystem::path first(outputs.front());
     const std::string path = (first.parent_path() / (first.stem().string() + ".aov-" + aov.name + ".exr")).string();
     write_image(path, aov.image);
     written.push_back(path);
   }
-  RenderRunInfo run{display_name, res.width, res.height, settings.pt.max_segments > 0 ? settings.pt.max_segments : scene.max_path_segments,
+  const OptionValues given = o.registry.given();
+  const std::string* depth = given.find("max-depth");
+  RenderRunInfo run{display_name, res.width, res.height, depth ? std::stoi(*depth) : session.scene().max_path_segments,
                     fmt::format("{}", fmt::join(written, ","))};
   if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
   if (!o.quiet) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    std::string report = stats.report;
-    if (!report.empty() && report.back() != '\n') report += '\n';
-    fmt::print("\n{}wrote {}\n", report, fmt::join(written, ", "));
+    fmt::print("\n{}wrote {}\n", format_statistics(stats.details), fmt::join(written, ", "));
   }
   return 0;
 }

@@ -7,11 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bpt_options.h"
-#include "filter_options.h"
-#include "lt_options.h"
-#include "pclt_options.h"
-#include "sppm_options.h"
+#include "registry_options.h"
 
 namespace pathspace::cli {
 
@@ -27,23 +23,16 @@ struct RenderOptions {
   uint32_t spp = 0;        // 0: unset
   double time_s = 0.0;     // 0: unset
   std::string resolution;  // "WxH"; empty: 512x512
-  int max_depth = 0;       // path segments; 0: the scene's limit
   uint64_t seed = 0;
   int threads = 0;
   std::vector<std::string> outputs;
   std::string stats_path;
   std::string variance_path;  // variance-of-the-mean image
   bool quiet = false;
-  // Integrator switches (mostly for experiments and tests).
-  bool no_nee = false;
-  bool no_bsdf_sampling = false;
-  std::string mis = "power";
   std::string light_selection = "uniform";
-  FilterOptions filter;
-  LtOptions lt;
-  BptOptions bpt;
-  SppmOptions sppm;
-  PcltOptions pclt;
+  std::string filter = "none";  // path space filter (filters/filter_registry.h)
+  // The integrators' and filters' own options, from the registry.
+  RegistryOptionParser registry;
 };
 
 // Adds the `render` subcommand to app; the options are stored in *options.

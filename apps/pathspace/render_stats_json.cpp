@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathspace/session/render.h"
+
 namespace pathspace::cli {
 
 std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run) {
@@ -24,7 +26,20 @@ std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run
   j["seed"] = stats.seed;
   j["build_type"] = build_type();
   j["outputs"] = run.outputs;
-  j["integrator_report"] = stats.report;  // e.g. the hashed filter's table statistics
+  j["filter"] = stats.filter;
+  // The integrator's and filter's typed statistics: name -> number (text or histogram bins).
+  nlohmann::ordered_json details = nlohmann::ordered_json::object();
+  for (const Statistic& s : stats.details.all()) {
+    if (s.kind == StatKind::histogram)
+      details[s.name] = s.bins;
+    else if (s.kind == StatKind::text)
+      details[s.name] = s.text;
+    else if (s.kind == StatKind::counter || s.kind == StatKind::bytes)
+      details[s.name] = uint64_t(s.number);
+    else
+      details[s.name] = s.number;
+  }
+  j["statistics"] = details;
   return j.dump(2) + "\n";
 }
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "pathspace/integrators/render.h"
+#include "pathspace/session/render_session.h"
 
 namespace pathspace::cli {
 

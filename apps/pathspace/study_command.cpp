@@ -1,18 +1,21 @@
 // `pathspace study pclt` (study_command.h): options, validation before any render, the per-scene loop
-// over the PCLT paper's figures, and the JSON and HTML outputs (written atomically, io/atomic_file.h).
+// over the PCLT paper's figures on the experiment harness (src/pathspace/study/), and the JSON and
+// HTML outputs (written atomically, io/atomic_file.h).
 #include "study_command.h"
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "pathspace/integrators/render.h"
+#include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/scene/builtin_scenes.h"
-#include "study_html.h"
+#include "pathspace/session/render.h"
+#include "pathspace/study/experiment_runner.h"
+#include "pathspace/study/html_report.h"
+#include "pathspace/study/image_files.h"
 #include "study_pclt_figures.h"
 #include "usage_error.h"
 
@@ -33,10 +36,7 @@ void parse_resolution(const std::string& text, int* width, int* height) {
 
 // The reference is rendered with the best unbiased integrator available: BPT covers every path the
 // Cornell variants have (caustics through its light-tracing strategies), PT is the fallback.
-std::string reference_integrator() {
-  const auto& names = integrator_names();
-  return std::find(names.begin(), names.end(), "bpt") != names.end() ? "bpt" : "pt";
-}
+std::string reference_integrator() { return integrator_registry().find("bpt") ? "bpt" : "pt"; }
 
 size_t max_builtin_light_count() {
   size_t n = 0;
@@ -80,28 +80,35 @@ int run_study_command(const StudyOptions& o) {
   }
   if (o.out.empty()) throw UsageError("--out must name a folder");
   const double reference_time = o.reference_time_s > 0 ? o.reference_time_s : kDefaultReferenceFactor * o.time_s;
-  std::error_code ec;
-  if (std::filesystem::exists(o.out, ec) && !std::filesystem::is_directory(o.out, ec))
-    throw Error("cannot write to '" + o.out + "': it is not a folder");
-  std::filesystem::create_directories(std::filesystem::path(o.out) / "images", ec);
-  if (ec) throw Error("cannot create '" + o.out + "/images': " + ec.message());
+  study::create_image_folder(o.out);
   check_output_writable(o.out + "/study.json");
 
-  StudyRunnerConfig config{o.out, o.seed, o.threads, !o.no_exr, o.quiet};
-  const StudyRunner runner(config);
+  study::RunnerOptions runner_options;
+  runner_options.out_dir = o.out;
+  runner_options.write_exr = !o.no_exr;
+  runner_options.threads = o.threads;
+  runner_options.keep_images = true;  // fig. 6 compares with fig. 1's image
+  runner_options.quiet = o.quiet;
+  const study::ExperimentRunner runner(runner_options);
+  const std::string ref_integrator = reference_integrator();
+  study::ReferenceSpec reference;
+  reference.render = study::reference_render_config(ref_integrator);
+  reference.render.seed = o.seed + study::kReferenceSeedOffset;
+  reference.budget = study::Budget::for_seconds(reference_time);
+
   std::vector<StudyFigure> figures = make_pclt_figures();
   describe_fig9(max_builtin_light_count(), &figures);
-  std::vector<StudySceneSummary> summaries;
+  std::vector<study::SceneSummary> summaries;
   nlohmann::ordered_json references = nlohmann::ordered_json::object();
-  const std::string ref_integrator = reference_integrator();
   for (const std::string& name : scene_names) {
     // One scene at a time: its geometry, acceleration structure and images are freed before the next.
-    const auto scene = runner.prepare_scene(name, width, height, ref_integrator, reference_time);
-    run_pclt_figures(runner, *scene, PcltStudyParams{o.time_s}, &figures);
-    summaries.push_back({scene->id, scene->name, scene->light_count, scene->reference_png, scene->reference_info});
-    references[scene->id] = scene->reference_info;
-    references[scene->id]["name"] = scene->name;
-    references[scene->id]["lights"] = scene->light_count;
+    const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, width, height}, reference);
+    run_pclt_figures(runner, scene, PcltStudyParams{o.time_s, o.seed}, &figures);
+    summaries.push_back(scene.summary);
+    nlohmann::ordered_json& r = references[scene.id()];
+    r = study::to_json(scene.summary.reference);
+    r["name"] = scene.summary.name;
+    r["lights"] = scene.summary.light_count;
   }
 
   nlohmann::ordered_json settings;
@@ -113,7 +120,7 @@ int run_study_command(const StudyOptions& o) {
   settings["seed"] = o.seed;
   settings["threads"] = o.threads;
   settings["build_type"] = build_type();
-  settings["integrators"] = integrator_names();
+  settings["integrators"] = integrator_registry().names();
 
   nlohmann::ordered_json doc;
   doc["study"] = "pclt";
@@ -123,8 +130,12 @@ int run_study_command(const StudyOptions& o) {
   doc["figures"] = nlohmann::ordered_json::object();
   for (const StudyFigure& f : figures) doc["figures"][f.id] = to_json(f);
   write_text_file(o.out + "/study.json", doc.dump(2) + "\n");
-  write_text_file(o.out + "/study.html",
-                  study_html(o.out, "Pixel cache light tracing: the paper's figures on pathspace scenes", settings, summaries, figures));
+  study::ReportPage page;
+  page.title = "Pixel cache light tracing: the paper's figures on pathspace scenes";
+  page.settings = settings;
+  page.scenes = summaries;
+  for (const StudyFigure& f : figures) page.sections.push_back(report_section(f));
+  write_text_file(o.out + "/study.html", study::html_report(o.out, page));
   if (!o.quiet) fmt::print("wrote {0}/study.html, {0}/study.json and {0}/images/\n", o.out);
   return 0;
 }

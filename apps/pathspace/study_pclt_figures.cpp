@@ -1,6 +1,7 @@
-// The runs behind each reproduced PCLT paper figure (study_pclt_figures.h) and the one-line findings
-// computed from their numbers. Equal-iteration figures (5-8) use the iteration count PCLT reached in
-// fig. 1's time budget, so every figure's images are about as converged as fig. 1's.
+// The runs behind each reproduced PCLT paper figure (study_pclt_figures.h), as experiments on the
+// harness (src/pathspace/study/), and the one-line findings computed from their numbers.
+// Equal-iteration figures (5-8) use the iteration count PCLT reached in fig. 1's time budget, so
+// every figure's images are about as converged as fig. 1's.
 #include "study_pclt_figures.h"
 
 #include <algorithm>
@@ -9,12 +10,20 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
+#include "pathspace/film/image_metrics.h"
+#include "pathspace/integrators/integrator_registry.h"
+#include "pathspace/integrators/pclt/pclt_settings.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
 
 namespace pathspace::cli {
 
 namespace {
 
-using Format = MetricRow::Format;
+using study::Budget;
+using study::Configuration;
+using study::Measurement;
+using study::MetricFormat;
+using study::Record;
 
 StudyFigure& figure(std::vector<StudyFigure>* figures, const std::string& id) {
   for (StudyFigure& f : *figures)
@@ -22,28 +31,93 @@ StudyFigure& figure(std::vector<StudyFigure>* figures, const std::string& id) {
   throw Error("study: no figure " + id);
 }
 
-bool has_integrator(const std::string& name) {
-  const auto& names = integrator_names();
-  return std::find(names.begin(), names.end(), name) != names.end();
+bool has_integrator(const std::string& name) { return integrator_registry().find(name) != nullptr; }
+
+// The settings a figure varies, as they appear in study.json and the HTML tables.
+Record pclt_settings_record(const PcltSettings& s) {
+  const char* visibility[] = {"shadow-ray", "z-buffer", "plane"};
+  Record r;
+  r.set("light_paths_per_iteration", s.light_paths);
+  r.set("visibility", visibility[int(s.visibility)]);
+  if (s.visibility != PcltVisibility::shadow_ray) r.set("epsilon", s.epsilon);
+  r.set("hash_map", s.hash_map == PcltHashMap::chained ? "chained" : "stochastic");
+  if (s.hash_map == PcltHashMap::stochastic) r.set("stochastic_slots", s.stochastic_slots);
+  r.set("alpha", s.alpha);
+  r.set("specular_emission", s.specular_emission);
+  return r;
 }
 
-RunSpec pclt_spec(const std::string& fig, const std::string& label, uint64_t light_paths, uint32_t iterations) {
-  RunSpec s;
-  s.figure = fig;
-  s.label = label;
-  s.integrator = "pclt";
-  s.settings.pclt.light_paths = light_paths;
-  s.iterations = std::max<uint32_t>(1, iterations);
+Record sppm_settings_record(const SppmSettings& s) {
+  Record r;
+  r.set("photons_per_iteration", s.photons);
+  r.set("alpha", s.alpha);
+  return r;
+}
+
+// The integrators' typed statistics that the figures show (metric keys as in study.json).
+Configuration pclt_config(const std::string& label, const PcltSettings& s) {
+  Configuration c = study::configuration(label, make_render_config("pclt", s), pclt_settings_record(s));
+  c.statistics = {{"pclt.memory_bytes", "memory_bytes", 1.0, MetricFormat::bytes},
+                  {"pclt.cache_fill", "cache_fill_percent", 100.0, MetricFormat::percent},
+                  {"pclt.eye_s", "eye_s", 1.0, MetricFormat::seconds},
+                  {"pclt.build_s", "build_s", 1.0, MetricFormat::seconds},
+                  {"pclt.light_s", "light_s", 1.0, MetricFormat::seconds},
+                  {"pclt.gathered_per_iteration", "gathered_per_iteration", 1.0, MetricFormat::number},
+                  {"pclt.projections_per_iteration", "projections_per_iteration", 1.0, MetricFormat::number}};
+  return c;
+}
+
+Configuration sppm_config(const std::string& label, const SppmSettings& s) {
+  Configuration c = study::configuration(label, make_render_config("sppm", s), sppm_settings_record(s));
+  c.statistics = {{"sppm.eye_s", "eye_s", 1.0, MetricFormat::seconds}, {"sppm.photon_s", "light_s", 1.0, MetricFormat::seconds}};
+  return c;
+}
+
+// An integrator with its default settings (figure 1's PT, LT, BPT).
+Configuration defaults(const std::string& label, const std::string& integrator) {
+  RenderConfig render;
+  render.integrator = integrator;
+  return study::configuration(label, std::move(render));
+}
+
+PcltSettings pclt_settings(uint64_t light_paths, PcltVisibility visibility = PcltVisibility::shadow_ray) {
+  PcltSettings s;
+  s.light_paths = light_paths;
+  s.visibility = visibility;
   return s;
 }
 
-RunSpec finish(RunSpec s) {
-  if (s.integrator == "pclt") s.settings_json = pclt_settings_json(s.settings.pclt);
-  if (s.integrator == "sppm") s.settings_json = sppm_settings_json(s.settings.sppm);
-  return s;
+double metric(const Measurement& m, const char* key) {
+  const study::Value* v = m.metrics.find(key);
+  return v ? study::as_number(*v) : 0.0;
 }
 
-double metric(const StudyRun& r, const char* key) { return r.metrics.contains(key) ? r.metrics[key].get<double>() : 0.0; }
+// Runs the configurations of one figure on one scene (one seed), in order.
+class FigureRunner {
+ public:
+  FigureRunner(const study::ExperimentRunner& runner, const study::PreparedScene& scene, uint64_t seed)
+      : runner_(runner), scene_(scene), seed_(seed) {}
+
+  std::vector<Measurement> run(const std::string& fig, std::vector<Configuration> configurations, const Budget& budget,
+                               std::vector<study::ImageMetric> metrics = {}) const {
+    study::Experiment e;
+    e.name = fig;
+    e.configurations = std::move(configurations);
+    e.seeds = {seed_};
+    e.budget = budget;
+    e.metrics = std::move(metrics);
+    return runner_.run_scene(scene_, e);
+  }
+  Measurement run_one(const std::string& fig, Configuration configuration, const Budget& budget,
+                      std::vector<study::ImageMetric> metrics = {}) const {
+    return run(fig, {std::move(configuration)}, budget, std::move(metrics)).front();
+  }
+
+ private:
+  const study::ExperimentRunner& runner_;
+  const study::PreparedScene& scene_;
+  uint64_t seed_;
+};
 
 }  // namespace
 
@@ -68,8 +142,8 @@ std::vector<StudyFigure> make_pclt_figures() {
                "as fast as SPPM; the z-buffer loses energy on planar surfaces, the plane test errs slightly at edges.";
   f[2].method = "Fig. 5's iteration count; besides relMSE against the reference, each shortcut is compared with the "
                 "shadow-ray image of the same seed (the difference is the shortcut's bias plus little noise).";
-  f[2].metric_rows = {{"rel_mse_vs_shadow_ray", "relMSE vs shadow-ray image", Format::number},
-                      {"energy_vs_shadow_ray_percent", "energy vs shadow ray", Format::percent}};
+  f[2].metric_rows = {{"rel_mse_vs_shadow_ray", "relMSE vs shadow-ray image", study::MetricFormat::number},
+                      {"energy_vs_shadow_ray_percent", "energy vs shadow ray", study::MetricFormat::percent}};
   f[3].id = "fig7";
   f[3].title = "Fig. 7 - light paths per iteration: time, memory, error";
   f[3].paper = "Equal light-path count (200 x 2^18, 100 x 2^19, 50 x 2^20): more photons per iteration is faster at "
@@ -78,8 +152,8 @@ std::vector<StudyFigure> make_pclt_figures() {
                 "iteration, with 4, 1 and 1/4 times fig. 5's iterations. Memory is the integrator's reported bytes. The "
                 "paper's SPPM row is not repeated: pathspace's SPPM stores per-pixel visible points, not photons, so its "
                 "memory does not grow with the photon count either.";
-  f[3].metric_rows = {{"light_paths_total", "light paths in total", Format::number},
-                      {"memory_bytes", "memory", Format::bytes}};
+  f[3].metric_rows = {{"light_paths_total", "light paths in total", study::MetricFormat::number},
+                      {"memory_bytes", "memory", study::MetricFormat::bytes}};
   f[4].id = "fig8";
   f[4].title = "Fig. 8 - full (chained) vs stochastic hash map";
   f[4].paper = "8 iterations: the chained map (33 MiB) against stochastic hash maps of 33, 10 and 1 MiB. Timings are "
@@ -87,10 +161,10 @@ std::vector<StudyFigure> make_pclt_figures() {
                "not spread over neighbouring pixels, and at 1 MiB collisions start to show.";
   f[4].method = "Fig. 5's iteration count; stochastic tables of 1, 1/8 and 1/64 times the default slot count "
                 "(the cache capacity rounded up to a power of two). Eye and light pass times from the integrator.";
-  f[4].metric_rows = {{"memory_bytes", "memory", Format::bytes},
-                      {"eye_s", "eye pass (all iterations)", Format::seconds},
-                      {"light_s", "light pass (all iterations)", Format::seconds},
-                      {"gathered_per_iteration", "gathered records / iteration", Format::number}};
+  f[4].metric_rows = {{"memory_bytes", "memory", study::MetricFormat::bytes},
+                      {"eye_s", "eye pass (all iterations)", study::MetricFormat::seconds},
+                      {"light_s", "light pass (all iterations)", study::MetricFormat::seconds},
+                      {"gathered_per_iteration", "gathered records / iteration", study::MetricFormat::number}};
   f[5].id = "fig9";
   f[5].title = "Fig. 9 - many lights and distant lights";
   f[5].paper = "A room with 69 lights (BPT 376 s vs PCLT 258 s: light tracing places photons near the lights while "
@@ -108,36 +182,29 @@ void describe_fig9(size_t max_builtin_lights, std::vector<StudyFigure>* figures)
       max_builtin_lights, max_builtin_lights == 1 ? "" : "s");
 }
 
-void run_pclt_figures(const StudyRunner& runner, const StudyScene& scene, const PcltStudyParams& params,
+void run_pclt_figures(const study::ExperimentRunner& runner, const study::PreparedScene& scene, const PcltStudyParams& params,
                       std::vector<StudyFigure>* figures) {
-  const uint64_t pixels = uint64_t(scene.scene.camera.width) * uint64_t(scene.scene.camera.height);
-  auto add = [&](const RunSpec& spec) { return runner.run(scene, finish(spec)); };
+  const std::string& id = scene.id();
+  const uint64_t pixels = uint64_t(scene.summary.width) * uint64_t(scene.summary.height);
+  const FigureRunner fr(runner, scene, params.seed);
+  auto passes = [](uint32_t n) { return Budget::for_passes(std::max<uint32_t>(1, n)); };
 
   // Fig. 1: equal time.
   StudyFigure& f1 = figure(figures, "fig1");
-  std::vector<std::string> fig1 = {"pt", "lt"};
-  if (has_integrator("bpt")) fig1.push_back("bpt");
-  fig1.push_back("sppm");
-  StudyRun pclt, sppm_t;
-  for (const std::string& name : fig1) {
-    RunSpec s;
-    s.figure = "fig1";
-    s.label = name == "pt" ? "PT" : name == "lt" ? "LT" : name == "bpt" ? "BPT" : "SPPM";
-    s.integrator = name;
-    s.time_s = params.time_s;
-    if (name == "sppm") s.settings.sppm.photons = pixels;
-    f1.runs.push_back(add(s));
-    if (name == "sppm") sppm_t = f1.runs.back();
-  }
-  RunSpec pclt_t = pclt_spec("fig1", "PCLT", pixels, 1);
-  pclt_t.time_s = params.time_s;
-  pclt = add(pclt_t);
-  f1.runs.push_back(pclt);
+  std::vector<Configuration> fig1 = {defaults("PT", "pt"), defaults("LT", "lt")};
+  if (has_integrator("bpt")) fig1.push_back(defaults("BPT", "bpt"));
+  SppmSettings sppm_settings;
+  sppm_settings.photons = pixels;
+  fig1.push_back(sppm_config("SPPM", sppm_settings));
+  fig1.push_back(pclt_config("PCLT", pclt_settings(pixels)));
+  for (Measurement& m : fr.run("fig1", std::move(fig1), Budget::for_seconds(params.time_s))) f1.runs.push_back(std::move(m));
+  const Measurement pclt = f1.runs.back();
+  const Measurement sppm_t = f1.runs[f1.runs.size() - 2];
   {
-    const StudyRun* best = &pclt;
-    for (const StudyRun& r : f1.runs)
-      if (r.scene_id == scene.id && r.error.rel_mse < best->error.rel_mse) best = &r;
-    f1.findings[scene.id] = fmt::format(
+    const Measurement* best = &pclt;
+    for (const Measurement& r : f1.runs)
+      if (r.scene_id == id && r.error.rel_mse < best->error.rel_mse) best = &r;
+    f1.findings[id] = fmt::format(
         "PCLT relMSE {:.4g} vs SPPM {:.4g} at equal time: PCLT is {} (paper: PCLT better). Lowest relMSE: {} ({:.4g}).",
         pclt.error.rel_mse, sppm_t.error.rel_mse, pclt.error.rel_mse <= sppm_t.error.rel_mse ? "lower or equal" : "higher",
         best->label, best->error.rel_mse);
@@ -146,41 +213,38 @@ void run_pclt_figures(const StudyRunner& runner, const StudyScene& scene, const 
 
   // Fig. 5: equal iterations.
   StudyFigure& f5 = figure(figures, "fig5");
-  RunSpec sppm_n;
-  sppm_n.figure = "fig5";
-  sppm_n.label = "SPPM";
-  sppm_n.integrator = "sppm";
-  sppm_n.settings.sppm.photons = pixels;
-  sppm_n.iterations = n;
-  const StudyRun sppm = add(sppm_n);
+  const Measurement sppm = fr.run_one("fig5", sppm_config("SPPM", sppm_settings), passes(n));
   f5.runs.push_back(sppm);
-  f5.runs.push_back(StudyRunner::reuse(pclt, "fig5", "PCLT"));
-  f5.findings[scene.id] = fmt::format(
+  f5.runs.push_back(study::reuse(pclt, "fig5", "PCLT"));
+  f5.findings[id] = fmt::format(
       "{} iterations: PCLT takes {:.2f}x SPPM's time (paper: 1.31x) at relMSE {:.4g} vs SPPM {:.4g}.", n,
       sppm.time_s > 0 ? pclt.time_s / sppm.time_s : 0.0, pclt.error.rel_mse, sppm.error.rel_mse);
 
   // Fig. 6: visibility shortcuts against the shadow-ray image of the same seed.
   StudyFigure& f6 = figure(figures, "fig6");
-  StudyRun shadow = StudyRunner::reuse(pclt, "fig6", "PCLT shadow ray");
-  shadow.metrics["rel_mse_vs_shadow_ray"] = 0.0;
-  shadow.metrics["energy_vs_shadow_ray_percent"] = 0.0;
+  Measurement shadow = study::reuse(pclt, "fig6", "PCLT shadow ray");
+  shadow.metrics.set("rel_mse_vs_shadow_ray", 0.0);
+  shadow.metrics.set("energy_vs_shadow_ray_percent", 0.0);
   f6.runs.push_back(shadow);
-  StudyRun plane;
+  const study::ImageMetric vs_shadow_ray = [&pclt](const study::MeasureContext& ctx, Record* metrics) {
+    const ImageError e = image_error(ctx.image, pclt.image);
+    metrics->set("rel_mse_vs_shadow_ray", e.rel_mse);
+    metrics->set("energy_vs_shadow_ray_percent",
+                 pclt.error.mean_image > 0 ? 100.0 * (e.mean_image / pclt.error.mean_image - 1.0) : 0.0);
+  };
+  Measurement plane;
   std::string finding;
   for (PcltVisibility v : {PcltVisibility::z_buffer, PcltVisibility::plane}) {
-    RunSpec s = pclt_spec("fig6", v == PcltVisibility::plane ? "PCLT plane" : "PCLT z-buffer", pixels, n);
-    s.settings.pclt.visibility = v;
-    StudyRun r = add(s);
-    r.metrics["rel_mse_vs_shadow_ray"] = image_error(r.image, pclt.image).rel_mse;
-    const double energy = pclt.error.mean_image > 0 ? 100.0 * (r.error.mean_image / pclt.error.mean_image - 1.0) : 0.0;
-    r.metrics["energy_vs_shadow_ray_percent"] = energy;
+    const std::string label = v == PcltVisibility::plane ? "PCLT plane" : "PCLT z-buffer";
+    const Measurement r = fr.run_one("fig6", pclt_config(label, pclt_settings(pixels, v)), passes(n), {vs_shadow_ray});
     finding += fmt::format("{}: {:.2f}x the shadow-ray time, energy {:+.1f}%, relMSE {:.4g}. ", r.label,
-                           pclt.time_s > 0 ? r.time_s / pclt.time_s : 0.0, energy, r.error.rel_mse);
+                           pclt.time_s > 0 ? r.time_s / pclt.time_s : 0.0, metric(r, "energy_vs_shadow_ray_percent"),
+                           r.error.rel_mse);
     f6.runs.push_back(r);
     if (v == PcltVisibility::plane) plane = r;
   }
-  f6.findings[scene.id] = finding + fmt::format("Shadow ray: relMSE {:.4g} (paper: z-buffer loses energy on planes, "
-                                                "plane test nearly exact and as fast as SPPM).", pclt.error.rel_mse);
+  f6.findings[id] = finding + fmt::format("Shadow ray: relMSE {:.4g} (paper: z-buffer loses energy on planes, "
+                                          "plane test nearly exact and as fast as SPPM).", pclt.error.rel_mse);
 
   // Fig. 7: equal total light paths, split into fewer or more per iteration (plane test, as the paper).
   StudyFigure& f7 = figure(figures, "fig7");
@@ -188,37 +252,37 @@ void run_pclt_figures(const StudyRunner& runner, const StudyScene& scene, const 
   for (int k : {0, 1, 2}) {
     const uint64_t paths = k == 0 ? std::max<uint64_t>(1, pixels / 4) : k == 1 ? pixels : 4 * pixels;
     const uint32_t iterations = k == 0 ? 4 * n : k == 1 ? n : std::max<uint32_t>(1, (n + 2) / 4);
-    StudyRun r;
-    if (k == 1) {
-      r = StudyRunner::reuse(plane, "fig7", "PCLT 1x pixels");
-    } else {
-      RunSpec s = pclt_spec("fig7", k == 0 ? "PCLT 0.25x pixels" : "PCLT 4x pixels", paths, iterations);
-      s.settings.pclt.visibility = PcltVisibility::plane;
-      r = add(s);
-    }
-    r.metrics["light_paths_total"] = double(paths) * double(r.iterations);
+    Measurement r = k == 1 ? study::reuse(plane, "fig7", "PCLT 1x pixels")
+                           : fr.run_one("fig7", pclt_config(k == 0 ? "PCLT 0.25x pixels" : "PCLT 4x pixels",
+                                                            pclt_settings(paths, PcltVisibility::plane)),
+                                        passes(iterations));
+    r.metrics.set("light_paths_total", double(paths) * double(r.iterations));
     finding += fmt::format("{}: {:.2f} s, {:.3g} MiB, relMSE {:.4g}. ", r.label, r.time_s,
                            metric(r, "memory_bytes") / (1024.0 * 1024.0), r.error.rel_mse);
-    f7.runs.push_back(r);
+    f7.runs.push_back(std::move(r));
   }
-  f7.findings[scene.id] = finding + "(Paper: more light paths per iteration is faster at similar quality; PCLT's memory "
-                                    "does not change.)";
+  f7.findings[id] = finding + "(Paper: more light paths per iteration is faster at similar quality; PCLT's memory "
+                              "does not change.)";
 
   // Fig. 8: chained map against stochastic maps of shrinking size.
   StudyFigure& f8 = figure(figures, "fig8");
-  f8.runs.push_back(StudyRunner::reuse(pclt, "fig8", "Chained (full) map"));
+  f8.runs.push_back(study::reuse(pclt, "fig8", "Chained (full) map"));
   finding = fmt::format("Chained: {:.2f} s, relMSE {:.4g}. ", pclt.time_s, pclt.error.rel_mse);
   const uint32_t slots = uint32_t(std::bit_ceil(pixels));
   for (uint32_t divisor : {1u, 8u, 64u}) {
     const uint32_t table = std::max<uint32_t>(1, slots / divisor);
-    RunSpec s = pclt_spec("fig8", fmt::format("Stochastic map, {} slots", table), pixels, n);
-    s.settings.pclt.hash_map = PcltHashMap::stochastic;
-    s.settings.pclt.stochastic_slots = table;
-    const StudyRun r = add(s);
+    PcltSettings s = pclt_settings(pixels);
+    s.hash_map = PcltHashMap::stochastic;
+    s.stochastic_slots = table;
+    const Measurement r = fr.run_one("fig8", pclt_config(fmt::format("Stochastic map, {} slots", table), s), passes(n));
     finding += fmt::format("{} slots: {:.2f} s, relMSE {:.4g}. ", table, r.time_s, r.error.rel_mse);
     f8.runs.push_back(r);
   }
-  f8.findings[scene.id] = finding + "(Paper: equal speed; the stochastic map loses records, visibly at 1 MiB.)";
+  f8.findings[id] = finding + "(Paper: equal speed; the stochastic map loses records, visibly at 1 MiB.)";
+
+  // The images were needed for fig. 6's comparisons only; the files stay.
+  for (StudyFigure& f : *figures)
+    for (Measurement& m : f.runs) m.image = Image();
 }
 
 nlohmann::ordered_json to_json(const StudyFigure& f) {
@@ -229,10 +293,32 @@ nlohmann::ordered_json to_json(const StudyFigure& f) {
   j["reproduced"] = f.reproduced;
   if (f.reproduced) j["method"] = f.method;
   if (!f.reproduced) j["reason"] = f.not_reproduced_reason;
-  j["findings"] = f.findings;
+  j["findings"] = nlohmann::ordered_json::object();
+  for (const auto& [scene, sentence] : f.findings) j["findings"][scene] = sentence;
   j["runs"] = nlohmann::ordered_json::array();
-  for (const StudyRun& r : f.runs) j["runs"].push_back(to_json(r));
+  for (const Measurement& m : f.runs) {
+    nlohmann::ordered_json run = {{"figure", f.id}};
+    const nlohmann::ordered_json fields = study::to_json(m);
+    for (const auto& [key, value] : fields.items())
+      if (key != "seed") run[key] = value;  // every run has the study's seed (settings.seed)
+    j["runs"].push_back(std::move(run));
+  }
   return j;
+}
+
+study::ReportSection report_section(const StudyFigure& f) {
+  study::ReportSection s;
+  s.id = f.id;
+  s.title = f.title;
+  s.lead = "Paper: " + f.paper;
+  if (f.reproduced)
+    s.method = "Here: " + f.method;
+  else
+    s.note = f.not_reproduced_reason;
+  s.metric_rows = f.metric_rows;
+  s.measurements = f.runs;
+  s.findings = f.findings;
+  return s;
 }
 
 }  // namespace pathspace::cli

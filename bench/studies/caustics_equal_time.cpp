@@ -2,6 +2,7 @@
 // long BPT reference, then PT, LT, BPT, SPPM and PCLT for the same wall time each (several seeds), with the
 // relMSE against the reference over the whole image and over the caustic under the glass sphere,
 // where PT must hit the small light through the glass by BSDF sampling and the others trace from it.
+// An experiment on the harness (src/pathspace/study/); the caustic region is a custom image metric.
 // Usage: caustics_equal_time [OUT.csv] [REFERENCE_SECONDS] [EQUAL_SECONDS] [SEEDS] [IMAGE_DIR]
 #include <cstdio>
 #include <cstdlib>
@@ -12,10 +13,10 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/image_metrics.h"
-#include "pathspace/integrators/render.h"
-#include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
-#include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/scene.h"
+#include "pathspace/study/experiment_output.h"
+#include "pathspace/study/experiment_runner.h"
 
 using namespace pathspace;
 
@@ -59,24 +60,6 @@ double mean_of(const Image& img) {
   return img.pixels.empty() ? 0.0 : s / double(img.pixels.size());
 }
 
-struct Run {
-  Image mean, variance;
-  RenderStats stats;
-};
-
-Run render_for(const Scene& scene, const Accel& accel, const std::string& integrator, double seconds, uint64_t seed) {
-  Film film(kSize, kSize);
-  RenderRequest req;
-  req.integrator = integrator;
-  req.time_limit_s = seconds;
-  req.settings.seed = seed;
-  Run r;
-  r.stats = render(scene, accel, req, film);
-  r.mean = film.mean();
-  r.variance = film.variance_of_mean();
-  return r;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,34 +68,59 @@ int main(int argc, char** argv) {
   const double equal_s = argc > 3 ? std::atof(argv[3]) : 10.0;
   const int seeds = argc > 4 ? std::atoi(argv[4]) : 2;
   const std::string image_dir = argc > 5 ? argv[5] : "";
-  const Scene scene = make_builtin_scene("bs_c", kSize, kSize);
-  const Accel accel(scene);
-  const std::vector<bool> region = caustic_region(scene, accel);
+
+  study::Experiment e;
+  e.name = "caustics_equal_time";
+  e.scenes = {{"bs_c", kSize, kSize}};
+  e.reference.render = study::reference_render_config("bpt");
+  e.reference.render.seed = 1000;
+  e.reference.budget = study::Budget::for_seconds(reference_s);
+  for (const char* integrator : {"pt", "lt", "bpt", "sppm", "pclt"}) {
+    RenderConfig c;
+    c.integrator = integrator;
+    e.configurations.push_back(study::configuration(integrator, c));
+  }
+  e.seeds.clear();
+  for (int seed = 1; seed <= seeds; ++seed) e.seeds.push_back(uint64_t(seed));
+  e.budget = study::Budget::for_seconds(equal_s);
+  study::check_experiment(e);
+
+  study::RunnerOptions options;
+  options.quiet = true;
+  options.on_measurement = [&](const study::Measurement& m) {
+    std::fprintf(stderr, "%s seed %d: %u passes, relMSE %.4g, caustic relMSE %.4g, caustic mean %.4f\n", m.integrator.c_str(),
+                 int(m.seed), m.iterations, m.rel_mse_debiased, m.metrics.number("rel_mse_caustic"), m.metrics.number("caustic_mean"));
+    if (!image_dir.empty() && m.seed == 1) write_image(image_dir + "/caustics-" + m.integrator + ".exr", m.image);
+  };
+  const study::ExperimentRunner runner(options);
+  const study::PreparedScene scene = runner.prepare(e.scenes[0], e.reference);
+  const std::vector<bool> region = caustic_region(*scene.scene, *scene.accel);
   size_t region_pixels = 0;
   for (bool b : region) region_pixels += b;
+  const Image ref_region = restrict_to(scene.reference, region), ref_region_var = restrict_to(scene.reference_variance, region);
+  const double ref_passes = scene.summary.reference.number("iterations"), ref_seconds = scene.summary.reference.number("time_s");
+  std::fprintf(stderr, "reference: bpt %.0f passes in %.1f s; caustic region %zu pixels, mean %.4f\n", ref_passes, ref_seconds,
+               region_pixels, mean_of(ref_region));
+  if (!image_dir.empty()) write_image(image_dir + "/caustics-reference.exr", scene.reference);
 
-  const Run ref = render_for(scene, accel, "bpt", reference_s, 1000);
-  std::fprintf(stderr, "reference: bpt %u passes in %.1f s; caustic region %zu pixels, mean %.4f\n", ref.stats.spp,
-               ref.stats.wall_s, region_pixels, mean_of(restrict_to(ref.mean, region)));
-  if (!image_dir.empty()) write_image(image_dir + "/caustics-reference.exr", ref.mean);
-  const Image ref_region = restrict_to(ref.mean, region), ref_region_var = restrict_to(ref.variance, region);
+  e.metrics.push_back([&](const study::MeasureContext& ctx, study::Record* metrics) {
+    const Image reg = restrict_to(ctx.image, region);
+    metrics->set("rel_mse_caustic", image_error(reg, ref_region, &ref_region_var).rel_mse);
+    metrics->set("caustic_mean", mean_of(reg));
+    metrics->set("reference_caustic_mean", mean_of(ref_region));
+  });
+  study::ExperimentResult result;
+  result.name = e.name;
+  result.scenes.push_back(scene.summary);
+  result.measurements = runner.run_scene(scene, e);
 
-  std::string csv = fmt::format("# bs_c {}x{}, reference bpt {} passes / {:.1f} s, caustic region [{},{})x[{},{}) {} floor pixels\n",
-                                kSize, kSize, ref.stats.spp, ref.stats.wall_s, kX0, kX1, kY0, kY1, region_pixels);
-  csv += "integrator,seed,seconds,passes,rel_mse,rel_mse_caustic,caustic_mean,reference_caustic_mean\n";
-  for (const char* integrator : {"pt", "lt", "bpt", "sppm", "pclt"})
-    for (int seed = 1; seed <= seeds; ++seed) {
-      const Run r = render_for(scene, accel, integrator, equal_s, uint64_t(seed));
-      const ImageError all = image_error(r.mean, ref.mean, &ref.variance);
-      const Image reg = restrict_to(r.mean, region);
-      const ImageError caustic = image_error(reg, ref_region, &ref_region_var);
-      csv += fmt::format("{},{},{:.2f},{},{:.5g},{:.5g},{:.5g},{:.5g}\n", integrator, seed, r.stats.wall_s, r.stats.spp,
-                         all.rel_mse, caustic.rel_mse, mean_of(reg), mean_of(ref_region));
-      std::fprintf(stderr, "%s seed %d: %u passes, relMSE %.4g, caustic relMSE %.4g, caustic mean %.4f\n", integrator, seed,
-                   r.stats.spp, all.rel_mse, caustic.rel_mse, mean_of(reg));
-      if (!image_dir.empty() && seed == 1) write_image(image_dir + "/caustics-" + integrator + ".exr", r.mean);
-    }
-  write_text_file(out, csv);
+  study::Table table = study::results_table(result);
+  table.comments.push_back(fmt::format("bs_c {}x{}, reference bpt {:.0f} passes / {:.1f} s, caustic region [{},{})x[{},{}) {} floor pixels",
+                                       kSize, kSize, ref_passes, ref_seconds, kX0, kX1, kY0, kY1, region_pixels));
+  table.column("integrator").column("seed").column("seconds", "{:.2f}", "time_s").column("passes", "", "iterations");
+  table.column("rel_mse", "{:.5g}", "rel_mse_debiased").column("rel_mse_caustic", "{:.5g}");
+  table.column("caustic_mean", "{:.5g}").column("reference_caustic_mean", "{:.5g}");
+  study::write_csv(out, table);
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

@@ -1,20 +1,18 @@
 // Error vs samples per pixel with and without hashed path space filtering (Binder et al. 2021,
-// sec. 4 / fig. 1: 1 path per pixel filtered vs a 1024 spp reference). Renders cornell-box at
-// 512x512 progressively (each pass filtered, then accumulated) and records the relMSE and MSE
-// against a reference image after 1, 2, 4, ..., 64 spp, for several seeds. The filtered error at
-// high spp is the bias the filter leaves (it no longer falls with 1/spp).
+// sec. 4 / fig. 1: 1 path per pixel filtered vs a 1024 spp reference). Renders cornell-box at the
+// reference's size (512x512) progressively (each pass filtered, then accumulated) and records the
+// relMSE and MSE against a reference image after 1, 2, 4, ..., 64 spp, for several seeds: an
+// experiment on the harness (src/pathspace/study/), one session per configuration and seed measured
+// at each checkpoint. The filtered error at high spp is the bias the filter leaves (it no longer
+// falls with 1/spp).
 // Usage: psf_convergence REFERENCE.exr [REFERENCE_VARIANCE.exr] [OUT.csv]
 #include <cstdio>
 #include <string>
 
-#include <fmt/format.h>
-
-#include "pathspace/accel/accel.h"
-#include "pathspace/film/image_metrics.h"
-#include "pathspace/integrators/render.h"
-#include "pathspace/io/atomic_file.h"
+#include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/io/image_io.h"
-#include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/study/experiment_output.h"
+#include "pathspace/study/experiment_runner.h"
 
 using namespace pathspace;
 
@@ -23,45 +21,43 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: psf_convergence REFERENCE.exr [REFERENCE_VARIANCE.exr] [OUT.csv]\n");
     return 2;
   }
-  const Image reference = read_image(argv[1]);
-  Image variance;
   const bool has_variance = argc > 2 && std::string(argv[2]) != "-";
-  if (has_variance) variance = read_image(argv[2]);
   const std::string out = argc > 3 ? argv[3] : "docs/figures/psf_convergence.csv";
-  const Scene scene = make_builtin_scene("cornell-box", reference.width, reference.height);
-  const Accel accel(scene);
+  const Image reference = read_image(argv[1]);  // for its size
 
-  std::string csv = "filter,psf_scale,seed,spp,rel_mse,mse,seconds\n";
-  struct Config {
-    const char* name;
-    FilterKind kind;
-    float scale;
-  };
-  const Config configs[] = {{"none", FilterKind::none, 0.f}, {"hashed", FilterKind::hashed, 6.f},
-                            {"hashed", FilterKind::hashed, 12.f}, {"hashed", FilterKind::hashed, 20.f}};
-  for (const Config& c : configs) {
-    for (uint64_t seed = 1; seed <= 4; ++seed) {
-      Film film(reference.width, reference.height);
-      RenderRequest req;
-      req.settings.seed = seed;
-      req.settings.filter.kind = c.kind;
-      if (c.scale > 0.f) req.settings.filter.hashed.key.psf_scale = c.scale;
-      double seconds = 0;
-      uint32_t done = 0;
-      for (uint32_t spp = 1; spp <= 64; spp *= 2) {
-        // Passes continue the same sequence: pass indices done..spp-1 (render() starts at pass 0,
-        // so each chunk uses a distinct seed offset to stay independent).
-        req.spp = spp - done;
-        req.settings.seed = seed * 1000 + done;
-        seconds += render(scene, accel, req, film).wall_s;
-        done = spp;
-        const ImageError e = image_error(film.mean(), reference, has_variance ? &variance : nullptr);
-        csv += fmt::format("{},{},{},{},{:.6g},{:.6g},{:.3f}\n", c.name, c.scale, seed, spp, e.rel_mse, e.mse, seconds);
-        std::fprintf(stderr, "%s scale %g seed %d spp %u: relMSE %.4g\n", c.name, double(c.scale), int(seed), spp, e.rel_mse);
-      }
-    }
+  study::Experiment e;
+  e.name = "psf_convergence";
+  e.scenes = {{"cornell-box", reference.width, reference.height}};
+  e.reference.image_file = argv[1];
+  if (has_variance) e.reference.variance_file = argv[2];
+  e.seeds = {1, 2, 3, 4};
+  e.budget = study::Budget::at_passes({1, 2, 4, 8, 16, 32, 64});
+  RenderConfig pt;
+  pt.integrator = "pt";
+  study::Record unfiltered;
+  unfiltered.set("psf_scale", 0.0);
+  e.configurations.push_back(study::configuration("none", pt, unfiltered));
+  for (const float scale : {6.f, 12.f, 20.f}) {
+    HashedFilterSettings s;
+    s.key.psf_scale = scale;
+    study::Record settings;
+    settings.set("psf_scale", scale);
+    e.configurations.push_back(study::configuration("hashed", with_filter(pt, "hashed", s), settings));
   }
-  write_text_file(out, csv);
+
+  study::RunnerOptions options;
+  options.quiet = true;
+  options.on_measurement = [](const study::Measurement& m) {
+    std::fprintf(stderr, "%s scale %g seed %d spp %u: relMSE %.4g\n", m.label.c_str(), m.settings.number("psf_scale"),
+                 int(m.seed), m.iterations, m.rel_mse_debiased);
+  };
+  const study::ExperimentResult result = study::ExperimentRunner(options).run(e);
+
+  // The relMSE and MSE are debiased by the reference's variance when it is given.
+  study::Table table = study::results_table(result);
+  table.column("filter").column("psf_scale").column("seed").column("spp", "", "iterations");
+  table.column("rel_mse", "{:.6g}", "rel_mse_debiased").column("mse", "{:.6g}", "mse_debiased").column("seconds", "{:.3f}", "time_s");
+  study::write_csv(out, table);
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

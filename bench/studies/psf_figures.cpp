@@ -4,22 +4,23 @@
 //   fig. 7: hash collisions (extra probes per insertion) and occupancy vs hash table size, for
 //           several voxel sizes; local combining off, so every vertex probes the table;
 //   fig. 8: filter time (accumulate + lookup, median of 5 passes, 2 threads) vs voxel size.
-// Writes psf_fig7.csv and psf_fig8.csv into the folder given as argument (default docs/figures);
-// scripts/plot-psf-figures turns them into PNG plots.
+// Writes psf_fig7.csv and psf_fig8.csv into the folder given as argument (default docs/figures) with
+// the experiment harness's table writer (src/pathspace/study/table.h); scripts/plot-psf-figures turns
+// them into PNG plots.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "pathspace/filters/hashed_filter.h"
-#include "pathspace/io/atomic_file.h"
 #include "pathspace/parallel/parallel_for.h"
+#include "pathspace/study/table.h"
 #include "support/vertex_sets.h"
 
 using namespace pathspace;
+using study::Record;
+using study::Table;
 
 namespace {
 
@@ -31,8 +32,15 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-std::string fig7(const bench::VertexSet& set, const char* name) {
-  std::string csv;
+Table fig7_table() {
+  Table t;
+  t.column("vertex_set").column("psf_scale").column("cells_per_pixel").column("cells").column("occupancy", "{:.6f}");
+  t.column("mean_probes", "{:.6f}").column("extra_probes", "{:.6f}").column("max_probes").column("fallbacks");
+  t.column("expected_fingerprint_collisions", "{:.3e}");
+  return t;
+}
+
+void fig7(const bench::VertexSet& set, const char* name, Table* table) {
   for (const float scale : {1.f, 2.f, 4.f, 8.f}) {
     for (const float cells_per_pixel : {0.0625f, 0.125f, 0.25f, 0.5f, 1.f, 2.f, 4.f, 8.f}) {
       HashedFilterSettings s;
@@ -43,17 +51,25 @@ std::string fig7(const bench::VertexSet& set, const char* name) {
       std::vector<Rgb> filtered;
       filter.filter(set.buffer, 0, 0, &filtered);
       const HashedFilterStats& st = filter.stats();
-      csv += fmt::format("{},{},{},{},{:.6f},{:.6f},{:.6f},{},{},{:.3e}\n", name, scale, cells_per_pixel, st.cells,
-                         double(st.occupied_cells_last) / double(st.cells), st.mean_probes(), st.mean_probes() - 1.0,
-                         st.probes_max, st.probe_failures, st.expected_fingerprint_collisions_last);
+      Record r;
+      r.set("vertex_set", name).set("psf_scale", scale).set("cells_per_pixel", cells_per_pixel).set("cells", st.cells);
+      r.set("occupancy", double(st.occupied_cells_last) / double(st.cells)).set("mean_probes", st.mean_probes());
+      r.set("extra_probes", st.mean_probes() - 1.0).set("max_probes", st.probes_max).set("fallbacks", st.probe_failures);
+      r.set("expected_fingerprint_collisions", st.expected_fingerprint_collisions_last);
+      table->rows.push_back(std::move(r));
       std::fprintf(stderr, "fig7 %s scale %g table %g: extra probes %.4f\n", name, scale, cells_per_pixel, st.mean_probes() - 1.0);
     }
   }
-  return csv;
 }
 
-std::string fig8(const bench::VertexSet& set, const char* name, int threads) {
-  std::string csv;
+Table fig8_table() {
+  Table t;
+  t.column("vertex_set").column("threads").column("psf_scale").column("local_combining").column("accumulate_ms", "{:.3f}");
+  t.column("lookup_ms", "{:.3f}").column("total_ms", "{:.3f}").column("occupancy", "{:.6f}").column("vertices");
+  return t;
+}
+
+void fig8(const bench::VertexSet& set, const char* name, int threads, Table* table) {
   ThreadLimit limit(threads);
   for (const float scale : {0.5f, 1.f, 2.f, 4.f, 8.f, 16.f, 32.f}) {
     for (const bool combining : {true, false}) {
@@ -73,13 +89,14 @@ std::string fig8(const bench::VertexSet& set, const char* name, int threads) {
         total.push_back(st.clear_ms + st.accumulate_ms + st.lookup_ms);
       }
       const HashedFilterStats& st = filter.stats();
-      csv += fmt::format("{},{},{},{},{:.3f},{:.3f},{:.3f},{:.6f},{}\n", name, threads, scale, combining ? 1 : 0,
-                         median(accumulate), median(lookup), median(total),
-                         double(st.occupied_cells_last) / double(st.cells), st.vertices);
+      Record r;
+      r.set("vertex_set", name).set("threads", threads).set("psf_scale", scale).set("local_combining", combining ? 1 : 0);
+      r.set("accumulate_ms", median(accumulate)).set("lookup_ms", median(lookup)).set("total_ms", median(total));
+      r.set("occupancy", double(st.occupied_cells_last) / double(st.cells)).set("vertices", st.vertices);
+      table->rows.push_back(std::move(r));
       std::fprintf(stderr, "fig8 %s scale %g combining %d: %.2f ms\n", name, scale, combining ? 1 : 0, median(total));
     }
   }
-  return csv;
 }
 
 }  // namespace
@@ -87,15 +104,14 @@ std::string fig8(const bench::VertexSet& set, const char* name, int threads) {
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "docs/figures";
   std::filesystem::create_directories(out);
-  std::string csv7 = "vertex_set,psf_scale,cells_per_pixel,cells,occupancy,mean_probes,extra_probes,max_probes,fallbacks,expected_fingerprint_collisions\n";
-  std::string csv8 = "vertex_set,threads,psf_scale,local_combining,accumulate_ms,lookup_ms,total_ms,occupancy,vertices\n";
+  Table t7 = fig7_table(), t8 = fig8_table();
   for (const auto kind : {bench::VertexSetKind::primary, bench::VertexSetKind::second_bounce}) {
     const auto set = bench::make_vertex_set(kind, kWidth, kHeight);
-    csv7 += fig7(*set, bench::vertex_set_name(kind));
-    csv8 += fig8(*set, bench::vertex_set_name(kind), 2);
+    fig7(*set, bench::vertex_set_name(kind), &t7);
+    fig8(*set, bench::vertex_set_name(kind), 2, &t8);
   }
-  write_text_file(out + "/psf_fig7.csv", csv7);
-  write_text_file(out + "/psf_fig8.csv", csv8);
+  study::write_csv(out + "/psf_fig7.csv", t7);
+  study::write_csv(out + "/psf_fig8.csv", t8);
   std::printf("wrote %s/psf_fig7.csv and %s/psf_fig8.csv\n", out.c_str(), out.c_str());
   return 0;
 }

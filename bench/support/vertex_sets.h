@@ -23,14 +23,14 @@ inline std::unique_ptr<VertexSet> make_vertex_set(VertexSetKind kind, int width 
   auto set = std::make_unique<VertexSet>();
   set->scene = std::make_unique<Scene>(make_builtin_scene("cornell-box", width, height));
   const Accel accel(*set->scene);
-  IntegratorSettings s;
-  s.filter.force_vertex_buffer = true;
-  s.pt.selection.split_layers = false;  // one record per path
+  PtSettings s;
+  s.selection.split_layers = false;  // one record per path
   if (kind == VertexSetKind::second_bounce) {
-    s.pt.selection.mode = VertexSelectionMode::nth;
-    s.pt.selection.n = 2;
+    s.selection.mode = VertexSelectionMode::nth;
+    s.selection.n = 2;
   }
-  PtIntegrator pt(*set->scene, accel, s);
+  // The passthrough filter: every path goes through the vertex buffer, filtered by nothing.
+  PtIntegrator pt(*set->scene, accel, s, 0, FilterChoice{"passthrough", {}});
   Film film(width, height);
   PathCounters counters;
   pt.render_pass(0, film, counters);

@@ -100,8 +100,13 @@ TEST_F(CliTest, BadNumbersAreUsageErrors) {
   expect_usage_error("render --no-such-flag", "no-such-flag");
   expect_usage_error("render -i lt --filter hashed", "--filter");
   expect_usage_error("render --filter bogus", "--filter");
-  expect_usage_error("render --psf-scale 0", "--psf-scale");
-  expect_usage_error("render --aov", "--aov");
+  expect_usage_error("render --filter hashed --psf-scale 0", "--psf-scale");
+  expect_usage_error("render --filter hashed --psf-scale nan", "--psf-scale");
+  expect_usage_error("render --aov", "--aov applies to --filter hashed");
+  // Options belong to integrators: another integrator's option names where it applies.
+  expect_usage_error("render -i lt --pclt-alpha 0.5", "--pclt-alpha applies to --integrator pclt");
+  expect_usage_error("render -i sppm --mis balance", "--mis applies to --integrator bpt, pt");
+  expect_usage_error("render -i pclt --pclt-hash-map stochastic --pclt-stochastic-slots 3", "power of two");
 }
 
 TEST_F(CliTest, HashedFilterWritesAovsAndReportsTheTable) {
@@ -110,7 +115,9 @@ TEST_F(CliTest, HashedFilterWritesAovsAndReportsTheTable) {
   for (const char* aov : {"voxel", "count", "level", "probes"})
     EXPECT_TRUE(fs::exists(dir_ / (std::string("f.aov-") + aov + ".exr"))) << aov;
   const auto json = nlohmann::json::parse(read_all(dir_ / "s.json"));
-  EXPECT_NE(json.at("integrator_report").get<std::string>().find("hashed filter"), std::string::npos);
+  EXPECT_EQ(json.at("filter").get<std::string>(), "hashed");
+  EXPECT_EQ(json.at("statistics").at("hashed.probe_limit_fallbacks").get<uint64_t>(), 0u);
+  EXPECT_GT(json.at("statistics").at("hashed.occupancy").get<double>(), 0.0);
   EXPECT_NE(json.at("outputs").get<std::string>().find("f.aov-voxel.exr"), std::string::npos);
 }
 

@@ -1,5 +1,5 @@
-// `pathspace render` on a scene with missing images (the Bitterli living room, skipped when the
-// shared scenes are absent): without options one error line names every missing file and its line
+// `pathspace render` on a scene with missing images (the Bitterli living room; fails when the
+// shared scenes are absent, support/shared_data.h): without options one error line names every missing file and its line
 // and nothing is written; --substitute-missing-textures renders with a warning per file.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +12,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "support/shared_data.h"
 
 namespace {
 
@@ -50,7 +52,7 @@ class CliSceneFiles : public ::testing::Test {
 };
 
 TEST_F(CliSceneFiles, MissingImagesAreOneErrorOrSubstituted) {
-  if (!fs::exists(kLivingRoom)) GTEST_SKIP() << "shared scene not found: " << kLivingRoom;
+  PATHSPACE_REQUIRE_SHARED_DATA(kLivingRoom);
   const std::string args = "render '" + kLivingRoom + "' --spp 1 --resolution 16x9 --quiet -o out.png";
   RunResult r = run(args);
   EXPECT_EQ(r.exit_code, 1);

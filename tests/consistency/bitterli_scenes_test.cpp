@@ -1,8 +1,8 @@
-// Bitterli's real scenes (../shared/scenes/bitterli, pbrt-v4 form) render correctly with the
+// Bitterli's real scenes (pbrt-v4 form, outside the repository: docs/testing.md) render correctly with the
 // integrators that apply to them: those that can sample the scene's light transport agree with each
 // other (per-pixel z-test, support/statistics.h), and regions where our material models match
-// Tungsten's agree with Bitterli's TungstenRender.exr (support/reference_regions.h). Skipped when
-// the shared scenes are absent.
+// Tungsten's agree with Bitterli's TungstenRender.exr (support/reference_regions.h). Fail when the
+// shared scenes are absent (support/shared_data.h).
 //  - veach-mis (rough copper plates, four sphere lights): PT (MIS) and BPT agree; the diffuse back
 //    wall matches Tungsten. The plates do not: pbrt-v4's conductor is GGX, and the tails of our GGX
 //    lobes on the rough plates are measured brighter than Tungsten's reference (docs/scene-files.md).
@@ -21,7 +21,9 @@
 #include "pathspace/io/scene_loader.h"
 #include "support/integrator_comparison.h"
 #include "support/reference_regions.h"
+#include "support/shared_data.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -31,8 +33,9 @@ using testing::Rendered;
 
 std::string scene_dir(const std::string& name) { return std::string(PATHSPACE_SHARED_SCENES_DIR) + "/bitterli/" + name; }
 
-#define REQUIRE_SCENE(name) \
-  if (!std::filesystem::exists(scene_dir(name) + "/scene-v4.pbrt")) GTEST_SKIP() << "no " << scene_dir(name)
+#define REQUIRE_SCENE(name)                                              \
+  PATHSPACE_REQUIRE_SHARED_DATA(scene_dir(name) + "/scene-v4.pbrt");     \
+  PATHSPACE_REQUIRE_SHARED_DATA(scene_dir(name) + "/TungstenRender.exr")
 
 Scene load_small(const std::string& name, int width, int height) {
   SceneLoadOptions o;
@@ -47,8 +50,8 @@ TEST(VeachMis, PtAndBptAgreeAndTheWallMatchesTungsten) {
   REQUIRE_SCENE("veach-mis");
   const Scene scene = load_small("veach-mis", 64, 36);  // 1/20 of 1280x720
   const Accel accel(scene);
-  const Rendered pt = testing::render_integrator(scene, accel, "pt", testing::seeded(41), 1024);
-  const Rendered bpt = testing::render_integrator(scene, accel, "bpt", testing::seeded(42), 256);
+  const Rendered pt = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(41)), 1024);
+  const Rendered bpt = testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(42)), 256);
   testing::expect_same_image(pt, bpt, "veach-mis-pt-vs-bpt", 1e-3, "pt", "bpt");
   // The back wall above the plates: lit directly by the spheres (our next event estimate at a wall
   // point equals the closed-form irradiance of each sphere) and indirectly by the plates, whose GGX
@@ -64,10 +67,10 @@ TEST(VeachBidir, LtAndBptAgreeAndRoomMatchesTungsten) {
   REQUIRE_SCENE("veach-bidir");
   const Scene scene = load_small("veach-bidir", 32, 32);  // 1/32 of 1024x1024
   const Accel accel(scene);
-  IntegratorSettings lt = testing::seeded(43);
-  lt.lt.light_paths = 100000;
-  Rendered a = testing::render_integrator(scene, accel, "lt", lt, 64);
-  Rendered b = testing::render_integrator(scene, accel, "bpt", testing::seeded(44), 512);
+  LtSettings lt;
+  lt.light_paths = 100000;
+  Rendered a = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(43)), 64);
+  Rendered b = testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(44)), 512);
   const std::vector<bool> mask = testing::specular_first_hit_mask(scene, accel);  // the egg, the lamp's metal
   testing::apply_mask(&a, mask);
   testing::apply_mask(&b, mask);
@@ -87,10 +90,17 @@ TEST_P(WaterCaustic, BelowTheWaterMatchesTungsten) {
   REQUIRE_SCENE("water-caustic");
   const Scene scene = load_small("water-caustic", 32, 32);  // 1/32 of 1024x1024
   const Accel accel(scene);
-  IntegratorSettings s = testing::seeded(45);
-  s.sppm.photons = 20000;
-  s.pclt.light_paths = 20000;
-  const Rendered r = testing::render_integrator(scene, accel, GetParam(), s, 128);
+  RenderConfig s = testing::default_config(GetParam(), testing::test_seed(45));
+  if (std::string(GetParam()) == "sppm") {
+    SppmSettings sppm;
+    sppm.photons = 20000;
+    s.settings = sppm;
+  } else if (std::string(GetParam()) == "pclt") {
+    PcltSettings pclt;
+    pclt.light_paths = 20000;
+    s.settings = pclt;
+  }
+  const Rendered r = testing::render_integrator(scene, accel, s, 128);
   // 8%: consistent estimators at a finite radius (bias at the caustic's sharp lines averages out
   // over a region, measured within 2% at 48x48), plus Tungsten's own noise.
   testing::expect_regions_match_reference(r, tungsten("water-caustic"),
@@ -99,8 +109,7 @@ TEST_P(WaterCaustic, BelowTheWaterMatchesTungsten) {
                                           0.08, 1e-3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gathering, WaterCaustic, ::testing::Values("sppm", "pclt"),
-                         [](const auto& info) { return std::string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Gathering, WaterCaustic, ::testing::Values("sppm", "pclt"), testing::StringParamName());
 
 }  // namespace
 }  // namespace pathspace

@@ -22,12 +22,12 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/bpt/bpt_integrator.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -38,13 +38,14 @@ using testing::specular_first_hit_mask;
 
 TEST(BptDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 48, 48);
-  IntegratorSettings s;
-  s.seed = 9;
-  s.bpt.strategy_images = 3;
+  using testing::with_threads;
+  BptSettings s;
+  s.strategy_images = 3;
+  const RenderConfig config = make_render_config("bpt", s, 9);
   std::vector<NamedImage> aovs1, aovs2;
-  const Rendered one = testing::render_integrator(scene, "bpt", s, 3, 1, &aovs1);
-  const Rendered two = testing::render_integrator(scene, "bpt", s, 3, 2, &aovs2);
-  const Rendered again = testing::render_integrator(scene, "bpt", s, 3, 2);
+  const Rendered one = testing::render_integrator(scene, with_threads(config, 1), 3, &aovs1);
+  const Rendered two = testing::render_integrator(scene, with_threads(config, 2), 3, &aovs2);
+  const Rendered again = testing::render_integrator(scene, with_threads(config, 2), 3);
   size_t lit = 0;
   for (size_t i = 0; i < one.mean.size(); ++i) {
     ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "pixel " << i;
@@ -70,13 +71,18 @@ uint64_t seed_base() { return testing::test_seed_base(); }
 
 struct CornellCase {
   const char* scene;  // SmallVCM id, or a name for a mask without a built-in id
-  unsigned mask;      // LoadCornellBox mask (cornell-variants.md §1)
+  unsigned mask;      // LoadCornellBox mask (docs/scenes.md §1)
   int max_segments;   // -1: the scene's (10)
   uint32_t bpt_passes, other_passes;
 };
 
 std::string case_name(const ::testing::TestParamInfo<CornellCase>& info) {
-  return std::string(info.param.scene) + (info.param.max_segments > 0 ? "_direct" : "");
+  return testing::test_name(std::string(info.param.scene) + (info.param.max_segments > 0 ? "_direct" : ""));
+}
+
+// gtest prints the parameter in test listings (not as "N-byte object <...>").
+void PrintTo(const CornellCase& c, std::ostream* os) {
+  *os << c.scene << " mask " << c.mask << " max_segments " << c.max_segments;
 }
 
 class BptPtAgree : public ::testing::TestWithParam<CornellCase> {};
@@ -84,13 +90,12 @@ class BptPtAgree : public ::testing::TestWithParam<CornellCase> {};
 TEST_P(BptPtAgree, CornellVariant) {
   const CornellCase c = GetParam();
   const Scene scene = make_cornell_box(c.mask, 16, 16);
-  IntegratorSettings bpt, pt;
-  bpt.seed = seed_base() + 301;
-  bpt.bpt.max_segments = c.max_segments;
-  pt.seed = seed_base() + 302;
-  pt.pt.max_segments = c.max_segments;
-  const Rendered a = testing::render_integrator(scene, "bpt", bpt, c.bpt_passes, 0);
-  const Rendered b = testing::render_integrator(scene, "pt", pt, c.other_passes, 0);
+  BptSettings bpt;
+  bpt.max_segments = c.max_segments;
+  PtSettings pt;
+  pt.max_segments = c.max_segments;
+  const Rendered a = testing::render_integrator(scene, make_render_config("bpt", bpt, seed_base() + 301), c.bpt_passes);
+  const Rendered b = testing::render_integrator(scene, make_render_config("pt", pt, seed_base() + 302), c.other_passes);
   expect_same_image(a, b, fmt::format("bpt-vs-pt-{}-{}", c.scene, c.max_segments));
 }
 
@@ -111,14 +116,13 @@ TEST_P(BptLtAgree, CornellVariant) {
   const Scene scene = make_cornell_box(c.mask, 16, 16);
   const Accel accel(scene);
   const std::vector<bool> mask = specular_first_hit_mask(scene, accel);
-  IntegratorSettings bpt, lt;
-  bpt.seed = seed_base() + 401;
-  bpt.bpt.max_segments = c.max_segments;
-  lt.seed = seed_base() + 402;
-  lt.lt.light_paths = 4096;
-  lt.lt.max_segments = c.max_segments;
-  Rendered a = testing::render_integrator(scene, "bpt", bpt, c.bpt_passes, 0);
-  Rendered b = testing::render_integrator(scene, "lt", lt, c.other_passes, 0);
+  BptSettings bpt;
+  bpt.max_segments = c.max_segments;
+  LtSettings lt;
+  lt.light_paths = 4096;
+  lt.max_segments = c.max_segments;
+  Rendered a = testing::render_integrator(scene, make_render_config("bpt", bpt, seed_base() + 401), c.bpt_passes);
+  Rendered b = testing::render_integrator(scene, make_render_config("lt", lt, seed_base() + 402), c.other_passes);
   apply_mask(&a, mask);
   apply_mask(&b, mask);
   expect_same_image(a, b, fmt::format("bpt-vs-lt-{}-{}", c.scene, c.max_segments));
@@ -133,12 +137,10 @@ INSTANTIATE_TEST_SUITE_P(Cornell, BptLtAgree,
 // MIS weights change only the noise: balance and power heuristic images agree (caustics included).
 TEST(BptHeuristics, BalanceAndPowerAgree) {
   const Scene scene = make_cornell_box(449, 16, 16);  // gbs_c
-  IntegratorSettings power, balance;
-  power.seed = seed_base() + 501;
-  balance.seed = seed_base() + 502;
-  balance.bpt.mis = MisHeuristic::balance;
-  const Rendered a = testing::render_integrator(scene, "bpt", power, 512, 0);
-  const Rendered b = testing::render_integrator(scene, "bpt", balance, 512, 0);
+  BptSettings power, balance;
+  balance.mis = MisHeuristic::balance;
+  const Rendered a = testing::render_integrator(scene, make_render_config("bpt", power, seed_base() + 501), 512);
+  const Rendered b = testing::render_integrator(scene, make_render_config("bpt", balance, seed_base() + 502), 512);
   expect_same_image(a, b, "bpt-power-vs-balance-gbs_c");
 }
 

@@ -45,16 +45,16 @@ Scene sphere_on_plane(EnvironmentImage image, const Rgb& value) {
 TEST(EnvironmentImage, PtAndBptAgree) {
   const Scene scene = sphere_on_plane(sky(false), Rgb(1.f));
   const Accel accel(scene);
-  const testing::Rendered pt = testing::render_integrator(scene, accel, "pt", testing::seeded(61), 512);
-  const testing::Rendered bpt = testing::render_integrator(scene, accel, "bpt", testing::seeded(62), 256);
+  const testing::Rendered pt = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(61)), 512);
+  const testing::Rendered bpt = testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(62)), 256);
   testing::expect_same_image(pt, bpt, "envmap-pt-vs-bpt", 1e-3, "pt", "bpt");
 }
 
 TEST(EnvironmentImage, ConstantImageRendersAsConstantLight) {
   const Scene image = sphere_on_plane(sky(true), Rgb(1.25f));
   const Scene constant = sphere_on_plane(EnvironmentImage{}, Rgb(0.8f * 1.25f, 0.72f * 1.25f, 0.88f * 1.25f));
-  const testing::Rendered a = testing::render_integrator(image, "pt", testing::seeded(63), 256);
-  const testing::Rendered b = testing::render_integrator(constant, "pt", testing::seeded(64), 256);
+  const testing::Rendered a = testing::render_integrator(image, testing::default_config("pt", testing::test_seed(63)), 256);
+  const testing::Rendered b = testing::render_integrator(constant, testing::default_config("pt", testing::test_seed(64)), 256);
   testing::expect_same_image(a, b, "envmap-constant-vs-constant-light", 1e-3, "image", "constant");
 }
 

@@ -28,11 +28,11 @@
 #include <vector>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -63,15 +63,20 @@ TEST_P(GatheringAgreesWithBpt, OnSmoothPixels) {
   const Case c = GetParam();
   const Scene scene = make_builtin_scene(c.scene, kSize, kSize);
   const Accel accel(scene);
-  IntegratorSettings gather, bpt;
-  gather.seed = testing::test_seed_base() + 31;
-  gather.sppm.photons = c.light_paths;
-  gather.sppm.initial_radius = kInitialRadius;
-  gather.pclt.light_paths = c.light_paths;
-  gather.pclt.initial_radius = kInitialRadius;
-  bpt.seed = testing::test_seed_base() + 32;
-  const Rendered a = testing::render_integrator(scene, accel, c.integrator, gather, c.iterations, 0);
-  const Rendered b = testing::render_integrator(scene, accel, "bpt", bpt, c.bpt_passes, 0);
+  RenderConfig gather;
+  if (std::string(c.integrator) == "sppm") {
+    SppmSettings sppm;
+    sppm.photons = c.light_paths;
+    sppm.initial_radius = kInitialRadius;
+    gather = make_render_config("sppm", sppm, testing::test_seed(31));
+  } else {
+    PcltSettings pclt;
+    pclt.light_paths = c.light_paths;
+    pclt.initial_radius = kInitialRadius;
+    gather = make_render_config("pclt", pclt, testing::test_seed(31));
+  }
+  const Rendered a = testing::render_integrator(scene, accel, gather, c.iterations);
+  const Rendered b = testing::render_integrator(scene, accel, make_render_config("bpt", BptSettings{}, testing::test_seed(32)), c.bpt_passes);
   const std::vector<bool> keep = testing::smooth_pixels(scene, accel, 3.f * kInitialRadius, false);
   const size_t kept = size_t(std::count(keep.begin(), keep.end(), true));
   EXPECT_GT(kept, keep.size() / 3) << "the mask should keep most wall and floor pixels";
@@ -108,7 +113,7 @@ std::vector<Case> cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cornell, GatheringAgreesWithBpt, ::testing::ValuesIn(cases()),
-                         [](const auto& info) { return std::string(info.param.integrator) + "_" + info.param.scene; });
+                         [](const auto& info) { return testing::test_name(std::string(info.param.integrator) + "_" + info.param.scene); });
 
 }  // namespace
 }  // namespace pathspace

@@ -22,12 +22,12 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/lt/lt_integrator.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -38,14 +38,14 @@ using testing::specular_first_hit_mask;
 
 TEST(LtDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 48, 48);
-  IntegratorSettings s;
-  s.seed = 9;
-  const Rendered one = testing::render_integrator(scene, "lt", s, 3, 1);
-  const Rendered two = testing::render_integrator(scene, "lt", s, 3, 2);
-  const Rendered again = testing::render_integrator(scene, "lt", s, 3, 2);
-  s.lt.filter = LtFilter::gaussian;  // many splats per vertex, to more pixels
-  const Rendered g1 = testing::render_integrator(scene, "lt", s, 2, 1);
-  const Rendered g2 = testing::render_integrator(scene, "lt", s, 2, 2);
+  using testing::with_threads;
+  LtSettings s;
+  const Rendered one = testing::render_integrator(scene, with_threads(make_render_config("lt", s, 9), 1), 3);
+  const Rendered two = testing::render_integrator(scene, with_threads(make_render_config("lt", s, 9), 2), 3);
+  const Rendered again = testing::render_integrator(scene, with_threads(make_render_config("lt", s, 9), 2), 3);
+  s.filter = LtFilter::gaussian;  // many splats per vertex, to more pixels
+  const Rendered g1 = testing::render_integrator(scene, with_threads(make_render_config("lt", s, 9), 1), 2);
+  const Rendered g2 = testing::render_integrator(scene, with_threads(make_render_config("lt", s, 9), 2), 2);
   size_t lit = 0;
   for (size_t i = 0; i < one.mean.size(); ++i) {
     ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "pixel " << i;
@@ -68,10 +68,15 @@ uint64_t seed_base() { return testing::test_seed_base(); }
 
 struct CornellCase {
   const char* scene;   // SmallVCM id, or a name for a mask without a built-in id
-  unsigned mask;       // LoadCornellBox mask (cornell-variants.md §1)
+  unsigned mask;       // LoadCornellBox mask (docs/scenes.md §1)
   int max_segments;  // -1: the scene's (10)
   uint32_t lt_passes, pt_passes;
 };
+
+// gtest prints the parameter in test listings (not as "N-byte object <...>").
+void PrintTo(const CornellCase& c, std::ostream* os) {
+  *os << c.scene << " mask " << c.mask << " max_segments " << c.max_segments;
+}
 
 class LtPtAgree : public ::testing::TestWithParam<CornellCase> {};
 
@@ -80,14 +85,13 @@ TEST_P(LtPtAgree, CornellVariant) {
   const Scene scene = make_cornell_box(c.mask, 16, 16);
   const Accel accel(scene);
   const std::vector<bool> mask = specular_first_hit_mask(scene, accel);
-  IntegratorSettings lt, pt;
-  lt.seed = seed_base() + 101;
-  lt.lt.light_paths = 4096;
-  lt.lt.max_segments = c.max_segments;
-  pt.seed = seed_base() + 102;
-  pt.pt.max_segments = c.max_segments;
-  Rendered a = testing::render_integrator(scene, "lt", lt, c.lt_passes, 0);
-  Rendered b = testing::render_integrator(scene, "pt", pt, c.pt_passes, 0);
+  LtSettings lt;
+  lt.light_paths = 4096;
+  lt.max_segments = c.max_segments;
+  PtSettings pt;
+  pt.max_segments = c.max_segments;
+  Rendered a = testing::render_integrator(scene, make_render_config("lt", lt, seed_base() + 101), c.lt_passes);
+  Rendered b = testing::render_integrator(scene, make_render_config("pt", pt, seed_base() + 102), c.pt_passes);
   apply_mask(&a, mask);
   apply_mask(&b, mask);
   expect_same_image(a, b, fmt::format("lt-vs-pt-{}-{}", c.scene, c.max_segments));
@@ -103,7 +107,7 @@ INSTANTIATE_TEST_SUITE_P(Cornell, LtPtAgree,
                                            CornellCase{"glm_c", 273, 2, 256, 1024}, CornellCase{"gbs_p", 452, 2, 256, 1024},
                                            CornellCase{"gbs_s", 450, 2, 256, 1024}),
                          [](const auto& info) {
-                           return std::string(info.param.scene) + (info.param.max_segments > 0 ? "_direct" : "");
+                           return testing::test_name(std::string(info.param.scene) + (info.param.max_segments > 0 ? "_direct" : ""));
                          });
 
 // A tracer that replaces the shading normal by a smoothly varying one tilted by up to ~35 degrees
@@ -151,7 +155,7 @@ TEST(LtPtAgreeShadingNormals, BumpedCornellBox) {
   const Rendered b = pt_with_tracer(scene, tracer, 1024, seed_base() + 202);
   expect_same_image(a, b, "lt-vs-pt-shading-normals");
   // The bumped normals must change the image noticeably, or the test would prove nothing.
-  const Rendered flat = testing::render_integrator(scene, "pt", IntegratorSettings{}, 1024, 0);
+  const Rendered flat = testing::render_integrator(scene, make_render_config("pt", PtSettings{}, 0), 1024);
   const testing::ImageZTest z = testing::image_z_test(flat.mean, flat.variance, b.mean, b.variance, 1e-3, kAlphaImage);
   EXPECT_FALSE(z.passed()) << "shading normals had no visible effect";
 }

@@ -25,10 +25,12 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/integrators/pclt/pclt_integrator.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/session/render.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -37,34 +39,27 @@ struct Rendered {
   Image mean, variance;
 };
 
-Rendered render_with(const Scene& scene, const Accel& accel, const std::string& integrator, const IntegratorSettings& settings,
-                     uint32_t passes, int threads) {
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.integrator = integrator;
-  req.spp = passes;
-  req.threads = threads;
-  req.settings = settings;
-  render(scene, accel, req, film);
-  return {film.mean(), film.variance_of_mean()};
+Rendered render_with(const Scene& scene, const Accel& accel, RenderConfig config, uint32_t passes, int threads) {
+  config.threads = threads;
+  const RenderSnapshot snap = render(scene, accel, config, RunLimit::for_passes(passes));
+  return {snap.mean, snap.variance};
 }
 
 TEST(PcltDeterminism, BitIdenticalForOneAndTwoThreads) {
   const Scene scene = make_builtin_scene("gbs_c", 32, 32);
   const Accel accel(scene);
-  IntegratorSettings s;
-  s.seed = 9;
-  s.pclt.light_paths = 20000;
+  PcltSettings s;
+  s.light_paths = 20000;
   for (int variant = 0; variant < 2; ++variant) {
     if (variant == 1) {  // the other map, a shortcut, a wide filter and a stochastic store
-      s.pclt.hash_map = PcltHashMap::stochastic;
-      s.pclt.visibility = PcltVisibility::plane;
-      s.pclt.filter = LtFilter::gaussian;
-      s.pclt.cache_capacity = 100;
-      s.pclt.stochastic_store = true;
+      s.hash_map = PcltHashMap::stochastic;
+      s.visibility = PcltVisibility::plane;
+      s.filter = LtFilter::gaussian;
+      s.cache_capacity = 100;
+      s.stochastic_store = true;
     }
-    const Rendered one = render_with(scene, accel, "pclt", s, 3, 1);
-    const Rendered two = render_with(scene, accel, "pclt", s, 3, 2);
+    const Rendered one = render_with(scene, accel, make_render_config("pclt", s, 9), 3, 1);
+    const Rendered two = render_with(scene, accel, make_render_config("pclt", s, 9), 3, 2);
     for (size_t i = 0; i < one.mean.size(); ++i) {
       ASSERT_EQ(one.mean.pixels[i], two.mean.pixels[i]) << "variant " << variant << " pixel " << i;
       ASSERT_EQ(one.variance.pixels[i], two.variance.pixels[i]) << "variant " << variant << " pixel " << i;
@@ -107,9 +102,9 @@ TEST(PcltEyePass, EdPathsNeverEnterTheCache) {
 TEST(PcltCache, AtMostOneRecordPerPixel) {
   const Scene scene = make_builtin_scene("gbs_c", 32, 32);
   const Accel accel(scene);
-  IntegratorSettings s;
-  s.pclt.light_paths = 1000;
-  PcltIntegrator integrator(scene, accel, s);
+  PcltSettings s;
+  s.light_paths = 1000;
+  PcltIntegrator integrator(scene, accel, s, 0);
   EXPECT_EQ(integrator.capacity(), size_t(32 * 32));
   for (uint32_t pass = 0; pass < 4; ++pass) {
     Film film(32, 32);
@@ -122,7 +117,9 @@ TEST(PcltCache, AtMostOneRecordPerPixel) {
   }
   const PcltMemory m = integrator.memory();
   EXPECT_EQ(m.cache, size_t(32 * 32) * sizeof(PixelCacheEntry));
-  EXPECT_NE(integrator.report().find("memory"), std::string::npos);
+  Statistics details;
+  integrator.statistics(details);
+  EXPECT_GT(details.number("pclt.memory_bytes"), 0.0) << format_statistics(details);
 }
 
 constexpr int kComparisons = 4;
@@ -181,18 +178,16 @@ class PcltAgreesWithLt : public ::testing::TestWithParam<const char*> {};
 TEST_P(PcltAgreesWithLt, EmptyCornellIsAllProjection) {
   const Scene scene = make_builtin_scene(GetParam(), 16, 16);
   const Accel accel(scene);
-  IntegratorSettings pclt, lt;
-  pclt.seed = 101;
-  pclt.pclt.light_paths = 4096;
-  lt.seed = 102;
-  lt.lt.light_paths = 4096;
-  const Rendered a = render_with(scene, accel, "pclt", pclt, 256, 0);
-  const Rendered b = render_with(scene, accel, "lt", lt, 256, 0);
+  PcltSettings pclt;
+  pclt.light_paths = 4096;
+  LtSettings lt;
+  lt.light_paths = 4096;
+  const Rendered a = render_with(scene, accel, make_render_config("pclt", pclt, 101), 256, 0);
+  const Rendered b = render_with(scene, accel, make_render_config("lt", lt, 102), 256, 0);
   expect_same_image(a, b, fmt::format("pclt-vs-lt-{}", GetParam()));
 }
 
-INSTANTIATE_TEST_SUITE_P(Cornell, PcltAgreesWithLt, ::testing::Values("e_c", "e_p"),
-                         [](const auto& info) { return std::string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Cornell, PcltAgreesWithLt, ::testing::Values("e_c", "e_p"), testing::StringParamName());
 
 TEST(PcltAgreesWithLtAndSppm, CornellBoxWallsAndSpheres) {
   const Scene scene = make_builtin_scene("bs_c", 24, 24);
@@ -200,29 +195,28 @@ TEST(PcltAgreesWithLtAndSppm, CornellBoxWallsAndSpheres) {
   const std::vector<int> cls = first_hit_classes(scene, accel);
   const std::vector<bool> walls = where(cls, 1), spheres = where(cls, 2);
   ASSERT_GT(std::count(spheres.begin(), spheres.end(), true), 30);
-  IntegratorSettings pclt, lt, sppm;
-  pclt.seed = 201;
-  pclt.pclt.light_paths = 20000;
+  PcltSettings pclt;
+  pclt.light_paths = 20000;
   // The same radius schedule gives PCLT and SPPM the same expectation (bias included) on sphere
   // pixels, so a large constant radius costs nothing here and keeps the gather noise low.
-  pclt.pclt.initial_radius = 0.15f;
-  pclt.pclt.alpha = 1.f;
-  lt.seed = 202;
-  lt.lt.light_paths = 20000;
-  sppm.seed = 203;
-  sppm.sppm.photons = 20000;
-  sppm.sppm.initial_radius = 0.15f;
-  sppm.sppm.alpha = 1.f;
+  pclt.initial_radius = 0.15f;
+  pclt.alpha = 1.f;
+  LtSettings lt;
+  lt.light_paths = 20000;
+  SppmSettings sppm;
+  sppm.photons = 20000;
+  sppm.initial_radius = 0.15f;
+  sppm.alpha = 1.f;
   const uint32_t passes = 64;
-  const Rendered p = render_with(scene, accel, "pclt", pclt, passes, 0);
-  const Rendered l = render_with(scene, accel, "lt", lt, passes, 0);
-  const Rendered s = render_with(scene, accel, "sppm", sppm, passes, 0);
+  const Rendered p = render_with(scene, accel, make_render_config("pclt", pclt, 201), passes, 0);
+  const Rendered l = render_with(scene, accel, make_render_config("lt", lt, 202), passes, 0);
+  const Rendered s = render_with(scene, accel, make_render_config("sppm", sppm, 203), passes, 0);
   expect_same_image(masked(p, walls), masked(l, walls), "pclt-vs-lt-bs_c-walls");
   expect_same_image(masked(p, spheres), masked(s, spheres), "pclt-vs-sppm-bs_c-spheres");
 
   // What the paper's PCLT misses (ES+L off): reported, and it must be visible on the spheres only.
-  pclt.pclt.specular_emission = false;
-  const Rendered q = render_with(scene, accel, "pclt", pclt, passes, 0);
+  pclt.specular_emission = false;
+  const Rendered q = render_with(scene, accel, make_render_config("pclt", pclt, 201), passes, 0);
   double all = 0, missing = 0, sphere_all = 0, sphere_missing = 0, wall_missing = 0;
   for (size_t i = 0; i < cls.size(); ++i) {
     const double d = average(p.mean.pixels[i]) - average(q.mean.pixels[i]);
@@ -247,18 +241,17 @@ TEST(PcltAgreesWithLtAndSppm, CornellBoxWallsAndSpheres) {
 TEST(PcltVisibilityShortcuts, ErrorOnCornellBoxIsBounded) {
   const Scene scene = make_builtin_scene("bs_c", 64, 64);
   const Accel accel(scene);
-  IntegratorSettings s;
-  s.seed = 301;
-  s.pclt.light_paths = 20000;
-  const Rendered ray = render_with(scene, accel, "pclt", s, 8, 0);
+  PcltSettings s;
+  s.light_paths = 20000;
+  const Rendered ray = render_with(scene, accel, make_render_config("pclt", s, 301), 8, 0);
   const struct {
     PcltVisibility mode;
     const char* name;
     double max_relmse, max_energy_loss;
   } cases[] = {{PcltVisibility::z_buffer, "z-buffer", 0.25, 0.5}, {PcltVisibility::plane, "plane", 0.03, 0.05}};
   for (const auto& c : cases) {
-    s.pclt.visibility = c.mode;
-    const Rendered shortcut = render_with(scene, accel, "pclt", s, 8, 0);
+    s.visibility = c.mode;
+    const Rendered shortcut = render_with(scene, accel, make_render_config("pclt", s, 301), 8, 0);
     const ImageError m = image_error(shortcut.mean, ray.mean);
     const double loss = (m.mean_reference - m.mean_image) / m.mean_reference;
     std::printf("%s vs shadow ray: relMSE %.3g, energy %+.3f%%\n", c.name, m.rel_mse, -100 * loss);

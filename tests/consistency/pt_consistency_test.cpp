@@ -1,5 +1,5 @@
 // Consistency tests for path tracing:
-//  - renders are bit-identical for 1 and 2 threads and across reruns (docs/architecture.md §3);
+//  - renders are bit-identical for 1 and 2 threads and across reruns (docs/architecture.md §5);
 //  - NEE only, BSDF sampling only and MIS estimate the same image: per-pixel z-test on mean and
 //    variance images (Mitsuba's rule: pass if >= 99.75% of pixel-channels pass; docs/testing.md).
 #include <gtest/gtest.h>
@@ -10,10 +10,12 @@
 #include <cstdlib>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/session/render.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -24,14 +26,10 @@ struct Rendered {
 
 Rendered render_scene(const Scene& scene, const PtSettings& pt, uint32_t spp, uint64_t seed, int threads) {
   const Accel accel(scene);
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.spp = spp;
-  req.threads = threads;
-  req.settings.seed = seed;
-  req.settings.pt = pt;
-  render(scene, accel, req, film);
-  return {film.mean(), film.variance_of_mean()};
+  RenderConfig config = make_render_config("pt", pt, seed);
+  config.threads = threads;
+  const RenderSnapshot snap = render(scene, accel, config, RunLimit::for_passes(spp));
+  return {snap.mean, snap.variance};
 }
 
 TEST(PtDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
@@ -98,6 +96,9 @@ uint64_t seed_base() {
   return env ? std::strtoull(env, nullptr, 10) : 0;
 }
 
+// gtest prints the parameter in test listings (not as "N-byte object <...>").
+void PrintTo(const ModeCase& c, std::ostream* os) { *os << c.scene; }
+
 class PtModesAgree : public ::testing::TestWithParam<ModeCase> {};
 
 TEST_P(PtModesAgree, NeeOnlyBsdfOnlyAndMis) {
@@ -122,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(Cornell, PtModesAgree,
                                            ModeCase{"bs_c", true, false}, ModeCase{"gbs_c", true, false},
                                            ModeCase{"glm_c", true, false}, ModeCase{"gbs_p", true, false},
                                            ModeCase{"gbs_b", false, true}, ModeCase{"gbs_s", true, false}),
-                         [](const auto& info) { return std::string(info.param.scene); });
+                         [](const auto& info) { return testing::test_name(info.param.scene); });
 
 }  // namespace
 }  // namespace pathspace

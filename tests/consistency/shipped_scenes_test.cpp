@@ -21,9 +21,7 @@ constexpr int kComparisons = 4;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 testing::Rendered render(const Scene& scene, uint64_t seed, uint32_t passes, const std::string& integrator = "pt") {
-  IntegratorSettings s;
-  s.seed = testing::test_seed_base() + seed;
-  return testing::render_integrator(scene, integrator, s, passes);
+  return testing::render_integrator(scene, testing::default_config(integrator, testing::test_seed(seed)), passes);
 }
 
 Scene load(const std::string& scene, const std::string& form) {

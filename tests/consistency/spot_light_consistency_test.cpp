@@ -30,14 +30,11 @@ Scene spot_box() {
 TEST(SpotLight, PtLtAndBptAgree) {
   const Scene scene = spot_box();
   const Accel accel(scene);
-  IntegratorSettings pt, lt, bpt;
-  pt.seed = testing::test_seed_base() + 61;
-  lt.seed = testing::test_seed_base() + 62;
-  lt.lt.light_paths = 4096;
-  bpt.seed = testing::test_seed_base() + 63;
-  const testing::Rendered a = testing::render_integrator(scene, accel, "pt", pt, 1024);
-  const testing::Rendered b = testing::render_integrator(scene, accel, "lt", lt, 256);
-  const testing::Rendered c = testing::render_integrator(scene, accel, "bpt", bpt, 512);
+  LtSettings lt;
+  lt.light_paths = 4096;
+  const testing::Rendered a = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(61)), 1024);
+  const testing::Rendered b = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(62)), 256);
+  const testing::Rendered c = testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(63)), 512);
   size_t lit = 0;
   for (const Rgb& px : a.mean.pixels) lit += px.r > 1e-3f;
   EXPECT_GT(lit, 50u);

@@ -23,12 +23,12 @@
 #include <cstdio>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/integrators/render.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -37,17 +37,16 @@ struct Rendered {
   Image mean, variance;
 };
 
+// `sppm` applies to "sppm"; other integrators render with their defaults.
 Rendered render_scene(const Scene& scene, const Accel& accel, const std::string& integrator, const SppmSettings& sppm,
                       uint32_t spp, uint64_t seed, int threads) {
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.integrator = integrator;
-  req.spp = spp;
-  req.threads = threads;
-  req.settings.seed = seed;
-  req.settings.sppm = sppm;
-  render(scene, accel, req, film);
-  return {film.mean(), film.variance_of_mean()};
+  RenderConfig config;
+  config.integrator = integrator;
+  if (integrator == "sppm") config.settings = sppm;
+  config.seed = seed;
+  config.threads = threads;
+  const RenderSnapshot snap = render(scene, accel, config, RunLimit::for_passes(spp));
+  return {snap.mean, snap.variance};
 }
 
 TEST(SppmDeterminism, BitIdenticalForOneAndTwoThreadsAndReruns) {
@@ -114,8 +113,7 @@ TEST_P(SppmAgreesWithPt, OnSmoothPixels) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cornell, SppmAgreesWithPt, ::testing::Values("e_c", "gbs_c"),
-                         [](const auto& info) { return std::string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Cornell, SppmAgreesWithPt, ::testing::Values("e_c", "gbs_c"), testing::StringParamName());
 
 }  // namespace
 }  // namespace pathspace

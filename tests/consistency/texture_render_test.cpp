@@ -83,9 +83,7 @@ TEST(TextureRender, TexturedQuadUnderSkyMatchesTheTexture) {
   const Scene scene = textured_quad_scene(16);
   const Accel accel(scene);
   const Image expected = expected_radiance(scene, accel, 32);
-  IntegratorSettings pt;
-  pt.seed = testing::test_seed_base() + 301;
-  expect_matches(testing::render_integrator(scene, accel, "pt", pt, 256), expected, "pt");
+  expect_matches(testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(301)), 256), expected, "pt");
 
   // The texture must show: a flat grey image would fail the test above by far.
   float lo = 1e9f, hi = -1e9f;
@@ -100,11 +98,10 @@ TEST(TextureRender, HashedFilterKeepsTextureDetail) {
   const Scene scene = textured_quad_scene(16);
   const Accel accel(scene);
   const Image expected = expected_radiance(scene, accel, 32);
-  IntegratorSettings f;
-  f.seed = testing::test_seed_base() + 302;
-  f.filter.kind = FilterKind::hashed;
-  f.filter.hashed.key.psf_scale = 8.f;  // voxels much larger than a texel: only demodulation keeps detail
-  expect_matches(testing::render_integrator(scene, accel, "pt", f, 128), expected, "pt + hashed filter", false);
+  HashedFilterSettings hashed;
+  hashed.key.psf_scale = 8.f;  // voxels much larger than a texel: only demodulation keeps detail
+  const RenderConfig f = with_filter(testing::default_config("pt", testing::test_seed(302)), "hashed", hashed);
+  expect_matches(testing::render_integrator(scene, accel, f, 128), expected, "pt + hashed filter", false);
 }
 
 // The empty Cornell box (SmallVCM e_c) with a texture on every diffuse wall (pbrt's default
@@ -135,21 +132,17 @@ Scene textured_cornell_box(int resolution) {
 TEST(TextureRender, LightTracingAgreesWithPathTracing) {
   const Scene scene = textured_cornell_box(16);
   const Accel accel(scene);
-  IntegratorSettings lt, pt;
-  lt.seed = testing::test_seed_base() + 303;
-  lt.lt.light_paths = 4096;
-  pt.seed = testing::test_seed_base() + 304;
-  Rendered a = testing::render_integrator(scene, accel, "lt", lt, 256);
-  Rendered b = testing::render_integrator(scene, accel, "pt", pt, 1024);
+  LtSettings lt;
+  lt.light_paths = 4096;
+  Rendered a = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(303)), 256);
+  Rendered b = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(304)), 1024);
   const std::vector<bool> mask = testing::specular_first_hit_mask(scene, accel);
   testing::apply_mask(&a, mask);
   testing::apply_mask(&b, mask);
   testing::expect_same_image(a, b, "lt-vs-pt-textured", kAlphaImage, "lt", "pt");
   // Textures and normals must change the image, or the comparison would prove nothing new.
-  IntegratorSettings plain;
-  plain.seed = testing::test_seed_base() + 305;
   const Scene untextured = make_cornell_box(1, 16, 16);
-  const Rendered c = testing::render_integrator(untextured, "pt", plain, 1024);
+  const Rendered c = testing::render_integrator(untextured, testing::default_config("pt", testing::test_seed(305)), 1024);
   const testing::ImageZTest z = testing::image_z_test(c.mean, c.variance, b.mean, b.variance, 1e-3, kAlphaImage);
   EXPECT_FALSE(z.passed()) << "textures and vertex normals had no visible effect";
 }

@@ -58,20 +58,20 @@ void expect_same(const Rendered& a, const Rendered& b, const std::string& what, 
 }
 
 Rendered bpt_reference(const Scene& scene, const Accel& accel, uint64_t seed) {
-  return testing::render_integrator(scene, accel, "bpt", testing::seeded(seed), 512);
+  return testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(seed)), 512);
 }
 
 TEST(ThinLensAgree, PtAndBpt) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  const Rendered pt = testing::render_integrator(scene, accel, "pt", testing::seeded(401), 2048);
+  const Rendered pt = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(401)), 2048);
   const Rendered bpt = bpt_reference(scene, accel, 402);
   expect_same(pt, bpt, "thin-lens-pt-vs-bpt", "pt", "bpt");
 
   // The comparison can see the lens: the pinhole render of the same scene is rejected.
   const Scene pinhole = make_lens_cornell(0.f);
   const Accel pinhole_accel(pinhole);
-  const Rendered sharp = testing::render_integrator(pinhole, pinhole_accel, "bpt", testing::seeded(403), 512);
+  const Rendered sharp = testing::render_integrator(pinhole, pinhole_accel, testing::default_config("bpt", testing::test_seed(403)), 512);
   const testing::ImageZTest z = testing::image_z_test(sharp.mean, sharp.variance, bpt.mean, bpt.variance, 1e-3, kAlphaImage);
   std::printf("pinhole vs lens: %zu of %zu pixels differ (allowed %zu)\n", z.failed, z.pixels, z.allowed);
   EXPECT_FALSE(z.passed()) << "the pinhole image should differ from the lens image";
@@ -80,9 +80,9 @@ TEST(ThinLensAgree, PtAndBpt) {
 TEST(ThinLensAgree, LtAndBpt) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings lt = testing::seeded(411);
-  lt.lt.light_paths = 8192;
-  const Rendered a = testing::render_integrator(scene, accel, "lt", lt, 256);
+  LtSettings lt;
+  lt.light_paths = 8192;
+  const Rendered a = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(411)), 256);
   const Rendered b = bpt_reference(scene, accel, 412);
   expect_same(a, b, "thin-lens-lt-vs-bpt", "lt", "bpt");
 }
@@ -91,12 +91,15 @@ TEST(ThinLensAgree, LtAndBpt) {
 void expect_gathering_agrees(const char* integrator, uint64_t seed) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings g = testing::seeded(seed);
-  g.sppm.photons = 100000;
-  g.sppm.initial_radius = kInitialRadius;
-  g.pclt.light_paths = 50000;  // half the gathering test's: PCLT's light paths cost twice SPPM's
-  g.pclt.initial_radius = kInitialRadius;
-  const Rendered a = testing::render_integrator(scene, accel, integrator, g, 128);
+  SppmSettings sppm_settings;
+  sppm_settings.photons = 100000;
+  sppm_settings.initial_radius = kInitialRadius;
+  PcltSettings pclt_settings;
+  pclt_settings.light_paths = 50000;  // half the gathering test's: PCLT's light paths cost twice SPPM's
+  pclt_settings.initial_radius = kInitialRadius;
+  const RenderConfig g = std::string(integrator) == "sppm" ? make_render_config("sppm", sppm_settings, testing::test_seed(seed))
+                                                           : make_render_config("pclt", pclt_settings, testing::test_seed(seed));
+  const Rendered a = testing::render_integrator(scene, accel, g, 128);
   const Rendered b = bpt_reference(scene, accel, seed + 1);
   // SPPM gathers at its visible point on the glossy floor, where the light's highlight varies within
   // the gather ball: its radius bias there is 20-25% in a few pixels whatever the photon count (SPPM
@@ -119,11 +122,11 @@ TEST(ThinLensAgree, PcltAndBpt) { expect_gathering_agrees("pclt", 431); }
 TEST(ThinLensPclt, ZBufferShortcutFallsBackToShadowRays) {
   const Scene scene = make_lens_cornell(kLensRadius);
   const Accel accel(scene);
-  IntegratorSettings s = testing::seeded(441);
-  s.pclt.light_paths = 20000;
-  const Rendered ray = testing::render_integrator(scene, accel, "pclt", s, 4);
-  s.pclt.visibility = PcltVisibility::z_buffer;
-  const Rendered z = testing::render_integrator(scene, accel, "pclt", s, 4);
+  PcltSettings s;
+  s.light_paths = 20000;
+  const Rendered ray = testing::render_integrator(scene, accel, make_render_config("pclt", s, testing::test_seed(441)), 4);
+  s.visibility = PcltVisibility::z_buffer;
+  const Rendered z = testing::render_integrator(scene, accel, make_render_config("pclt", s, testing::test_seed(441)), 4);
   size_t lit = 0;
   for (size_t i = 0; i < ray.mean.size(); ++i) {
     ASSERT_EQ(ray.mean.pixels[i], z.mean.pixels[i]) << "pixel " << i;

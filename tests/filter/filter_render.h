@@ -4,9 +4,10 @@
 #include <cstring>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/film/film.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/session/render.h"
 
 namespace pathspace::testing {
 
@@ -15,26 +16,21 @@ struct FilteredRender {
   RenderStats stats;
 };
 
-inline FilteredRender render_with(const Scene& scene, const IntegratorSettings& settings, uint32_t spp, int threads = 0) {
+// Renders `spp` passes of `config` with `threads` threads (<= 0: all cores).
+inline FilteredRender render_with(const Scene& scene, RenderConfig config, uint32_t spp, int threads = 0) {
   const Accel accel(scene);
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.spp = spp;
-  req.threads = threads;
-  req.settings = settings;
-  FilteredRender r;
-  r.stats = render(scene, accel, req, film);
-  r.mean = film.mean();
-  r.variance = film.variance_of_mean();
-  return r;
+  config.threads = threads;
+  RenderSnapshot snap = render(scene, accel, config, RunLimit::for_passes(spp));
+  return {std::move(snap.mean), std::move(snap.variance), std::move(snap.stats)};
 }
 
-inline IntegratorSettings hashed_settings(uint64_t seed = 0) {
-  IntegratorSettings s;
-  s.seed = seed;
-  s.filter.kind = FilterKind::hashed;
-  return s;
+// Path tracing with the hashed filter.
+inline RenderConfig hashed_config(uint64_t seed = 0, const HashedFilterSettings& filter = {}, const PtSettings& pt = {}) {
+  return with_filter(make_render_config("pt", pt, seed), "hashed", filter);
 }
+
+// Plain path tracing.
+inline RenderConfig pt_config(uint64_t seed = 0, const PtSettings& pt = {}) { return make_render_config("pt", pt, seed); }
 
 inline bool bit_identical(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height) return false;

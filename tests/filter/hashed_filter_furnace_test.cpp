@@ -9,6 +9,7 @@
 
 #include "filter_render.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 #include "support/test_scenes.h"
 
 namespace pathspace {
@@ -21,33 +22,33 @@ const double kAlpha = testing::sidak(0.01, kVariants * kScenes);
 
 struct Variant {
   const char* name;
-  std::function<void(IntegratorSettings*)> apply;
+  std::function<void(PtSettings*, HashedFilterSettings*)> apply;
 };
 
 const Variant kVariantList[kVariants] = {
-    {"default", [](IntegratorSettings*) {}},
-    {"no_jitter", [](IntegratorSettings* s) { s->filter.hashed.key.jitter = false; }},
-    {"normal_in_fingerprint", [](IntegratorSettings* s) { s->filter.hashed.key.normal = NormalKeyMode::fingerprint; }},
-    {"neighbour_search", [](IntegratorSettings* s) {
-       s->filter.hashed.neighbour_search = true;
-       s->filter.hashed.min_count = 64;
+    {"default", [](PtSettings*, HashedFilterSettings*) {}},
+    {"no_jitter", [](PtSettings*, HashedFilterSettings* h) { h->key.jitter = false; }},
+    {"normal_in_fingerprint", [](PtSettings*, HashedFilterSettings* h) { h->key.normal = NormalKeyMode::fingerprint; }},
+    {"neighbour_search", [](PtSettings*, HashedFilterSettings* h) {
+       h->neighbour_search = true;
+       h->min_count = 64;
      }},
-    {"multi_level", [](IntegratorSettings* s) {
-       s->filter.hashed.multi_level = true;
-       s->filter.hashed.min_count = 64;
+    {"multi_level", [](PtSettings*, HashedFilterSettings* h) {
+       h->multi_level = true;
+       h->min_count = 64;
      }},
-    {"all_vertices", [](IntegratorSettings* s) {
-       s->pt.selection.mode = VertexSelectionMode::all;
-       s->pt.selection.max_vertices = 3;
+    {"all_vertices", [](PtSettings* pt, HashedFilterSettings*) {
+       pt->selection.mode = VertexSelectionMode::all;
+       pt->selection.max_vertices = 3;
      }},
-    {"second_vertex", [](IntegratorSettings* s) {
-       s->pt.selection.mode = VertexSelectionMode::nth;
-       s->pt.selection.n = 2;
+    {"second_vertex", [](PtSettings* pt, HashedFilterSettings*) {
+       pt->selection.mode = VertexSelectionMode::nth;
+       pt->selection.n = 2;
      }},
-    {"large_voxels", [](IntegratorSettings* s) { s->filter.hashed.key.psf_scale = 40.f; }},
-    {"tiny_table", [](IntegratorSettings* s) {
-       s->filter.hashed.table_factor = 1.f / 64.f;
-       s->filter.hashed.max_probes = 2;
+    {"large_voxels", [](PtSettings*, HashedFilterSettings* h) { h->key.psf_scale = 40.f; }},
+    {"tiny_table", [](PtSettings*, HashedFilterSettings* h) {
+       h->table_factor = 1.f / 64.f;
+       h->max_probes = 2;
      }},
 };
 
@@ -55,9 +56,10 @@ const Variant kVariantList[kVariants] = {
 void expect_exact_mean(const Scene& scene, const Variant& v, double expected) {
   double sum = 0, sum_sq = 0;
   for (int p = 0; p < kPasses; ++p) {
-    IntegratorSettings s = testing::hashed_settings(1000 + uint64_t(p));
-    v.apply(&s);
-    const auto r = testing::render_with(scene, s, 1);
+    PtSettings pt;
+    HashedFilterSettings h;
+    v.apply(&pt, &h);
+    const auto r = testing::render_with(scene, testing::hashed_config(1000 + uint64_t(p), h, pt), 1);
     double m = 0;
     for (const Rgb& px : r.mean.pixels) m += px.r;
     m /= double(r.mean.size());
@@ -82,7 +84,7 @@ TEST_P(HashedFilterFurnace, SphereWithPointLightStaysExact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, HashedFilterFurnace, ::testing::Range(0, kVariants),
-                         [](const ::testing::TestParamInfo<int>& i) { return std::string(kVariantList[i.param].name); });
+                         [](const ::testing::TestParamInfo<int>& i) { return testing::test_name(kVariantList[i.param].name); });
 
 }  // namespace
 }  // namespace pathspace

@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kSeeds = 4;
 
-double mean_rel_mse(const Scene& scene, const Image& reference, IntegratorSettings settings, uint32_t spp,
+double mean_rel_mse(const Scene& scene, const Image& reference, RenderConfig settings, uint32_t spp,
                     uint64_t first_seed) {
   double sum = 0;
   for (int i = 0; i < kSeeds; ++i) {
@@ -29,9 +29,9 @@ double mean_rel_mse(const Scene& scene, const Image& reference, IntegratorSettin
 TEST(HashedFilterQuality, CornellBox512At1sppBeatsTenfoldAnd16spp) {
   const Image reference = read_image(PATHSPACE_TEST_DATA_DIR "/cornell-box-512-pt4096.exr");
   const Scene scene = make_builtin_scene("cornell-box", reference.width, reference.height);
-  const double pt1 = mean_rel_mse(scene, reference, IntegratorSettings{}, 1, 1);
-  const double pt16 = mean_rel_mse(scene, reference, IntegratorSettings{}, 16, 101);
-  const double filtered = mean_rel_mse(scene, reference, testing::hashed_settings(), 1, 1);
+  const double pt1 = mean_rel_mse(scene, reference, testing::pt_config(), 1, 1);
+  const double pt16 = mean_rel_mse(scene, reference, testing::pt_config(), 16, 101);
+  const double filtered = mean_rel_mse(scene, reference, testing::hashed_config(), 1, 1);
   RecordProperty("relmse_pt1", std::to_string(pt1));
   RecordProperty("relmse_pt16", std::to_string(pt16));
   RecordProperty("relmse_filtered1", std::to_string(filtered));

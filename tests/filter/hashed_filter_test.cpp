@@ -7,12 +7,14 @@
 
 #include "filter_render.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
 
 using testing::bit_identical;
-using testing::hashed_settings;
+using testing::hashed_config;
+using testing::pt_config;
 using testing::render_with;
 
 struct SelectionCase {
@@ -23,19 +25,23 @@ struct SelectionCase {
   bool split_layers;
 };
 
+// gtest prints the parameter in test listings (not as "N-byte object <...>").
+void PrintTo(const SelectionCase& c, std::ostream* os) { *os << c.name; }
+
 class FilterNone : public ::testing::TestWithParam<SelectionCase> {};
 
 TEST_P(FilterNone, EqualsPlainPathTracingBitForBit) {
   const SelectionCase c = GetParam();
   const Scene scene = make_builtin_scene(c.scene, 40, 32);
-  IntegratorSettings plain;
-  plain.seed = 3;
-  plain.pt.selection.mode = c.mode;
-  plain.pt.selection.n = c.n;
-  plain.pt.selection.max_vertices = c.n;
-  plain.pt.selection.split_layers = c.split_layers;
-  IntegratorSettings buffered = plain;
-  buffered.filter.force_vertex_buffer = true;
+  PtSettings pt;
+  pt.selection.mode = c.mode;
+  pt.selection.n = c.n;
+  pt.selection.max_vertices = c.n;
+  pt.selection.split_layers = c.split_layers;
+  const RenderConfig plain = pt_config(3, pt);
+  // Every path through the vertex buffer and the resolve step, filtered by nothing.
+  RenderConfig buffered = plain;
+  buffered.filter = FilterChoice{"passthrough", {}};
   const auto a = render_with(scene, plain, 3);
   const auto b = render_with(scene, buffered, 3);
   EXPECT_TRUE(bit_identical(a.mean, b.mean));
@@ -49,12 +55,13 @@ INSTANTIATE_TEST_SUITE_P(Selections, FilterNone,
                                            SelectionCase{"gbs_c_merged_layers", "gbs_c", VertexSelectionMode::first, 1, false},
                                            SelectionCase{"gbs_c_second", "gbs_c", VertexSelectionMode::nth, 2, true},
                                            SelectionCase{"gbs_b_all3", "gbs_b", VertexSelectionMode::all, 3, true}),
-                         [](const ::testing::TestParamInfo<SelectionCase>& i) { return std::string(i.param.name); });
+                         [](const ::testing::TestParamInfo<SelectionCase>& i) { return testing::test_name(i.param.name); });
 
 TEST(HashedFilter, BitIdenticalForOneAndTwoThreadsAndReruns) {
   const Scene scene = make_builtin_scene("gbs_c", 64, 48);
-  IntegratorSettings s = hashed_settings(11);
-  s.filter.hashed.neighbour_search = true;
+  HashedFilterSettings h;
+  h.neighbour_search = true;
+  RenderConfig s = hashed_config(11, h);
   const auto one = render_with(scene, s, 2, 1);
   const auto two = render_with(scene, s, 2, 2);
   const auto again = render_with(scene, s, 2, 2);
@@ -67,17 +74,17 @@ TEST(HashedFilter, BitIdenticalForOneAndTwoThreadsAndReruns) {
 TEST(HashedFilter, LocalCombiningDoesNotChangeTheResult) {
   // Integer sums: combining vertices before the atomics must give exactly the same averages.
   const Scene scene = make_builtin_scene("gbs_c", 64, 48);
-  IntegratorSettings s = hashed_settings(4);
-  const auto combined = render_with(scene, s, 2);
-  s.filter.hashed.local_combining = false;
-  EXPECT_TRUE(bit_identical(combined.mean, render_with(scene, s, 2).mean));
+  HashedFilterSettings h;
+  const auto combined = render_with(scene, hashed_config(4, h), 2);
+  h.local_combining = false;
+  EXPECT_TRUE(bit_identical(combined.mean, render_with(scene, hashed_config(4, h), 2).mean));
 }
 
 TEST(HashedFilter, FilteringChangesTheImage) {
   // Brightness is checked exactly by the furnace tests and image quality by the relMSE regression.
   const Scene scene = make_builtin_scene("cornell-empty-area", 64, 64);
-  const auto p = render_with(scene, IntegratorSettings{}, 4);
-  const auto f = render_with(scene, hashed_settings(), 4);
+  const auto p = render_with(scene, pt_config(), 4);
+  const auto f = render_with(scene, hashed_config(), 4);
   EXPECT_FALSE(bit_identical(p.mean, f.mean));
 }
 
@@ -85,7 +92,7 @@ TEST(HashedFilter, RendersEveryBuiltinSceneProgressively) {
   for (const BuiltinSceneInfo& info : builtin_scenes()) {
     SCOPED_TRACE(info.name);
     const Scene scene = make_builtin_scene(info.name, 32, 24);
-    const auto f = render_with(scene, hashed_settings(2), 3);  // 3 filtered passes accumulated
+    const auto f = render_with(scene, hashed_config(2), 3);  // 3 filtered passes accumulated
     EXPECT_EQ(f.stats.spp, 3u);
     EXPECT_EQ(f.stats.dropped_samples, 0u);
     double sum = 0;
@@ -94,17 +101,17 @@ TEST(HashedFilter, RendersEveryBuiltinSceneProgressively) {
       sum += average(v);
     }
     EXPECT_GT(sum, 0.0);
-    EXPECT_NE(f.stats.report.find("probe-limit fallbacks 0"), std::string::npos) << f.stats.report;
+    EXPECT_EQ(f.stats.details.number("hashed.probe_limit_fallbacks"), 0.0) << format_statistics(f.stats.details);
   }
 }
 
 TEST(HashedFilter, TinyTableFallsBackToUnfilteredContributions) {
   const Scene scene = make_builtin_scene("cornell-empty-area", 32, 32);
-  IntegratorSettings s = hashed_settings(5);
-  s.filter.hashed.table_factor = 16.f / 1024.f;  // one cache line of cells for 1024 pixels
-  s.filter.hashed.key.psf_scale = 0.5f;          // many distinct voxels
-  const auto f = render_with(scene, s, 1);
-  EXPECT_NE(f.stats.report.find("probe-limit fallbacks"), std::string::npos);
+  HashedFilterSettings h;
+  h.table_factor = 16.f / 1024.f;  // one cache line of cells for 1024 pixels
+  h.key.psf_scale = 0.5f;          // many distinct voxels
+  const auto f = render_with(scene, hashed_config(5, h), 1);
+  EXPECT_NE(f.stats.details.find("hashed.probe_limit_fallbacks"), nullptr) << format_statistics(f.stats.details);
   EXPECT_EQ(f.stats.dropped_samples, 0u);
   for (const Rgb& v : f.mean.pixels) EXPECT_TRUE(all_finite(v));
 }
@@ -114,17 +121,13 @@ TEST(HashedFilter, TinyTableFallsBackToUnfilteredContributions) {
 TEST(HashedFilter, DebugImagesOnlyWhenRequestedAndImageUnchanged) {
   const Scene scene = make_builtin_scene("cornell-box", 48, 48);
   const Accel accel(scene);
-  auto render_aovs = [&](bool debug_images, RenderStats* stats) {
-    Film film(scene.camera.width, scene.camera.height);
-    RenderRequest req;
-    req.spp = 2;
-    req.want_aovs = true;
-    req.settings = hashed_settings(11);
-    req.settings.filter.hashed.debug_images = debug_images;
-    *stats = render(scene, accel, req, film);
-    return film.mean();
+  auto render_aovs = [&](bool debug_images, RenderSnapshot* snap) {
+    HashedFilterSettings h;
+    h.debug_images = debug_images;
+    *snap = render(scene, accel, hashed_config(11, h), RunLimit::for_passes(2));
+    return snap->mean;
   };
-  RenderStats plain, debug;
+  RenderSnapshot plain, debug;
   const Image a = render_aovs(false, &plain);
   const Image b = render_aovs(true, &debug);
   EXPECT_TRUE(bit_identical(a, b));

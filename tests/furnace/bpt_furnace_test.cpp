@@ -84,10 +84,10 @@ TEST(BptFurnace, PlaneUnderSky) {
 TEST(BptStrategyImages, SumToTheImage) {
   Scene scene = testing::make_furnace_box(0.8f, 0.6f);
   const Accel accel(scene);
-  IntegratorSettings settings;
-  settings.bpt.max_segments = 4;
-  settings.bpt.strategy_images = 4;
-  BptIntegrator bpt(scene, accel, settings);
+  BptSettings settings;
+  settings.max_segments = 4;
+  settings.strategy_images = 4;
+  BptIntegrator bpt(scene, accel, settings, 0);
   Film film(scene.camera.width, scene.camera.height);
   PathCounters counters;
   for (uint32_t pass = 0; pass < 4; ++pass) bpt.render_pass(pass, film, counters);

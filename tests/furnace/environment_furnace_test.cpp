@@ -14,6 +14,7 @@
 #include "pathspace/camera/perspective_camera.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 
 namespace pathspace {
 namespace {
@@ -95,28 +96,38 @@ class EnvPlanePt : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EnvPlanePt, LatLongRowsClosedForm) {  // 3 tests
   const Scene scene = plane_scene(sky_image(), Rgb(kScale));
-  IntegratorSettings s;
-  s.seed = 21 + testing::test_seed_base();
-  s.pt.nee = GetParam() != "bsdf";
-  s.pt.bsdf_sampling = GetParam() != "nee";
-  const testing::Rendered r = testing::render_integrator(scene, "pt", s, 256);
+  PtSettings s;
+  s.nee = GetParam() != "bsdf";
+  s.bsdf_sampling = GetParam() != "nee";
+  const testing::Rendered r = testing::render_integrator(scene, make_render_config("pt", s, 21 + testing::test_seed_base()), 256);
   expect_image_mean(r, expected_radiance(), GetParam().c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Env, EnvPlanePt, ::testing::Values("mis", "nee", "bsdf"));
+INSTANTIATE_TEST_SUITE_P(Env, EnvPlanePt, ::testing::Values("mis", "nee", "bsdf"), testing::StringParamName());
 
 // Light paths share a pass: the samples are whole-image means of independent one-pass renders.
 void expect_pass_means(const std::string& integrator, int passes, uint64_t seed) {
   const Scene scene = plane_scene(sky_image(), Rgb(kScale));
   const Accel accel(scene);
-  IntegratorSettings s;
-  s.lt.light_paths = 65536;
-  s.sppm.photons = 262144;
-  s.pclt.light_paths = 262144;
+  RenderConfig config;  // the integrator's defaults but for its light path count
+  config.integrator = integrator;
+  if (integrator == "lt") {
+    LtSettings lt;
+    lt.light_paths = 65536;
+    config.settings = lt;
+  } else if (integrator == "sppm") {
+    SppmSettings sppm;
+    sppm.photons = 262144;
+    config.settings = sppm;
+  } else if (integrator == "pclt") {
+    PcltSettings pclt;
+    pclt.light_paths = 262144;
+    config.settings = pclt;
+  }
   double sum = 0, sum_sq = 0;
   for (int p = 0; p < passes; ++p) {
-    s.seed = seed + uint64_t(p) * 7919 + testing::test_seed_base();
-    const testing::Rendered r = testing::render_integrator(scene, accel, integrator, s, 1);
+    config.seed = seed + uint64_t(p) * 7919 + testing::test_seed_base();
+    const testing::Rendered r = testing::render_integrator(scene, accel, config, 1);
     double m = 0;
     for (const Rgb& px : r.mean.pixels) m += px.r;
     m /= double(r.mean.size());
@@ -146,9 +157,8 @@ TEST(EnvPlane, ConstantEqualAreaMapIsConstantLight) {
   e.axis_x = normalize(Vec3(1, 1, 0));
   e.axis_y = normalize(Vec3(-1, 1, 0));
   const Scene scene = plane_scene(std::move(e), Rgb(2.f));
-  IntegratorSettings s;
-  s.seed = 51 + testing::test_seed_base();
-  expect_image_mean(testing::render_integrator(scene, "pt", s, 128), kAlbedo * 0.7 * 2.0, "equal-area constant");
+  expect_image_mean(testing::render_integrator(scene, make_render_config("pt", PtSettings{}, 51 + testing::test_seed_base()), 128),
+                    kAlbedo * 0.7 * 2.0, "equal-area constant");
 }
 
 }  // namespace

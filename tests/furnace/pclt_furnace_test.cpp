@@ -77,11 +77,8 @@ Scene emissive_mirror_box(float le, float a_d, float a_s) {
 // Renders `iterations` PCLT iterations, each into its own film, and t-tests their image means.
 void expect_iteration_means(const Scene& scene, const PcltSettings& pclt, int iterations, uint64_t seed, double expected) {
   const Accel accel(scene);
-  IntegratorSettings settings;
   const char* env = std::getenv("PATHSPACE_TEST_SEED");  // rerun with other seeds to check robustness
-  settings.seed = seed + (env ? std::strtoull(env, nullptr, 10) * 1000 : 0);
-  settings.pclt = pclt;
-  PcltIntegrator integrator(scene, accel, settings);
+  PcltIntegrator integrator(scene, accel, pclt, seed + (env ? std::strtoull(env, nullptr, 10) * 1000 : 0));
   double sum = 0, sum_sq = 0;
   size_t records = 0;
   for (int i = 0; i < iterations; ++i) {
@@ -100,7 +97,9 @@ void expect_iteration_means(const Scene& scene, const PcltSettings& pclt, int it
   const testing::MeanTest t = testing::t_test_mean(sum, sum_sq, iterations, expected);
   EXPECT_GT(t.p, kAlpha) << "mean " << t.mean << " +- " << t.std_error << " (expected " << expected << ", t = " << t.t << ")";
   EXPECT_LT(t.std_error, 0.01 * expected);  // the power to see a 3% bias
-  std::printf("mean %.5f +- %.5f expected %.5f t %.2f\n%s", t.mean, t.std_error, expected, t.t, integrator.report().c_str());
+  Statistics details;
+  integrator.statistics(details);
+  std::printf("mean %.5f +- %.5f expected %.5f t %.2f\n%s", t.mean, t.std_error, expected, t.t, format_statistics(details).c_str());
 }
 
 double sphere_expected(float radius, float a_d, float a_s, float intensity) {

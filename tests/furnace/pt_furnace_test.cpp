@@ -9,6 +9,7 @@
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "support/statistics.h"
+#include "support/test_names.h"
 #include "support/test_scenes.h"
 
 namespace pathspace {
@@ -102,9 +103,9 @@ TEST_P(PlaneUnderSky, AlbedoTimesSky) {
   expect_mean(trace_paths(scene, mode_settings(GetParam()), 200000, 5), albedo * sky);
 }
 
-INSTANTIATE_TEST_SUITE_P(Pt, PlaneUnderSky, ::testing::Values("mis", "nee", "bsdf"));
-INSTANTIATE_TEST_SUITE_P(Pt, ClosedBox, ::testing::Values("mis", "nee", "bsdf"));
-INSTANTIATE_TEST_SUITE_P(Pt, EmissiveSphere, ::testing::Values("mis", "nee", "bsdf"));
+INSTANTIATE_TEST_SUITE_P(Pt, PlaneUnderSky, ::testing::Values("mis", "nee", "bsdf"), testing::StringParamName());
+INSTANTIATE_TEST_SUITE_P(Pt, ClosedBox, ::testing::Values("mis", "nee", "bsdf"), testing::StringParamName());
+INSTANTIATE_TEST_SUITE_P(Pt, EmissiveSphere, ::testing::Values("mis", "nee", "bsdf"), testing::StringParamName());
 
 // A point light cannot be hit by BSDF sampling, so only MIS and NEE-only apply.
 class SphereWithPointLight : public ::testing::TestWithParam<std::string> {};
@@ -116,7 +117,7 @@ TEST_P(SphereWithPointLight, KnownRadiance) {
   expect_mean(trace_paths(scene, mode_settings(GetParam()), 200000, 4), expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Pt, SphereWithPointLight, ::testing::Values("mis", "nee"));
+INSTANTIATE_TEST_SUITE_P(Pt, SphereWithPointLight, ::testing::Values("mis", "nee"), testing::StringParamName());
 
 }  // namespace
 }  // namespace pathspace

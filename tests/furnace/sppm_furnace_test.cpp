@@ -30,11 +30,8 @@ const double kAlpha = testing::sidak(0.01, kTestsInFile);
 // Renders `iterations` SPPM iterations, each into its own film, and t-tests their image means.
 void expect_iteration_means(const Scene& scene, const SppmSettings& sppm, int iterations, uint64_t seed, double expected) {
   const Accel accel(scene);
-  IntegratorSettings settings;
   const char* env = std::getenv("PATHSPACE_TEST_SEED");  // rerun with other seeds to check robustness
-  settings.seed = seed + (env ? std::strtoull(env, nullptr, 10) * 1000 : 0);
-  settings.sppm = sppm;
-  SppmIntegrator integrator(scene, accel, settings);
+  SppmIntegrator integrator(scene, accel, sppm, seed + (env ? std::strtoull(env, nullptr, 10) * 1000 : 0));
   double sum = 0, sum_sq = 0;
   for (int i = 0; i < iterations; ++i) {
     Film film(scene.camera.width, scene.camera.height);
@@ -56,7 +53,9 @@ void expect_iteration_means(const Scene& scene, const SppmSettings& sppm, int it
   EXPECT_GT(t.p, kAlpha) << "mean " << t.mean << " +- " << t.std_error << " (expected " << expected << ", t = " << t.t
                          << ", iterations " << iterations << ")";
   EXPECT_LT(t.std_error, 0.01 * expected);  // the test has the power to see a 3% bias
-  std::printf("mean %.5f +- %.5f expected %.5f t %.2f\n%s", t.mean, t.std_error, expected, t.t, integrator.report().c_str());
+  Statistics details;
+  integrator.statistics(details);
+  std::printf("mean %.5f +- %.5f expected %.5f t %.2f\n%s", t.mean, t.std_error, expected, t.t, format_statistics(details).c_str());
 }
 
 TEST(SppmFurnace, SphereWithPointLight) {

@@ -1,4 +1,4 @@
-// Statistical tests of BSDF sampling (testing notes, chi-square): a chi-square test of the sampled
+// Statistical tests of BSDF sampling (docs/testing.md, Method: chi-square): a chi-square test of the sampled
 // directions against bsdf_pdf for every material at several incident directions (grazing and,
 // for the rough dielectric, from inside), and for every sample: weight == f |cos| / pdf,
 // bsdf_pdf(sampled wi) == returned pdf, consistent lobe flags and eta. Delta lobes are checked by

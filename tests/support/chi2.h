@@ -1,4 +1,4 @@
-// Chi-square goodness-of-fit tests of sampling routines against their densities (testing notes,
+// Chi-square goodness-of-fit tests of sampling routines against their densities (docs/testing.md,
 // after Mitsuba's chi2.py): samples are binned on a 2D grid, expected counts come from adaptive
 // Simpson integration of the density over each bin, cells with expected count < 5 are pooled, and
 // a sample in a cell of zero expected mass fails at once. Extra outcomes (discrete lobes, sample

@@ -13,25 +13,17 @@
 
 namespace pathspace::testing {
 
-Rendered render_integrator(const Scene& scene, const Accel& accel, const std::string& integrator,
-                           const IntegratorSettings& settings, uint32_t passes, int threads, std::vector<NamedImage>* aovs) {
-  Film film(scene.camera.width, scene.camera.height);
-  RenderRequest req;
-  req.integrator = integrator;
-  req.spp = passes;
-  req.threads = threads;
-  req.settings = settings;
-  req.want_aovs = aovs != nullptr;
-  RenderStats stats = render(scene, accel, req, film);
-  EXPECT_EQ(stats.dropped_samples, 0u) << integrator;
-  if (aovs) *aovs = std::move(stats.aovs);
-  return {film.mean(), film.variance_of_mean()};
+Rendered render_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config, uint32_t passes,
+                           std::vector<NamedImage>* aovs) {
+  RenderSnapshot snap = render(scene, accel, config, RunLimit::for_passes(passes));
+  EXPECT_EQ(snap.stats.dropped_samples, 0u) << config.integrator;
+  if (aovs) *aovs = std::move(snap.aovs);
+  return {std::move(snap.mean), std::move(snap.variance)};
 }
 
-Rendered render_integrator(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings,
-                           uint32_t passes, int threads, std::vector<NamedImage>* aovs) {
+Rendered render_integrator(const Scene& scene, const RenderConfig& config, uint32_t passes, std::vector<NamedImage>* aovs) {
   const Accel accel(scene);
-  return render_integrator(scene, accel, integrator, settings, passes, threads, aovs);
+  return render_integrator(scene, accel, config, passes, aovs);
 }
 
 void apply_mask(Rendered* r, const std::vector<bool>& mask) {
@@ -143,10 +135,6 @@ uint64_t test_seed_base() {
   return env ? std::strtoull(env, nullptr, 10) * 16 : 0;
 }
 
-IntegratorSettings seeded(uint64_t seed) {
-  IntegratorSettings s;
-  s.seed = test_seed_base() + seed;
-  return s;
-}
+uint64_t test_seed(uint64_t seed) { return test_seed_base() + seed; }
 
 }  // namespace pathspace::testing

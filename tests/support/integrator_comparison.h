@@ -9,8 +9,14 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/image.h"
-#include "pathspace/integrators/render.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/integrators/bpt/bpt_settings.h"
+#include "pathspace/integrators/lt/lt_settings.h"
+#include "pathspace/integrators/pclt/pclt_settings.h"
+#include "pathspace/integrators/pt/pt_settings.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/session/render.h"
 
 namespace pathspace::testing {
 
@@ -18,12 +24,26 @@ struct Rendered {
   Image mean, variance;
 };
 
-// Renders `passes` passes; checks that no sample was dropped; collects AOVs when asked.
-Rendered render_integrator(const Scene& scene, const Accel& accel, const std::string& integrator,
-                           const IntegratorSettings& settings, uint32_t passes, int threads = 0,
+// Renders `passes` passes with `config` (integrator, settings, filter, seed, threads); checks that
+// no sample was dropped; collects the AOVs when asked.
+Rendered render_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config, uint32_t passes,
                            std::vector<NamedImage>* aovs = nullptr);
-Rendered render_integrator(const Scene& scene, const std::string& integrator, const IntegratorSettings& settings,
-                           uint32_t passes, int threads = 0, std::vector<NamedImage>* aovs = nullptr);
+Rendered render_integrator(const Scene& scene, const RenderConfig& config, uint32_t passes,
+                           std::vector<NamedImage>* aovs = nullptr);
+
+// `integrator` with its default settings.
+inline RenderConfig default_config(const std::string& integrator, uint64_t seed) {
+  RenderConfig config;
+  config.integrator = integrator;
+  config.seed = seed;
+  return config;
+}
+
+// `config` with `threads` threads (<= 0: all cores).
+inline RenderConfig with_threads(RenderConfig config, int threads) {
+  config.threads = threads;
+  return config;
+}
 
 // Zeroes mean and variance where mask[i] is set (those pixels cannot fail a comparison).
 void apply_mask(Rendered* r, const std::vector<bool>& mask);
@@ -54,7 +74,7 @@ Image compact_pixels(const Image& img, const std::vector<bool>& keep);
 // PATHSPACE_TEST_SEED=k shifts the seeds of the statistical comparisons (robustness reruns).
 uint64_t test_seed_base();
 
-// Default settings with seed test_seed_base() + seed.
-IntegratorSettings seeded(uint64_t seed);
+// The seed test_seed_base() + seed.
+uint64_t test_seed(uint64_t seed);
 
 }  // namespace pathspace::testing

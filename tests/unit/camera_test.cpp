@@ -1,4 +1,4 @@
-// Unit tests: the pinhole camera's raster mapping against cornell-variants.md §2 check values,
+// Unit tests: the pinhole camera's raster mapping against docs/scenes.md §2 check values,
 // the inverse mapping, and the importance / pdf normalisation.
 #include <gtest/gtest.h>
 

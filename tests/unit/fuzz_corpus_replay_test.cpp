@@ -10,8 +10,13 @@
 #include <sstream>
 
 #include "fuzz/fuzz_inputs.h"
+#include "support/test_names.h"
 
 namespace pathspace {
+namespace fuzz {
+// gtest prints the parameter in test listings (not as "4-byte object <...>"); found by ADL.
+[[maybe_unused]] static void PrintTo(Format f, std::ostream* os) { *os << format_name(f); }
+}  // namespace fuzz
 namespace {
 
 namespace fs = std::filesystem;
@@ -54,7 +59,7 @@ TEST_P(FuzzCorpusReplay, EveryFileLoadsOrFailsWithLocation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, FuzzCorpusReplay, ::testing::Values(Format::pbrt, Format::ply, Format::obj, Format::mitsuba, Format::gltf),
-                         [](const ::testing::TestParamInfo<Format>& i) { return std::string(fuzz::format_name(i.param)); });
+                         [](const ::testing::TestParamInfo<Format>& i) { return testing::test_name(fuzz::format_name(i.param)); });
 
 }  // namespace
 }  // namespace pathspace

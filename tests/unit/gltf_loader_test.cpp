@@ -468,11 +468,9 @@ TEST(GltfLoader, RendersLikeTheSameObjScene) {
   expect_near(g.camera.forward, m.camera.forward);
   EXPECT_NEAR(g.camera.tan_x, m.camera.tan_x, 1e-6f);
 
-  IntegratorSettings a, c;  // independent seeds: the z-test assumes independent estimates
-  a.seed = testing::test_seed_base() + 11;
-  c.seed = testing::test_seed_base() + 12;
-  const testing::Rendered rg = testing::render_integrator(g, "pt", a, 128);
-  const testing::Rendered rm = testing::render_integrator(m, "pt", c, 128);
+  // Independent seeds: the z-test assumes independent estimates.
+  const testing::Rendered rg = testing::render_integrator(g, make_render_config("pt", PtSettings{}, testing::test_seed(11)), 128);
+  const testing::Rendered rm = testing::render_integrator(m, make_render_config("pt", PtSettings{}, testing::test_seed(12)), 128);
   double sum = 0.0;
   for (const Rgb& p : rg.mean.pixels) sum += average(p);
   EXPECT_GT(sum / double(rg.mean.size()), 0.05) << "the box must be lit";

@@ -1,7 +1,8 @@
 // Acceptance test of the Mitsuba loader on Bitterli's Cornell box: scene_v3.xml (Mitsuba 3) and
 // scene-v4.pbrt (pbrt-v4) load to the same scene and render the same image (per-pixel z-test of two
 // independent path-traced renders), and the Mitsuba form matches Tungsten's reference on the
-// diffuse walls as PbrtCornellBox does for the pbrt form. Skipped without the shared scenes.
+// diffuse walls as PbrtCornellBox does for the pbrt form. Fails without the shared scenes
+// (support/shared_data.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "pathspace/io/scene_loader.h"
 #include "support/integrator_comparison.h"
 #include "support/reference_regions.h"
+#include "support/shared_data.h"
 #include "support/statistics.h"
 
 namespace pathspace {
@@ -23,9 +25,9 @@ namespace {
 
 std::string cornell_dir() { return std::string(PATHSPACE_SHARED_SCENES_DIR) + "/bitterli/cornell-box"; }
 
-#define REQUIRE_CORNELL_FORMS()                                                                                  \
-  if (!std::filesystem::exists(cornell_dir() + "/scene_v3.xml") || !std::filesystem::exists(cornell_dir() + "/scene-v4.pbrt")) \
-  GTEST_SKIP() << "no " << cornell_dir()
+#define REQUIRE_CORNELL_FORMS()                                \
+  PATHSPACE_REQUIRE_SHARED_DATA(cornell_dir() + "/scene_v3.xml"); \
+  PATHSPACE_REQUIRE_SHARED_DATA(cornell_dir() + "/scene-v4.pbrt")
 
 Scene load_at(const std::string& file, int res, std::vector<std::string>* warnings = nullptr) {
   SceneLoadOptions o;
@@ -65,11 +67,9 @@ TEST(MitsubaCornellBox, SameImageAsThePbrtForm) {
   constexpr int kRes = 64;
   constexpr uint32_t kPasses = 256;
   const Scene m = load_at("scene_v3.xml", kRes), p = load_at("scene-v4.pbrt", kRes);
-  IntegratorSettings a, b;  // independent seeds: the z-test assumes independent estimates
-  a.seed = testing::test_seed_base() + 11;
-  b.seed = testing::test_seed_base() + 12;
-  const testing::Rendered rm = testing::render_integrator(m, "pt", a, kPasses);
-  const testing::Rendered rp = testing::render_integrator(p, "pt", b, kPasses);
+  // Independent seeds: the z-test assumes independent estimates.
+  const testing::Rendered rm = testing::render_integrator(m, make_render_config("pt", PtSettings{}, testing::test_seed(11)), kPasses);
+  const testing::Rendered rp = testing::render_integrator(p, make_render_config("pt", PtSettings{}, testing::test_seed(12)), kPasses);
   const testing::ImageZTest z = testing::image_z_test(rm.mean, rm.variance, rp.mean, rp.variance, 1e-3, 1e-3);
   std::printf("xml vs pbrt, %dx%d, %u spp each: %zu of %zu pixels fail at alpha 1e-3 (%zu allowed); image means %.5f vs %.5f, z %.2f\n",
               kRes, kRes, kPasses, z.failed, z.pixels, z.allowed, z.mean_a, z.mean_b, z.mean_z);
@@ -79,12 +79,10 @@ TEST(MitsubaCornellBox, SameImageAsThePbrtForm) {
 // The regions and allowance of PbrtCornellBox.RenderMatchesTungstenOnDiffuseWalls.
 TEST(MitsubaCornellBox, RenderMatchesTungstenOnDiffuseWalls) {
   REQUIRE_CORNELL_FORMS();
-  if (!std::filesystem::exists(cornell_dir() + "/TungstenRender.exr")) GTEST_SKIP() << "no Tungsten reference";
+  PATHSPACE_REQUIRE_SHARED_DATA(cornell_dir() + "/TungstenRender.exr");
   constexpr int kRes = 128;
   const Scene scene = load_at("scene_v3.xml", kRes);
-  IntegratorSettings settings;
-  settings.seed = testing::test_seed_base() + 7;
-  const testing::Rendered r = testing::render_integrator(scene, "pt", settings, 32);
+  const testing::Rendered r = testing::render_integrator(scene, make_render_config("pt", PtSettings{}, testing::test_seed(7)), 32);
   for (const Rgb& c : r.mean.pixels) ASSERT_TRUE(all_finite(c));
   testing::expect_regions_match_reference(r, read_image(cornell_dir() + "/TungstenRender.exr"),
                                           testing::kCornellDiffuseWalls, 0.02, 1e-3);

@@ -1,7 +1,7 @@
-// The real pbrt-v4 Cornell box from ../shared/scenes/bitterli/cornell-box: it loads with the expected
+// The real pbrt-v4 Cornell box (Bitterli's, outside the repository: docs/testing.md): it loads with the expected
 // geometry, lights and camera, and renders without NaN to diffuse-wall brightnesses that agree with
-// Bitterli's Tungsten reference (TungstenRender.exr) in a per-region z-test. Skipped when the shared
-// scenes folder is absent.
+// Bitterli's Tungsten reference (TungstenRender.exr) in a per-region z-test. Fails when the shared
+// scenes folder is absent (support/shared_data.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "pathspace/io/scene_loader.h"
 #include "support/integrator_comparison.h"
 #include "support/reference_regions.h"
+#include "support/shared_data.h"
 
 namespace pathspace {
 namespace {
@@ -21,8 +22,7 @@ namespace {
 
 std::string cornell_dir() { return std::string(PATHSPACE_SHARED_SCENES_DIR) + "/bitterli/cornell-box"; }
 
-#define REQUIRE_CORNELL()                                                                          \
-  if (!std::filesystem::exists(cornell_dir() + "/scene-v4.pbrt")) GTEST_SKIP() << "no " << cornell_dir()
+#define REQUIRE_CORNELL() PATHSPACE_REQUIRE_SHARED_DATA(cornell_dir() + "/scene-v4.pbrt")
 
 TEST(PbrtCornellBox, GeometryLightsCamera) {
   REQUIRE_CORNELL();
@@ -53,13 +53,12 @@ TEST(PbrtCornellBox, GeometryLightsCamera) {
 
 TEST(PbrtCornellBox, RenderMatchesTungstenOnDiffuseWalls) {
   REQUIRE_CORNELL();
+  PATHSPACE_REQUIRE_SHARED_DATA(cornell_dir() + "/TungstenRender.exr");
   constexpr int kRes = 128;
   SceneLoadOptions o;
   o.width = o.height = kRes;
   const Scene scene = load_scene(cornell_dir() + "/scene-v4.pbrt", o, nullptr);
-  IntegratorSettings settings;
-  settings.seed = 7;
-  const testing::Rendered r = testing::render_integrator(scene, "pt", settings, 32);
+  const testing::Rendered r = testing::render_integrator(scene, make_render_config("pt", PtSettings{}, 7), 32);
   for (const Rgb& c : r.mean.pixels) ASSERT_TRUE(all_finite(c));
   // Our noise plus a 2% allowance for what differs by design: Tungsten's tent filter and
   // spectral-vs-RGB details, and the reference's own noise.

@@ -9,6 +9,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/io/scene_loader.h"
+#include "support/shared_data.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -78,7 +79,7 @@ TEST(PbrtMissingFiles, SubstitutesGreyTexturesAndWhiteEnvironmentWithWarnings) {
 const std::string kLivingRoom = std::string(PATHSPACE_SHARED_SCENES_DIR) + "/bitterli/living-room/scene-v4.pbrt";
 
 TEST(PbrtLivingRoom, StopsNamingEachMissingImage) {
-  if (!fs::exists(kLivingRoom)) GTEST_SKIP() << "shared scene not found: " << kLivingRoom;
+  PATHSPACE_REQUIRE_SHARED_DATA(kLivingRoom);
   const std::string m = error_message(kLivingRoom);
   EXPECT_NE(m.find("3 referenced files are missing"), std::string::npos) << m;
   EXPECT_NE(m.find("texture file 'textures/wood.tga' at " + kLivingRoom + ":21:5"), std::string::npos) << m;
@@ -87,7 +88,7 @@ TEST(PbrtLivingRoom, StopsNamingEachMissingImage) {
 }
 
 TEST(PbrtLivingRoom, LoadsWithSubstitutedImages) {
-  if (!fs::exists(kLivingRoom)) GTEST_SKIP() << "shared scene not found: " << kLivingRoom;
+  PATHSPACE_REQUIRE_SHARED_DATA(kLivingRoom);
   SceneLoadOptions o;
   o.substitute_missing_textures = true;
   o.width = 64, o.height = 36;

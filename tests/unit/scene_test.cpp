@@ -1,4 +1,4 @@
-// Unit tests: the built-in Cornell scenes match cornell-variants.md (catalogue, geometry, lights).
+// Unit tests: the built-in Cornell scenes match docs/scenes.md (catalogue, geometry, lights).
 #include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"

@@ -1,5 +1,6 @@
 // Portability macros: code marked PS_HD compiles for the host and, under nvcc, for the device.
-// pathspace_core is written in the device-safe subset described in docs/architecture.md §3.
+// Kernel-side code (the headers the nvcc check in src/pathspace/cuda/ compiles) is written in the
+// device-safe subset described in docs/architecture.md §4.
 #pragma once
 
 #if defined(__CUDACC__)

@@ -1,7 +1,7 @@
 // Perspective camera, pinhole or thin lens (depth of field, pbrt-v4's PerspectiveCamera model):
 // raster mapping, ray generation, importance We and its pdfs, and the camera connection used by
 // light tracing, BPT and PCLT (PCLT paper eq. 4). Conventions: raster x right, y down, pixel (i, j)
-// covers [i, i+1) x [j, j+1) (docs/conventions.md; cornell-variants.md §2).
+// covers [i, i+1) x [j, j+1) (docs/conventions.md; docs/scenes.md §2).
 //
 // The image plane sits at distance 1 in front of the lens centre and spans [-tan_x, tan_x] x
 // [-tan_y, tan_y]. A pixel's value is the mean radiance over its square on that plane (and, for a
@@ -137,7 +137,7 @@ struct PerspectiveCamera {
 
   // Camera connection from a surface point p (t = 1 in BPT terms): project() clipped to the image.
   // The factor converts (throughput * f * |cos_surface|) into the pixel's radiance estimate for one
-  // light path (divide by the number of light paths). Equals cornell-variants.md §2's splat.
+  // light path (divide by the number of light paths). Equals docs/scenes.md §2's splat.
   PS_HD bool connect(const Vec3& p, Point2 lens_u, CameraProjection* out) const {
     if (!project(p, lens_u, out)) return false;
     return out->rx >= 0.f && out->rx < float(width) && out->ry >= 0.f && out->ry < float(height);
@@ -146,7 +146,7 @@ struct PerspectiveCamera {
 
 // Camera from position, look direction, up hint and the horizontal full field of view.
 // `square_pixels` = false reproduces SmallVCM's convention: the same tan for x and y
-// (stretched pixels when W != H; cornell-variants.md §2). A pinhole; set_thin_lens adds the lens.
+// (stretched pixels when W != H; docs/scenes.md §2). A pinhole; set_thin_lens adds the lens.
 inline PerspectiveCamera make_perspective_camera(const Vec3& position, const Vec3& forward_hint, const Vec3& up_hint,
                                          float hfov_degrees, int width, int height, bool square_pixels = true) {
   PerspectiveCamera c;

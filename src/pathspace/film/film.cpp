@@ -1,6 +1,9 @@
 #include "pathspace/film/film.h"
 
 #include <algorithm>
+#include <string>
+
+#include "pathspace/base/error.h"
 
 namespace pathspace {
 
@@ -36,6 +39,26 @@ void Film::clear() {
   std::fill(sum_.begin(), sum_.end(), 0.0);
   std::fill(sum_sq_.begin(), sum_sq_.end(), 0.0);
   std::fill(count_.begin(), count_.end(), 0u);
+}
+
+void Film::save_state(StateWriter& out) const {
+  out.put("film.width", width_);
+  out.put("film.height", height_);
+  out.put_vector("film.sum", sum_);
+  out.put_vector("film.sum_sq", sum_sq_);
+  out.put_vector("film.count", count_);
+}
+
+void Film::load_state(StateReader& in) {
+  int width = 0, height = 0;
+  in.get("film.width", &width);
+  in.get("film.height", &height);
+  if (width != width_ || height != height_)
+    throw Error("render state: film is " + std::to_string(width) + "x" + std::to_string(height) + ", this render is " +
+                std::to_string(width_) + "x" + std::to_string(height_));
+  in.get_vector("film.sum", &sum_, sum_.size());
+  in.get_vector("film.sum_sq", &sum_sq_, sum_sq_.size());
+  in.get_vector("film.count", &count_, count_.size());
 }
 
 }  // namespace pathspace

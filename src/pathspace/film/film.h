@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pathspace/base/state_archive.h"
 #include "pathspace/film/image.h"
 
 namespace pathspace {
@@ -36,6 +37,9 @@ class Film {
   // Unbiased estimate of the variance of the pixel mean: s^2 / n.
   Image variance_of_mean() const;
   void clear();
+  // The per-pixel sums, sums of squares and counts (a restored film continues bit for bit).
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
 
  private:
   int width_, height_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "pathspace/math/rgb.h"
@@ -17,6 +18,13 @@ struct Image {
   Rgb& at(int x, int y) { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
   const Rgb& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
   size_t size() const { return pixels.size(); }
+};
+
+// A named image besides the render itself: an integrator's or filter's debug image (AOV), e.g. the
+// hashed filter's voxel ids or BPT's per-strategy images.
+struct NamedImage {
+  std::string name;
+  Image image;
 };
 
 }  // namespace pathspace

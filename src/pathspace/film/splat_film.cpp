@@ -35,4 +35,14 @@ void SplatFilm::resolve_into(Film& film) const {
   for (size_t i = 0; i < n; ++i) film.add_sample(uint32_t(i), value(uint32_t(i)));
 }
 
+void SplatFilm::save_state(StateWriter& out, const std::string& key) const {
+  out.put_vector(key + ".sums", sums_);
+  out.put_vector(key + ".status", status_);
+}
+
+void SplatFilm::load_state(StateReader& in, const std::string& key) {
+  in.get_vector(key + ".sums", &sums_, sums_.size());
+  in.get_vector(key + ".status", &status_, status_.size());
+}
+
 }  // namespace pathspace

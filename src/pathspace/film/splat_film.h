@@ -1,13 +1,14 @@
 // Splatting film for light paths (LT, and later BPT t = 1 / PCLT projection): many threads add
 // contributions to arbitrary pixels. Sums are 64-bit fixed point updated with integer atomics,
 // because integer addition is associative: the result is bit-identical for every thread count and
-// schedule (docs/architecture.md §3), which float atomics are not. Each contribution is quantised
+// schedule (docs/architecture.md §5), which float atomics are not. Each contribution is quantised
 // on its own (round to nearest multiple of 1/scale), so quantisation never depends on order.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "pathspace/base/state_archive.h"
 #include "pathspace/film/film.h"
 #include "pathspace/math/rgb.h"
 #include "pathspace/parallel/atomics.h"
@@ -73,6 +74,9 @@ class SplatFilm {
   void resolve_into(Film& film) const;
   uint64_t overflows() const { return status_[kSplatOverflow]; }
   uint64_t non_finite() const { return status_[kSplatNonFinite]; }
+  // Sums and status as sections "<key>.sums" and "<key>.status" (sizes must match when loading).
+  void save_state(StateWriter& out, const std::string& key) const;
+  void load_state(StateReader& in, const std::string& key);
 
  private:
   int width_, height_;

@@ -7,7 +7,6 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for_each.h>
 
-#include <fmt/format.h>
 
 #include "pathspace/base/error.h"
 #include "pathspace/filters/local_voxel_cache.h"
@@ -145,7 +144,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     LocalVoxelCache& local = caches.local();
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
-    // is memory bound; ../shared/notes/performance.md).
+    // is memory bound; docs/benchmarks.md, "The machine").
     constexpr int kBatch = 16;
     size_t batch[kBatch];
     VoxelHash hashes[kBatch];
@@ -339,25 +338,43 @@ Image HashedFilter::aov(FilterAov which) const {
   return img;
 }
 
-std::string HashedFilter::report() const {
+void HashedFilter::statistics(Statistics& out) const {
   const HashedFilterStats& s = stats_;
   const double passes = double(std::max<uint64_t>(1, s.passes));
-  const double per_vertex_ns = s.vertices ? 1e6 / (double(s.vertices) / passes) : 0.0;
-  std::string r;
-  r += fmt::format("hashed filter: {} passes, {:.3g} vertices per pass, table {} cells ({:.1f} MiB)\n", s.passes,
-                   double(s.vertices) / passes, s.cells, double(s.table_bytes) / (1 << 20));
-  r += fmt::format("  occupancy {:.2f}% (last pass), {:.1f}% of vertices combined locally, mean probes per insertion {:.3f}, "
-                   "max {}, probe-limit fallbacks {}, not accumulated {}\n",
-                   100.0 * double(s.occupied_cells_last) / double(std::max<uint64_t>(1, s.cells)),
-                   s.vertices ? 100.0 * (1.0 - double(s.insertions) / double(s.vertices)) : 0.0, s.mean_probes(), s.probes_max,
-                   s.probe_failures, s.not_accumulated);
-  r += fmt::format("  expected fingerprint collisions per pass {:.2e}\n", s.expected_fingerprint_collisions_last);
-  r += fmt::format("  low-count vertices {} ({:.2f}%), neighbour lookups {}, coarse level used {}\n", s.low_count,
-                   s.vertices ? 100.0 * double(s.low_count) / double(s.vertices) : 0.0, s.neighbour_lookups, s.multi_level_used);
-  r += fmt::format("  per pass: clear {:.2f} ms, accumulate {:.2f} ms ({:.1f} ns/vertex), lookup {:.2f} ms ({:.1f} ns/vertex)\n",
-                   s.clear_ms / passes, s.accumulate_ms / passes, s.accumulate_ms * per_vertex_ns / passes,
-                   s.lookup_ms / passes, s.lookup_ms * per_vertex_ns / passes);
-  return r;
+  const double vertices = double(std::max<uint64_t>(1, s.vertices));
+  out.counter("hashed.passes", s.passes);
+  out.value("hashed.vertices_per_pass", double(s.vertices) / passes);
+  out.counter("hashed.table_cells", s.cells);
+  out.bytes("hashed.table_bytes", s.table_bytes, "both levels with --psf-multi-level");
+  out.ratio("hashed.occupancy", double(s.occupied_cells_last) / double(std::max<uint64_t>(1, s.cells)), "last pass");
+  out.ratio("hashed.combined_locally", s.vertices ? 1.0 - double(s.insertions) / vertices : 0.0,
+            "vertices added in the per-thread cache, not by a table atomic");
+  out.value("hashed.mean_probes", s.mean_probes(), "cells inspected per insertion");
+  out.counter("hashed.max_probes", s.probes_max);
+  out.counter("hashed.probe_limit_fallbacks", s.probe_failures, "vertices that kept their own contribution");
+  out.counter("hashed.not_accumulated", s.not_accumulated, "NaN, Inf, negative or huge contributions");
+  out.value("hashed.expected_fingerprint_collisions", s.expected_fingerprint_collisions_last, "last pass");
+  out.counter("hashed.low_count_vertices", s.low_count);
+  out.counter("hashed.neighbour_lookups", s.neighbour_lookups);
+  out.counter("hashed.coarse_level_used", s.multi_level_used);
+  out.seconds("hashed.clear_s_per_pass", s.clear_ms * 1e-3 / passes);
+  out.seconds("hashed.accumulate_s_per_pass", s.accumulate_ms * 1e-3 / passes);
+  out.seconds("hashed.lookup_s_per_pass", s.lookup_ms * 1e-3 / passes);
+  out.value("hashed.accumulate_ns_per_vertex", s.vertices ? s.accumulate_ms * 1e6 / vertices : 0.0);
+  out.value("hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
 }
+
+std::vector<NamedImage> HashedFilter::aovs() const {
+  if (!settings_.debug_images) return {};
+  return {{"voxel", aov(FilterAov::voxel)},
+          {"count", aov(FilterAov::count)},
+          {"level", aov(FilterAov::level)},
+          {"probes", aov(FilterAov::probes)}};
+}
+
+// The table is rebuilt every pass (sec. 3.4's reuse across frames is not implemented), so the
+// statistics are the only state a continued render needs.
+void HashedFilter::save_state(StateWriter& out) const { out.put("hashed.stats", stats_); }
+void HashedFilter::load_state(StateReader& in) { in.get("hashed.stats", &stats_); }
 
 }  // namespace pathspace

@@ -42,7 +42,11 @@ class HashedFilter final : public PathSpaceFilter {
 
   const char* name() const override { return "hashed"; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
-  std::string report() const override;
+  void statistics(Statistics& out) const override;
+  // The four debug images (voxel, count, level, probes) when settings.debug_images is on.
+  std::vector<NamedImage> aovs() const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
 
   const HashedFilterStats& stats() const { return stats_; }
   void reset_stats();

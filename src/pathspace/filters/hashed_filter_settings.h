@@ -8,7 +8,7 @@ namespace pathspace {
 struct HashedFilterSettings {
   VoxelKeySettings key;         // voxel size, jitter, normal / direction / layer in the key
   float table_factor = 1.f;     // cells = next_pow2(table_factor * pixels) (sec. 4: ~ one per pixel)
-  int max_probes = 16;          // bounded linear probing; <= 16 stays in one cache line (sec. 3.2)
+  int max_probes = 16;          // bounded linear probing (sec. 3.2.2); <= 16 stays in one cache line (2019 paper, sec. 3.1)
   int min_count = 4;            // voxels with fewer vertices count as low-count (sec. 3.3)
   bool neighbour_search = false;  // sec. 3.3.1: add the 26 neighbouring voxels of a low-count voxel
   bool multi_level = false;       // sec. 3.3.2: also accumulate one level coarser, use it when low-count

@@ -6,7 +6,7 @@
 
 namespace pathspace {
 
-void NoFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
+void PassthroughFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
   *filtered = buffer.contribution;
 }
 

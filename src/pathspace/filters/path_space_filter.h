@@ -1,6 +1,7 @@
 // PathSpaceFilter: replaces the contributions of a pass's selected vertices by filtered estimates
 // (Binder et al. 2021 sec. 3; Keller et al. 2014). The integrator then resolves each path as
-// prefix + sum throughput * filtered contribution (resolve_filtered_pass).
+// prefix + sum throughput * filtered contribution (resolve_filtered_pass). Filters register
+// themselves with their options in filters/filter_registry.h.
 #pragma once
 
 #include <cstdint>
@@ -8,9 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/base/state_archive.h"
 #include "pathspace/film/film.h"
+#include "pathspace/film/image.h"
 #include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/stats/path_counters.h"
+#include "pathspace/stats/statistics.h"
 
 namespace pathspace {
 
@@ -21,14 +25,20 @@ class PathSpaceFilter {
   // filtered[slot] receives the filtered contribution of every valid record slot of `buffer`.
   // `pass` and `seed` make jitter a pure function of the vertex's path (determinism).
   virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) = 0;
-  // One-line-per-entry human-readable statistics accumulated over all passes so far.
-  virtual std::string report() const { return {}; }
+  // Statistics accumulated over all passes so far, named "<filter>.<what>".
+  virtual void statistics(Statistics&) const {}
+  // Debug images of the last pass, when the filter's options asked for them.
+  virtual std::vector<NamedImage> aovs() const { return {}; }
+  // What the next pass needs besides the options (RenderSession::save_state).
+  virtual void save_state(StateWriter&) const {}
+  virtual void load_state(StateReader&) {}
 };
 
-// `--filter none`: every vertex keeps its own contribution (the image equals plain PT bit for bit).
-class NoFilter final : public PathSpaceFilter {
+// `--filter passthrough`: every vertex keeps its own contribution, so the image equals plain PT
+// bit for bit while every path goes through the vertex buffer and the resolve step (tests).
+class PassthroughFilter final : public PathSpaceFilter {
  public:
-  const char* name() const override { return "none"; }
+  const char* name() const override { return "passthrough"; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
 };
 

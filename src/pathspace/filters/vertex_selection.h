@@ -1,4 +1,4 @@
-// Which vertices of a camera path are handed to a path space filter (Binder et al. 2021, sec. 3 and
+// Which vertices of a camera path are handed to a path space filter (Binder et al. 2021, sec. 4 and
 // fig. 10): the first sufficiently diffuse vertex, the n-th one (final-gather style), or several.
 // A vertex is "sufficiently diffuse" when its material is filterable (materials/bsdf_layers.h) and
 // every layer is at least min_roughness rough; delta surfaces are never selected.

@@ -16,7 +16,7 @@ struct Ray {
 
 // Rays leaving a surface start at the point pushed off the surface along the geometric normal, to
 // the side the ray travels to (for refraction: the far side). Offsetting along the normal rather than
-// along the ray (SmallVCM's tmin = 1e-3, cornell-variants.md §6) keeps origins near an edge inside
+// along the ray (SmallVCM's tmin = 1e-3, docs/scenes.md §6) keeps origins near an edge inside
 // a closed room: an along-ray offset can jump over the adjacent wall and leak light.
 PS_INLINE Vec3 offset_origin(const Vec3& p, const Vec3& ng, const Vec3& d, float epsilon) {
   return p + (dot(d, ng) >= 0.f ? ng : -ng) * epsilon;

@@ -71,7 +71,7 @@ PS_INLINE uint32_t probe_slot(uint32_t home, uint32_t i, Probing probing, uint32
   return (home + step) & mask;
 }
 
-// Status bits accumulated by device-side inserts and checked on the host (DESIGN.md §3).
+// Status bits accumulated by device-side inserts and checked on the host (docs/architecture.md §4).
 enum GridStatusBits : uint32_t {
   kGridOk = 0,
   kGridProbeLimit = 1u << 0,       // a cell found no slot within max_probes: its record is not linked

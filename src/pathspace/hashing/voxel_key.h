@@ -1,6 +1,6 @@
 // Voxel keys of hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1 and algorithm 1).
 // A key quantises a vertex descriptor: its position at a level of detail chosen from the distance
-// along the path (voxel edge ~ psf_scale projected pixels, sec. 3.1.3 and 4), optionally its normal
+// along the path (voxel edge ~ psf_scale projected pixels, sec. 3.1.1 and 4), optionally its normal
 // (sec. 3.1.2, either in the main key or only in the fingerprint so that probing separates normals,
 // sec. 3.2.2), the incident direction on glossy layers and the material layer id (sec. 3.1.2).
 // The position is jittered in the tangent plane before quantisation, and the level recomputed at

@@ -1,29 +1,26 @@
-// Name -> integrator factory. New integrators (lt, bpt, sppm, pclt) register here.
-#include <fmt/format.h>
+#include "pathspace/integrators/integrator_registry.h"
 
-#include "pathspace/base/error.h"
-#include "pathspace/integrators/bpt/bpt_integrator.h"
-#include "pathspace/integrators/integrator.h"
-#include "pathspace/integrators/lt/lt_integrator.h"
-#include "pathspace/integrators/pclt/pclt_integrator.h"
-#include "pathspace/integrators/pt/pt_integrator.h"
-#include "pathspace/integrators/sppm/sppm_integrator.h"
+#include <algorithm>
 
 namespace pathspace {
 
-const std::vector<std::string>& integrator_names() {
-  static const std::vector<std::string> names = {"pt", "lt", "sppm", "pclt", "bpt"};
-  return names;
+bool IntegratorEntry::composes_with(const std::string& filter) const {
+  if (filter == FilterChoice::kNone) return true;
+  for (const std::string& f : filters)
+    if (f == filter || (f == kAllFilters && filter_registry().find(filter))) return true;
+  return false;
 }
 
-std::unique_ptr<Integrator> make_integrator(const std::string& name, const Scene& scene, const Accel& accel,
-                                            const IntegratorSettings& settings) {
-  if (name == "pt") return std::make_unique<PtIntegrator>(scene, accel, settings);
-  if (name == "lt") return std::make_unique<LtIntegrator>(scene, accel, settings);
-  if (name == "sppm") return std::make_unique<SppmIntegrator>(scene, accel, settings);
-  if (name == "bpt") return std::make_unique<BptIntegrator>(scene, accel, settings);
-  if (name == "pclt") return std::make_unique<PcltIntegrator>(scene, accel, settings);
-  throw Error(fmt::format("unknown integrator '{}' (available: {})", name, fmt::join(integrator_names(), ", ")));
+std::vector<std::string> IntegratorEntry::filter_names() const {
+  std::vector<std::string> out;
+  for (const std::string& name : filter_registry().names())
+    if (composes_with(name)) out.push_back(name);
+  return out;
+}
+
+Registry<IntegratorEntry>& integrator_registry() {
+  static Registry<IntegratorEntry> registry("integrator");
+  return registry;
 }
 
 }  // namespace pathspace

@@ -1,5 +1,5 @@
 // Light records (plain data, selected by LightType). What `value` means depends on the type,
-// exactly as in cornell-variants.md §5:
+// exactly as in docs/scenes.md §5:
 //   area_triangle / area_sphere: emitted radiance L_e (front side only unless two_sided)
 //   point:       radiant intensity I (W/sr); irradiance at x is I cos / |x - p|^2
 //   spot:        a point light whose intensity I is scaled by pbrt-v4's falloff around an axis

@@ -1,4 +1,4 @@
-// BSDF dispatch: one switch over MaterialType (no virtual calls; device-safe, docs/architecture.md §3).
+// BSDF dispatch: one switch over MaterialType (no virtual calls; device-safe, docs/architecture.md §4).
 // Directions are local to the shading frame; f excludes the cosine; pdfs are per solid angle.
 // Two-sided materials are evaluated in the frame mirrored to wo's side.
 #pragma once

@@ -26,7 +26,7 @@ struct BsdfSample {
   float eta = 1.f;  // relative IOR crossed (eta_wi_side / eta_wo_side) when transmitting, else 1
 };
 
-// Cosines below this are treated as grazing/zero (cornell-variants.md §6).
+// Cosines below this are treated as grazing/zero (docs/scenes.md §6).
 inline constexpr float kMinCosine = 1e-6f;
 
 }  // namespace pathspace

@@ -1,10 +1,10 @@
 // The "standard" material: Lambert diffuse + normalised Phong + one smooth specular lobe (a mirror
 // without Fresnel, or a smooth dielectric with exact Fresnel). This is exactly the material model
-// of the built-in Cornell scenes (cornell-variants.md §4.1), generalised to any sum of these lobes.
+// of the built-in Cornell scenes (docs/scenes.md §4.1), generalised to any sum of these lobes.
 //
 // Lobe selection probabilities are proportional to the lobes' luminance albedo (the dielectric's
 // split by Fresnel); eval/pdf cover the non-delta lobes only (a delta lobe has no density).
-// Unlike SmallVCM (§4.2 quirk) a Phong sample below the horizon gets zero weight and ends the path.
+// Unlike SmallVCM (docs/scenes.md §4.2) a Phong sample below the horizon gets zero weight and ends the path.
 #pragma once
 
 #include "pathspace/materials/bsdf_sample.h"
@@ -15,7 +15,7 @@
 
 namespace pathspace::standard {
 
-// Phong lobes are zero when the lobe cosine is at or below this (cornell-variants.md §4.1).
+// Phong lobes are zero when the lobe cosine is at or below this (docs/scenes.md §4.1).
 inline constexpr float kMinPhongCosine = 1e-3f;
 
 struct LobeProbabilities {

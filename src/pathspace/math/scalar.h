@@ -1,6 +1,6 @@
 // Scalar helpers and constants shared by host and device code.
 // Names avoid std:: ones (lerp, clamp) so argument-dependent lookup never picks the wrong one
-// under nvcc (docs/toolchain notes).
+// under nvcc (docs/toolchain.md).
 #pragma once
 
 #include <cmath>

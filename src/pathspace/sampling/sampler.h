@@ -1,5 +1,5 @@
 // Deterministic sampler: sample(seed, pixel, sample_index, dimension) is a pure function, so a
-// render is bit-identical for every thread count and schedule (docs/architecture.md §3).
+// render is bit-identical for every thread count and schedule (docs/architecture.md §5).
 // Dimensions are consumed in a fixed layout per path (see integrators/common/dimensions.h).
 #pragma once
 

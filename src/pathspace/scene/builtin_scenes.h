@@ -1,4 +1,4 @@
-// The built-in scenes: exact copies of SmallVCM's Cornell box variants (cornell-variants.md), selectable
+// The built-in scenes: exact copies of SmallVCM's Cornell box variants (docs/scenes.md), selectable
 // by SmallVCM's id (e.g. "bs_c") or a descriptive name (e.g. "cornell-box").
 #pragma once
 
@@ -24,7 +24,7 @@ const BuiltinSceneInfo* find_builtin_scene(const std::string& name_or_id);
 // Builds a finalised scene; throws pathspace::Error for an unknown name.
 Scene make_builtin_scene(const std::string& name_or_id, int width = 512, int height = 512);
 
-// SmallVCM's LoadCornellBox(resolution, mask) bits (cornell-variants.md §1).
+// SmallVCM's LoadCornellBox(resolution, mask) bits (docs/scenes.md §1).
 enum CornellMask : unsigned {
   kLightCeiling = 1,
   kLightSun = 2,

@@ -1,4 +1,4 @@
-// SmallVCM's Cornell box variants with every number and convention of cornell-variants.md:
+// SmallVCM's Cornell box variants with every number and convention of docs/scenes.md:
 // geometry §3, materials §4, lights §5, camera §2, 10-segment path limit and 1e-3 ray offsets §6.
 #include "pathspace/base/error.h"
 #include "pathspace/scene/builtin_scenes.h"

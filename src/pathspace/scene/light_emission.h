@@ -1,6 +1,6 @@
 // Emission sampling: the first vertex and direction of a light path (light tracing, and BPT/PCLT
 // later), for every light type (Veach 1997 §10.2 "sampling the light sources"; SmallVCM's
-// Emit() conventions, cornell-variants.md §5). Area lights: uniform area, then cosine-weighted
+// Emit() conventions, docs/scenes.md §5). Area lights: uniform area, then cosine-weighted
 // around the emitting side; point: uniform sphere; directional and environment: parallel rays
 // from a disk of the scene's bounding sphere perpendicular to the propagation direction.
 #pragma once

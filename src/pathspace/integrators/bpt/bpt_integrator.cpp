@@ -37,35 +37,57 @@ BptFilms BptBuffers::films() {
   return f;
 }
 
+void BptBuffers::save_state(StateWriter& out) const {
+  for (size_t i = 0; i < strategies_.size(); ++i) strategies_[i].save_state(out, "bpt.strategy" + std::to_string(i));
+}
+
+void BptBuffers::load_state(StateReader& in) {
+  for (size_t i = 0; i < strategies_.size(); ++i) strategies_[i].load_state(in, "bpt.strategy" + std::to_string(i));
+}
+
 uint64_t BptBuffers::rejected_strategy_splats() const {
   uint64_t n = 0;
   for (const SplatFilm& f : strategies_) n += f.overflows() + f.non_finite();
   return n;
 }
 
-BptIntegrator::BptIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings),
-      max_segments_(std::min(bpt_max_segments(settings.bpt, view_), kBptMaxSegments)),
-      buffers_(scene.camera.width, scene.camera.height, settings.bpt, max_segments_) {
-  if (settings.filter.kind != FilterKind::none) throw Error("path space filtering is not available with the bpt integrator");
+BptIntegrator::BptIntegrator(const Scene& scene, const Accel& accel, const BptSettings& settings, uint64_t seed)
+    : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed),
+      max_segments_(std::min(bpt_max_segments(settings, view_), kBptMaxSegments)),
+      buffers_(scene.camera.width, scene.camera.height, settings, max_segments_) {
   // An explicit limit beyond the kernel's vertex array is an error; a scene's "unlimited" one is
   // clamped (the kernel does the same), which the report states.
-  if (settings.bpt.max_segments > kBptMaxSegments)
-    throw Error(fmt::format("bpt supports paths of at most {} segments (asked for {})", kBptMaxSegments, settings.bpt.max_segments));
+  if (settings.max_segments > kBptMaxSegments)
+    throw Error(fmt::format("bpt supports paths of at most {} segments (asked for {})", kBptMaxSegments, settings.max_segments));
 }
 
 void BptIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
-  bpt_render_pass(view_, accel_, settings_.bpt, settings_.seed, pass, buffers_, film, counters);
+  bpt_render_pass(view_, accel_, settings_, seed_, pass, buffers_, film, counters);
   overflows_ += buffers_.splats().overflows();
   non_finite_ += buffers_.splats().non_finite();
   ++passes_;
 }
 
-std::string BptIntegrator::report() const {
-  return fmt::format("bpt: {} passes, max {} segments, {} heuristic, {} strategy images, splats rejected: {} overflow, {} non-finite",
-                     passes_, max_segments_, settings_.bpt.mis == MisHeuristic::power ? "power" : "balance",
-                     buffers_.strategy_max_length() > 0 ? bpt_strategy_count(buffers_.strategy_max_length()) : 0, overflows_,
-                     non_finite_ + buffers_.rejected_strategy_splats());
+void BptIntegrator::statistics(Statistics& out) const {
+  out.counter("bpt.passes", passes_);
+  out.counter("bpt.max_segments", uint64_t(max_segments_), "the kernel clamps an unlimited scene limit");
+  out.counter("bpt.strategy_images", buffers_.strategy_max_length() > 0 ? uint64_t(bpt_strategy_count(buffers_.strategy_max_length())) : 0);
+  out.counter("bpt.splat_overflows", overflows_, "t = 1 splats rejected: too large or negative");
+  out.counter("bpt.splat_non_finite", non_finite_ + buffers_.rejected_strategy_splats(), "splats rejected: NaN or Inf");
+}
+
+void BptIntegrator::save_state(StateWriter& out) const {
+  out.put("bpt.passes", passes_);
+  out.put("bpt.overflows", overflows_);
+  out.put("bpt.non_finite", non_finite_);
+  buffers_.save_state(out);
+}
+
+void BptIntegrator::load_state(StateReader& in) {
+  in.get("bpt.passes", &passes_);
+  in.get("bpt.overflows", &overflows_);
+  in.get("bpt.non_finite", &non_finite_);
+  buffers_.load_state(in);
 }
 
 std::vector<NamedImage> BptIntegrator::aovs() const {

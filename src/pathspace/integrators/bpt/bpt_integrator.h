@@ -16,6 +16,9 @@
 
 namespace pathspace {
 
+class Accel;
+class Scene;
+
 // The path length limit a render with these settings uses (bpt_trace_pixel clamps it to kBptMaxSegments).
 inline int bpt_max_segments(const BptSettings& s, const SceneView& view) {
   return s.max_segments > 0 ? s.max_segments : view.max_path_segments;
@@ -34,6 +37,9 @@ class BptBuffers {
   // Sum over passes of strategy (s, t) for one pixel.
   Rgb strategy_sum(int s, int t, uint32_t pixel) const { return strategies_[size_t(bpt_strategy_index(s, t))].value(pixel); }
   uint64_t rejected_strategy_splats() const;
+  // The per-strategy sums accumulate over passes: they are state of a continued render.
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
 
  private:
   SplatFilm splats_;
@@ -83,17 +89,20 @@ void bpt_render_pass(const SceneView& view, const Tracer& tracer, const BptSetti
 
 class BptIntegrator final : public Integrator {
  public:
-  BptIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  BptIntegrator(const Scene& scene, const Accel& accel, const BptSettings& settings, uint64_t seed);
   const char* name() const override { return "bpt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
-  std::string report() const override;
-  // Per-strategy images "bpt-sS-tT" (means over the passes so far) when settings.bpt.strategy_images > 0.
+  void statistics(Statistics& out) const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
+  // Per-strategy images "bpt-sS-tT" (means over the passes so far) when settings.strategy_images > 0.
   std::vector<NamedImage> aovs() const override;
 
  private:
   SceneView view_;
   const Accel& accel_;
-  IntegratorSettings settings_;
+  BptSettings settings_;
+  uint64_t seed_;
   int max_segments_;
   BptBuffers buffers_;
   uint64_t overflows_ = 0, non_finite_ = 0;

@@ -9,28 +9,37 @@
 
 namespace pathspace {
 
-LtIntegrator::LtIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings),
-      splats_(scene.camera.width, scene.camera.height,
-              settings.lt.splat_scale > 0.0 ? settings.lt.splat_scale : SplatFilm::kDefaultScale) {
-  if (settings.filter.kind != FilterKind::none) throw Error("path space filtering is not available with the lt integrator");
-  if (settings.lt.filter != LtFilter::box && !(settings.lt.filter_radius > 0.f && settings.lt.filter_radius <= 16.f))
-    throw Error(fmt::format("lt filter radius {} must be in (0, 16] pixels", settings.lt.filter_radius));
+LtIntegrator::LtIntegrator(const Scene& scene, const Accel& accel, const LtSettings& settings, uint64_t seed)
+    : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed),
+      splats_(scene.camera.width, scene.camera.height, settings.splat_scale > 0.0 ? settings.splat_scale : SplatFilm::kDefaultScale) {
+  if (settings.filter != LtFilter::box && !(settings.filter_radius > 0.f && settings.filter_radius <= 16.f))
+    throw Error(fmt::format("lt filter radius {} must be in (0, 16] pixels", settings.filter_radius));
 }
 
 void LtIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
-  lt_render_pass(view_, accel_, settings_.lt, settings_.seed, pass, splats_, film, counters);
+  lt_render_pass(view_, accel_, settings_, seed_, pass, splats_, film, counters);
   overflows_ += splats_.overflows();
   non_finite_ += splats_.non_finite();
   ++passes_;
 }
 
-std::string LtIntegrator::report() const {
-  const char* filters[] = {"box", "tent", "gaussian"};
-  return fmt::format("lt: {} passes, {} light paths per pass, filter {}{}, emitter {}, splats rejected: {} overflow, {} non-finite",
-                     passes_, lt_paths_per_pass(settings_.lt, splats_.pixel_count()), filters[int(settings_.lt.filter)],
-                     settings_.lt.filter == LtFilter::box ? std::string() : fmt::format(" (radius {})", settings_.lt.filter_radius),
-                     settings_.lt.skip_emitter ? "skipped" : "splatted", overflows_, non_finite_);
+void LtIntegrator::statistics(Statistics& out) const {
+  out.counter("lt.passes", passes_);
+  out.counter("lt.light_paths_per_pass", lt_paths_per_pass(settings_, splats_.pixel_count()));
+  out.counter("lt.splat_overflows", overflows_, "splats rejected: too large or negative");
+  out.counter("lt.splat_non_finite", non_finite_, "splats rejected: NaN or Inf");
+}
+
+// Passes are independent; only the totals carry over.
+void LtIntegrator::save_state(StateWriter& out) const {
+  out.put("lt.passes", passes_);
+  out.put("lt.overflows", overflows_);
+  out.put("lt.non_finite", non_finite_);
+}
+void LtIntegrator::load_state(StateReader& in) {
+  in.get("lt.passes", &passes_);
+  in.get("lt.overflows", &overflows_);
+  in.get("lt.non_finite", &non_finite_);
 }
 
 }  // namespace pathspace

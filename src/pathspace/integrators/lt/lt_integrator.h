@@ -10,10 +10,14 @@
 #include "pathspace/film/splat_film.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
+#include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
+
+class Accel;
+class Scene;
 
 // Light paths of one pass for the given settings and film size.
 inline uint64_t lt_paths_per_pass(const LtSettings& s, size_t pixels) { return s.light_paths > 0 ? s.light_paths : pixels; }
@@ -45,15 +49,18 @@ void lt_render_pass(const SceneView& view, const Tracer& tracer, const LtSetting
 
 class LtIntegrator final : public Integrator {
  public:
-  LtIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  LtIntegrator(const Scene& scene, const Accel& accel, const LtSettings& settings, uint64_t seed);
   const char* name() const override { return "lt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
-  std::string report() const override;
+  void statistics(Statistics& out) const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
 
  private:
   SceneView view_;
   const Accel& accel_;
-  IntegratorSettings settings_;
+  LtSettings settings_;
+  uint64_t seed_;
   SplatFilm splats_;
   uint64_t overflows_ = 0, non_finite_ = 0, passes_ = 0;
 };

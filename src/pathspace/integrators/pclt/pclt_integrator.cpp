@@ -32,10 +32,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 }  // namespace
 
-PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings), s_(settings.pclt),
-      splats_(scene.camera.width, scene.camera.height, settings.pclt.splat_scale > 0.0 ? settings.pclt.splat_scale : SplatFilm::kDefaultScale) {
-  if (settings.filter.kind != FilterKind::none) throw Error("path space filtering is not available with the pclt integrator");
+PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const PcltSettings& settings, uint64_t seed)
+    : view_(scene.view()), accel_(accel), s_(settings), seed_(seed),
+      splats_(scene.camera.width, scene.camera.height, settings.splat_scale > 0.0 ? settings.splat_scale : SplatFilm::kDefaultScale) {
   if (!(s_.alpha > 0.f && s_.alpha <= 1.f)) throw Error(fmt::format("PCLT alpha must be in (0, 1], not {}", s_.alpha));
   if (s_.filter != LtFilter::box && !(s_.filter_radius > 0.f && s_.filter_radius <= 16.f))
     throw Error(fmt::format("pclt filter radius {} must be in (0, 16] pixels", s_.filter_radius));
@@ -109,7 +108,7 @@ void PcltIntegrator::build_cache(uint32_t pass, float r) {
     // (a pure function of seed, pass and pixel). Each candidate is kept with probability C/N, so
     // scaling the kept weights by N/C keeps the estimate unbiased.
     priorities_.clear();
-    const uint64_t seed = hash_combine(settings_.seed ^ kStoreStream, pass);
+    const uint64_t seed = hash_combine(seed_ ^ kStoreStream, pass);
     for (size_t i = 0; i < n; ++i)
       if (stored_[i]) priorities_.push_back((hash_combine(seed, i) & 0xffffffff00000000ull) | uint64_t(i));
     std::nth_element(priorities_.begin(), priorities_.begin() + std::ptrdiff_t(capacity_ - 1), priorities_.end());
@@ -128,7 +127,7 @@ void PcltIntegrator::build_cache(uint32_t pass, float r) {
   dropped_total_ += candidates - count;
   auto position_of = [&](size_t i) { return cache_[i].p; };
   if (stochastic_) {
-    stochastic_->build(count, r, hash_combine(settings_.seed ^ kStoreStream, ~uint64_t(pass)), position_of);
+    stochastic_->build(count, r, hash_combine(seed_ ^ kStoreStream, ~uint64_t(pass)), position_of);
     grid_failures_ += stochastic_->stats().dropped;
   } else {
     grid_.build(count, r, position_of);
@@ -150,7 +149,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
-      const Sampler sampler(settings_.seed, pixel, pass);
+      const Sampler sampler(seed_, pixel, pass);
       PcltEyeResult eye;
       pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), uint32_t(pixel), s_,
                      max_segments_, &local, &eye);
@@ -192,7 +191,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   lv.gather_scale = float(1.0 / (double(kPi) * double(r) * double(r) * double(light_paths_)));
   lv.inv_paths = float(1.0 / double(light_paths_));
   lv.max_segments = max_segments_;
-  const uint64_t light_seed = settings_.seed ^ kLightStream;
+  const uint64_t light_seed = seed_ ^ kLightStream;
   std::atomic<uint64_t> queries{0}, gathered{0}, projections{0}, tests{0};
   parallel_for(size_t(light_paths_), kPathGrain, [&](size_t begin, size_t end) {
     PathCounters local;
@@ -230,33 +229,67 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   splat_rejects_ += rejected;
 }
 
-std::string PcltIntegrator::report() const {
-  if (passes_ == 0) return {};
+void PcltIntegrator::statistics(Statistics& out) const {
   const char* visibility[] = {"shadow-ray", "z-buffer", "plane"};
-  const char* filters[] = {"box", "tent", "gaussian"};
   const PcltMemory m = memory();
+  const double passes = double(std::max<uint64_t>(1, passes_));
   const double total_s = eye_s_ + build_s_ + light_s_ + resolve_s_;
-  const double mib = 1.0 / (1024.0 * 1024.0);
-  std::string out = fmt::format(
-      "pclt: {} iterations, {} eye paths, {} light paths ({} per iteration), radius {:.5g} -> {:.5g} (alpha {:.3g})\n"
-      "pclt: visibility {}{}, filter {}, hash map {}, ES+L emission {}\n"
-      "pclt: cache {:.2f}% of pixels ES+D per iteration (max {} records, capacity {}), {} candidates dropped{}\n"
-      "pclt: memory {} bytes ({:.2f} MiB): records {}, map {}, eye output {}, visibility {}\n"
-      "pclt: per iteration {:.3g} gather queries, {:.3g} gathered entries, {:.3g} visibility tests, {:.3g} projections\n"
-      "pclt: time eye {:.3f} s, build {:.3f} s, light {:.3f} s, resolve {:.3f} s; {:.3g} iterations/s, {:.3g} light paths/s\n",
-      passes_, eye_paths_, light_path_total_, light_paths_, r0_, last_radius_, s_.alpha, visibility[int(s_.visibility)],
-      s_.visibility == PcltVisibility::shadow_ray ? std::string() : fmt::format(" (epsilon {:.3g})", s_.epsilon),
-      filters[int(s_.filter)], s_.hash_map == PcltHashMap::chained ? "chained" : "stochastic",
-      s_.specular_emission ? "added from eye paths" : "off (paper)",
-      100.0 * double(records_total_) / double(eye_paths_), max_records_, capacity_, dropped_total_,
-      dropped_total_ == 0 ? "" : (s_.stochastic_store ? " (stochastic store, reweighted)" : " (buffer full)"), m.total(),
-      double(m.total()) * mib, m.cache, m.map, m.eye_output, m.visibility, double(gather_queries_) / double(passes_),
-      double(gathered_) / double(passes_), double(visibility_tests_) / double(passes_), double(projections_) / double(passes_),
-      eye_s_, build_s_, light_s_, resolve_s_, total_s > 0 ? double(passes_) / total_s : 0.0,
-      total_s > 0 ? double(light_path_total_) / total_s : 0.0);
-  if (grid_failures_) out += fmt::format("pclt: WARNING {} records not stored in the hash map\n", grid_failures_);
-  if (splat_rejects_) out += fmt::format("pclt: {} splats rejected (overflow or non-finite)\n", splat_rejects_);
-  return out;
+  out.counter("pclt.iterations", passes_);
+  out.counter("pclt.eye_paths", eye_paths_);
+  out.counter("pclt.light_paths", light_path_total_);
+  out.counter("pclt.light_paths_per_iteration", light_paths_);
+  out.value("pclt.initial_radius", r0_, "scene units");
+  out.value("pclt.last_radius", last_radius_, "scene units");
+  out.text("pclt.visibility", visibility[int(s_.visibility)]);
+  out.text("pclt.hash_map", s_.hash_map == PcltHashMap::chained ? "chained" : "stochastic");
+  out.ratio("pclt.cache_fill", eye_paths_ ? double(records_total_) / double(eye_paths_) : 0.0,
+            "pixels with an ES+D record per iteration");
+  out.counter("pclt.max_records", max_records_);
+  out.counter("pclt.capacity", capacity_);
+  out.counter("pclt.candidates_dropped", dropped_total_, s_.stochastic_store ? "stochastic store, reweighted" : "cache full");
+  out.bytes("pclt.memory_bytes", m.total(), "fig. 7");
+  out.bytes("pclt.memory_records_bytes", m.cache);
+  out.bytes("pclt.memory_map_bytes", m.map);
+  out.bytes("pclt.memory_eye_output_bytes", m.eye_output);
+  out.bytes("pclt.memory_visibility_bytes", m.visibility);
+  out.value("pclt.gather_queries_per_iteration", double(gather_queries_) / passes);
+  out.value("pclt.gathered_per_iteration", double(gathered_) / passes);
+  out.value("pclt.visibility_tests_per_iteration", double(visibility_tests_) / passes);
+  out.value("pclt.projections_per_iteration", double(projections_) / passes);
+  out.seconds("pclt.eye_s", eye_s_);
+  out.seconds("pclt.build_s", build_s_);
+  out.seconds("pclt.light_s", light_s_);
+  out.seconds("pclt.resolve_s", resolve_s_);
+  out.value("pclt.light_paths_per_s", total_s > 0 ? double(light_path_total_) / total_s : 0.0);
+  out.counter("pclt.grid_failures", grid_failures_, "records not stored in the hash map");
+  out.counter("pclt.splat_rejects", splat_rejects_, "overflow or non-finite");
+}
+
+// The radius recurrence and the totals; the cache and the maps are rebuilt every iteration.
+void PcltIntegrator::save_state(StateWriter& out) const {
+  out.put("pclt.cached_pass", cached_pass_);
+  out.put("pclt.cached_r2", cached_r2_);
+  out.put("pclt.last_radius", last_radius_);
+  const uint64_t counts[] = {passes_,          eye_paths_, light_path_total_, records_total_,    candidates_total_, dropped_total_,
+                             gather_queries_,  gathered_,  projections_,      visibility_tests_, grid_failures_,    splat_rejects_,
+                             uint64_t(max_records_)};
+  const double times[] = {eye_s_, build_s_, light_s_, resolve_s_};
+  out.put("pclt.counts", counts);
+  out.put("pclt.times", times);
+}
+
+void PcltIntegrator::load_state(StateReader& in) {
+  in.get("pclt.cached_pass", &cached_pass_);
+  in.get("pclt.cached_r2", &cached_r2_);
+  in.get("pclt.last_radius", &last_radius_);
+  uint64_t c[13];
+  double t[4];
+  in.get("pclt.counts", &c);
+  in.get("pclt.times", &t);
+  passes_ = c[0], eye_paths_ = c[1], light_path_total_ = c[2], records_total_ = c[3], candidates_total_ = c[4];
+  dropped_total_ = c[5], gather_queries_ = c[6], gathered_ = c[7], projections_ = c[8], visibility_tests_ = c[9];
+  grid_failures_ = c[10], splat_rejects_ = c[11], max_records_ = size_t(c[12]);
+  eye_s_ = t[0], build_s_ = t[1], light_s_ = t[2], resolve_s_ = t[3];
 }
 
 }  // namespace pathspace

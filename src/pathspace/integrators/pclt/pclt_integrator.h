@@ -15,11 +15,15 @@
 #include "pathspace/hashgrid/stochastic_hash_map.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/integrators/pclt/pclt_kernel.h"
+#include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
 
-// Bytes held by the pixel cache and its helpers (Integrator::report(); paper fig. 7).
+class Accel;
+class Scene;
+
+// Bytes held by the pixel cache and its helpers (statistics(); paper fig. 7).
 struct PcltMemory {
   size_t cache = 0;       // the records (capacity)
   size_t map = 0;         // hash grid table + links, or the stochastic table
@@ -30,10 +34,12 @@ struct PcltMemory {
 
 class PcltIntegrator final : public Integrator {
  public:
-  PcltIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  PcltIntegrator(const Scene& scene, const Accel& accel, const PcltSettings& settings, uint64_t seed);
   const char* name() const override { return "pclt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
-  std::string report() const override;
+  void statistics(Statistics& out) const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
 
   // Gathering radius of iteration `pass` (0-based), the recurrence of SppmIntegrator::radius.
   float radius(uint32_t pass);
@@ -51,8 +57,8 @@ class PcltIntegrator final : public Integrator {
 
   SceneView view_;
   const Accel& accel_;
-  IntegratorSettings settings_;
   PcltSettings s_;
+  uint64_t seed_;
   float r0_ = 0.f;
   uint64_t light_paths_ = 0;
   int max_segments_ = 0;
@@ -71,7 +77,7 @@ class PcltIntegrator final : public Integrator {
   HashGrid grid_;
   std::unique_ptr<StochasticHashMap> stochastic_;
 
-  // Totals for report().
+  // Totals for statistics().
   uint64_t passes_ = 0, eye_paths_ = 0, light_path_total_ = 0, records_total_ = 0, candidates_total_ = 0,
            dropped_total_ = 0, gather_queries_ = 0, gathered_ = 0, projections_ = 0, visibility_tests_ = 0,
            grid_failures_ = 0, splat_rejects_ = 0;

@@ -1,5 +1,5 @@
 // Pixel cache light tracing parameters and their defaults (PCLT paper, Hachisuka-style two passes:
-// eye pass into the pixel cache, sec. 3; light pass with gathering and camera projection, sec. 5).
+// eye pass into the pixel cache, sec. 3; light pass gathering from the cache, sec. 3, and projecting to the camera, sec. 5).
 // The radius follows Knaus & Zwicker (PCLT eq. 1) exactly as SPPM does (sppm_settings.h), so the
 // two gather the same expectation for the same radius schedule (tested).
 #pragma once

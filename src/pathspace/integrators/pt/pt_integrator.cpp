@@ -3,7 +3,6 @@
 #include <atomic>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/filters/hashed_filter.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/parallel/parallel_for.h"
@@ -33,16 +32,11 @@ struct SharedCounters {
 
 }  // namespace
 
-PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings) {
+PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSettings& settings, uint64_t seed,
+                           const FilterChoice& filter)
+    : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed) {
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
-  if (settings.filter.kind == FilterKind::hashed) {
-    auto hashed = std::make_unique<HashedFilter>(settings.filter.hashed, scene.camera, pixels);
-    hashed_ = hashed.get();
-    filter_ = std::move(hashed);
-  } else if (settings.filter.force_vertex_buffer) {
-    filter_ = std::make_unique<NoFilter>();
-  }
+  filter_ = make_filter(filter, FilterContext{scene.camera, pixels});
 }
 
 PtIntegrator::~PtIntegrator() = default;
@@ -61,8 +55,8 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
-      const Sampler sampler(settings_.seed, pixel, pass);
-      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_.pt, &local);
+      const Sampler sampler(seed_, pixel, pass);
+      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local);
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
@@ -76,32 +70,36 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
 
 void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
-  const int per_path = records_per_path(settings_.pt.selection);
+  const int per_path = records_per_path(settings_.selection);
   if (buffer_.paths() != n || buffer_.records_per_path() != per_path) buffer_.resize(n, per_path);
   SharedCounters shared;
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
     for (size_t pixel = begin; pixel < end; ++pixel) {
-      const Sampler sampler(settings_.seed, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_.pt, &local, &sample);
+      const Sampler sampler(seed_, pixel, pass);
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local, &sample);
       buffer_.store(pixel, uint32_t(pixel), sample);
     }
     shared.add(local);
   });
   shared.flush(counters, n);
-  filter_->filter(buffer_, settings_.seed, pass, &filtered_);
+  filter_->filter(buffer_, seed_, pass, &filtered_);
   resolve_filtered_pass(buffer_, filtered_, film, &counters);
 }
 
-std::string PtIntegrator::report() const { return filter_ ? filter_->report() : std::string(); }
+void PtIntegrator::statistics(Statistics& out) const {
+  if (filter_) filter_->statistics(out);
+}
 
-std::vector<NamedImage> PtIntegrator::aovs() const {
-  if (!hashed_ || !hashed_->has_debug_images()) return {};  // the CLI's --aov turns them on
-  return {{"voxel", hashed_->aov(FilterAov::voxel)},
-          {"count", hashed_->aov(FilterAov::count)},
-          {"level", hashed_->aov(FilterAov::level)},
-          {"probes", hashed_->aov(FilterAov::probes)}};
+std::vector<NamedImage> PtIntegrator::aovs() const { return filter_ ? filter_->aovs() : std::vector<NamedImage>{}; }
+
+// Passes of plain PT are independent; a filter may carry statistics from pass to pass.
+void PtIntegrator::save_state(StateWriter& out) const {
+  if (filter_) filter_->save_state(out);
+}
+void PtIntegrator::load_state(StateReader& in) {
+  if (filter_) filter_->load_state(in);
 }
 
 }  // namespace pathspace

@@ -5,23 +5,30 @@
 
 #include <memory>
 
+#include "pathspace/filters/filter_registry.h"
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
 
-class HashedFilter;
+class Accel;
+class Scene;
 
 class PtIntegrator final : public Integrator {
  public:
-  PtIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  // `filter`: the path space filter of the selected vertices (FilterChoice::kNone: plain PT).
+  PtIntegrator(const Scene& scene, const Accel& accel, const PtSettings& settings, uint64_t seed,
+               const FilterChoice& filter = {});
   ~PtIntegrator() override;
   const char* name() const override { return "pt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
-  std::string report() const override;
+  void statistics(Statistics& out) const override;
   std::vector<NamedImage> aovs() const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
 
   const VertexBuffer& vertex_buffer() const { return buffer_; }
   const PathSpaceFilter* filter() const { return filter_.get(); }
@@ -32,9 +39,9 @@ class PtIntegrator final : public Integrator {
 
   SceneView view_;
   const Accel& accel_;
-  IntegratorSettings settings_;
+  PtSettings settings_;
+  uint64_t seed_;
   std::unique_ptr<PathSpaceFilter> filter_;  // null: plain path tracing
-  HashedFilter* hashed_ = nullptr;           // filter_ when it is the hashed filter
   VertexBuffer buffer_;
   std::vector<Rgb> filtered_;
 };

@@ -36,9 +36,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 }  // namespace
 
-SppmIntegrator::SppmIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings)
-    : view_(scene.view()), accel_(accel), settings_(settings) {
-  const SppmSettings& s = settings.sppm;
+SppmIntegrator::SppmIntegrator(const Scene& scene, const Accel& accel, const SppmSettings& settings, uint64_t seed)
+    : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed) {
+  const SppmSettings& s = settings;
   if (!(s.alpha > 0.f && s.alpha <= 1.f)) throw Error(fmt::format("SPPM alpha must be in (0, 1], not {}", s.alpha));
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
   r0_ = s.initial_radius > 0.f ? s.initial_radius : s.radius_fraction * view_.bounds.radius;
@@ -57,7 +57,7 @@ float SppmIntegrator::radius(uint32_t pass) {
     cached_pass_ = 0;
     cached_r2_ = double(r0_) * double(r0_);
   }
-  const double alpha = settings_.sppm.alpha;
+  const double alpha = settings_.alpha;
   for (; cached_pass_ < pass; ++cached_pass_) {
     const double i = double(cached_pass_) + 1.0;
     cached_r2_ *= (i + alpha) / (i + 1.0);
@@ -67,7 +67,7 @@ float SppmIntegrator::radius(uint32_t pass) {
 
 void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
-  const SppmSettings& s = settings_.sppm;
+  const SppmSettings& s = settings_;
   const float r = radius(pass);
   last_radius_ = r;
   SharedCounters shared;
@@ -78,7 +78,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
     PathCounters local;
     uint64_t points = 0;
     for (size_t pixel = begin; pixel < end; ++pixel) {
-      const Sampler sampler(settings_.seed, pixel, pass);
+      const Sampler sampler(seed_, pixel, pass);
       sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), s, max_segments_, &local, &direct_[pixel],
                      &points_[pixel]);
       points += points_[pixel].valid;
@@ -115,7 +115,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   gather.radius = r;
   gather.inv_quantum = reference_power_ > 0.f ? float(kFluxFixedScale / double(reference_power_)) : 0.f;
   gather.max_segments = max_segments_;
-  const uint64_t photon_seed = settings_.seed ^ kPhotonStream;
+  const uint64_t photon_seed = seed_ ^ kPhotonStream;
   if (reference_power_ > 0.f) {
     parallel_for(size_t(photons_), kPhotonGrain, [&](size_t begin, size_t end) {
       PathCounters local;
@@ -169,19 +169,47 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   gathered_ += shared.gathered;
 }
 
-std::string SppmIntegrator::report() const {
-  if (passes_ == 0) return {};
-  const double eye_rate = eye_s_ > 0 ? double(eye_paths_) / eye_s_ : 0.0;
-  const double photon_rate = photon_s_ > 0 ? double(photon_paths_) / photon_s_ : 0.0;
-  std::string out = fmt::format(
-      "sppm: {} iterations, {} eye paths, {} photons ({} per iteration), radius {:.5g} -> {:.5g} (alpha {:.3g})\n"
-      "sppm: {:.1f}% of pixels had a visible point; {:.3g} photon vertices, {:.3g} gathers per iteration\n"
-      "sppm: time eye {:.3f} s ({:.3g} eye paths/s), grid {:.3f} s, photons {:.3f} s ({:.3g} photons/s), resolve {:.3f} s\n",
-      passes_, eye_paths_, photon_paths_, photons_, r0_, last_radius_, settings_.sppm.alpha,
-      100.0 * double(visible_points_) / double(eye_paths_), double(deposits_) / double(passes_),
-      double(gathered_) / double(passes_), eye_s_, eye_rate, grid_s_, photon_s_, photon_rate, resolve_s_);
-  if (grid_failures_) out += fmt::format("sppm: WARNING {} visible points not stored in the hash grid\n", grid_failures_);
-  return out;
+void SppmIntegrator::statistics(Statistics& out) const {
+  const double passes = double(std::max<uint64_t>(1, passes_));
+  out.counter("sppm.iterations", passes_);
+  out.counter("sppm.eye_paths", eye_paths_);
+  out.counter("sppm.photons", photon_paths_);
+  out.counter("sppm.photons_per_iteration", photons_);
+  out.value("sppm.initial_radius", r0_, "scene units");
+  out.value("sppm.last_radius", last_radius_, "scene units");
+  out.ratio("sppm.visible_point_fraction", eye_paths_ ? double(visible_points_) / double(eye_paths_) : 0.0,
+            "pixels with a visible point");
+  out.value("sppm.photon_vertices_per_iteration", double(deposits_) / passes);
+  out.value("sppm.gathers_per_iteration", double(gathered_) / passes);
+  out.counter("sppm.grid_failures", grid_failures_, "visible points not stored in the hash grid");
+  out.seconds("sppm.eye_s", eye_s_);
+  out.seconds("sppm.grid_s", grid_s_);
+  out.seconds("sppm.photon_s", photon_s_);
+  out.seconds("sppm.resolve_s", resolve_s_);
+}
+
+// The radius recurrence and the totals; the per-iteration buffers are rebuilt every pass.
+void SppmIntegrator::save_state(StateWriter& out) const {
+  out.put("sppm.cached_pass", cached_pass_);
+  out.put("sppm.cached_r2", cached_r2_);
+  out.put("sppm.last_radius", last_radius_);
+  const uint64_t counts[] = {passes_, eye_paths_, photon_paths_, visible_points_, deposits_, gathered_, grid_failures_};
+  const double times[] = {eye_s_, grid_s_, photon_s_, resolve_s_};
+  out.put("sppm.counts", counts);
+  out.put("sppm.times", times);
+}
+
+void SppmIntegrator::load_state(StateReader& in) {
+  in.get("sppm.cached_pass", &cached_pass_);
+  in.get("sppm.cached_r2", &cached_r2_);
+  in.get("sppm.last_radius", &last_radius_);
+  uint64_t counts[7];
+  double times[4];
+  in.get("sppm.counts", &counts);
+  in.get("sppm.times", &times);
+  passes_ = counts[0], eye_paths_ = counts[1], photon_paths_ = counts[2], visible_points_ = counts[3];
+  deposits_ = counts[4], gathered_ = counts[5], grid_failures_ = counts[6];
+  eye_s_ = times[0], grid_s_ = times[1], photon_s_ = times[2], resolve_s_ = times[3];
 }
 
 }  // namespace pathspace

@@ -11,16 +11,22 @@
 #include "pathspace/hashgrid/hash_grid.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/integrators/sppm/sppm_kernel.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
 
+class Accel;
+class Scene;
+
 class SppmIntegrator final : public Integrator {
  public:
-  SppmIntegrator(const Scene& scene, const Accel& accel, const IntegratorSettings& settings);
+  SppmIntegrator(const Scene& scene, const Accel& accel, const SppmSettings& settings, uint64_t seed);
   const char* name() const override { return "sppm"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
-  std::string report() const override;
+  void statistics(Statistics& out) const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
 
   // Gathering radius of iteration `pass` (0-based): r_0 and r_{i+1} = r_i sqrt((i + alpha) / (i + 1))
   // with the 1-based iteration number i = pass + 1.
@@ -31,7 +37,8 @@ class SppmIntegrator final : public Integrator {
  private:
   SceneView view_;
   const Accel& accel_;
-  IntegratorSettings settings_;
+  SppmSettings settings_;
+  uint64_t seed_;
   float r0_ = 0.f;
   uint64_t photons_ = 0;
   int max_segments_ = 0;
@@ -47,7 +54,7 @@ class SppmIntegrator final : public Integrator {
   std::vector<uint64_t> cell_flux_;        // 3 per record, scattered back to flux_ per pixel
   HashGrid grid_;
 
-  // Totals for report().
+  // Totals for statistics().
   uint64_t passes_ = 0, eye_paths_ = 0, photon_paths_ = 0, visible_points_ = 0, deposits_ = 0, gathered_ = 0;
   uint64_t grid_failures_ = 0;
   double eye_s_ = 0, grid_s_ = 0, photon_s_ = 0, resolve_s_ = 0;

@@ -7,7 +7,7 @@
 namespace pathspace {
 
 struct SppmSettings {
-  // Photons traced per iteration; 0: one per pixel (SmallVCM's choice, cornell-variants.md §6).
+  // Photons traced per iteration; 0: one per pixel (SmallVCM's choice, docs/scenes.md §6).
   uint64_t photons = 0;
   // Knaus-Zwicker alpha in r_{i+1} = r_i sqrt((i + alpha) / (i + 1)); smaller shrinks faster.
   float alpha = 2.f / 3.f;

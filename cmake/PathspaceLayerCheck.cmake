@@ -1,0 +1,138 @@
+# The include check of the layers (docs/architecture.md §2): cmake -DROOT=<repository> -P this file.
+#
+# For every .h/.cpp/.cu file under ROOT/src/pathspace/ it reads the `#include "pathspace/<folder>/..."`
+# lines (quotes or angle brackets) and reports, as `file:line: message`,
+#   - an include of a folder the file's folder may not include (cmake/PathspaceLayers.cmake: a lower
+#     layer on its own path, or an earlier folder of its own layer),
+#   - a file in, or an include of, a folder that is in no layer (place every new folder there),
+#   - a quoted include that climbs out of the file's folder with "../" (write "pathspace/<folder>/..."),
+# and, for every .h/.cpp/.cu/.cuh/.hpp file under ROOT/{src,apps,tests,bench,tools}/, an #include of an
+# absolute path. Fails (exit status 1) when it reports anything. Folders missing from the tree (a
+# layer not written yet) are fine. With -DSTAMP=<file>, touches that file on success (the build runs
+# this check as a custom command; src/pathspace/CMakeLists.txt).
+cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/PathspaceLayers.cmake)
+
+if(NOT DEFINED ROOT)
+  message(FATAL_ERROR "usage: cmake -DROOT=<repository root> [-DSTAMP=<file>] -P ${CMAKE_CURRENT_LIST_FILE}")
+endif()
+get_filename_component(ROOT "${ROOT}" ABSOLUTE)
+set(src "${ROOT}/src/pathspace")
+if(NOT IS_DIRECTORY "${src}")
+  message(FATAL_ERROR "layer check: ${src} is not a directory")
+endif()
+
+set(errors "")
+set(files_checked 0)
+set(include_regex "^[ \t]*#[ \t]*include[ \t]*([<\"])([^>\"]*)[>\"]")
+
+# pathspace_check_file(<file> <folder or "">): appends this file's findings to `errors`. An empty
+# folder: check only for absolute includes.
+function(pathspace_check_file file folder)
+  file(READ "${file}" content)
+  if(NOT content MATCHES "#[ \t]*include")
+    return()
+  endif()
+  set(found "${errors}")
+  if(NOT folder STREQUAL "")
+    pathspace_layer_of_folder(${folder} from_layer)
+  endif()
+  # One list element per line: characters that mean something to CMake lists go first.
+  string(REGEX REPLACE "[][;\\\\]" "_" content "${content}")
+  string(REPLACE "\n" ";" lines "${content}")
+  set(n 0)
+  foreach(line IN LISTS lines)
+    math(EXPR n "${n} + 1")
+    if(NOT line MATCHES "${include_regex}")
+      continue()
+    endif()
+    set(quote "${CMAKE_MATCH_1}")
+    set(path "${CMAKE_MATCH_2}")
+    if(path MATCHES "^/")
+      list(APPEND found "${file}:${n}: #include of an absolute path (${path}): find the package with CMake and include it by name")
+      continue()
+    endif()
+    if(folder STREQUAL "")
+      continue()
+    endif()
+    if(path MATCHES "^pathspace/([^/]+)/")
+      set(to "${CMAKE_MATCH_1}")
+      pathspace_layer_of_folder(${to} to_layer)
+      if(to_layer STREQUAL "")
+        list(APPEND found "${file}:${n}: includes ${path}, but folder ${to} is in no layer (cmake/PathspaceLayers.cmake)")
+      elseif(to_layer STREQUAL "top" AND NOT from_layer STREQUAL "top")
+        list(APPEND found "${file}:${n}: ${folder} (layer ${from_layer}) must not include ${to} (a consumer folder, not a layer)")
+      else()
+        pathspace_may_include(${folder} ${to} ok)
+        if(NOT ok)
+          if(from_layer STREQUAL to_layer)
+            string(REPLACE ";" " " order "${PATHSPACE_LAYER_${from_layer}_FOLDERS}")
+            set(why "in layer ${from_layer} a folder includes only earlier ones: ${order}")
+          else()
+            pathspace_layer_allowed(${from_layer} allowed)
+            string(REPLACE ";" " " allowed "${allowed}")
+            if(allowed STREQUAL "")
+              set(allowed "none")
+            endif()
+            set(why "layers below ${from_layer}: ${allowed}")
+          endif()
+          list(APPEND found "${file}:${n}: ${folder} (layer ${from_layer}) must not include ${to} (layer ${to_layer}) [${why}]")
+        endif()
+      endif()
+    elseif(path MATCHES "^pathspace/")
+      list(APPEND found "${file}:${n}: includes ${path}, which is in no folder of src/pathspace/")
+    elseif(quote STREQUAL "\"" AND path MATCHES "(^|/)\\.\\.(/|$)")
+      list(APPEND found "${file}:${n}: relative include \"${path}\" leaves the folder: write \"pathspace/<folder>/...\"")
+    endif()
+  endforeach()
+  set(errors "${found}" PARENT_SCOPE)
+endfunction()
+
+# The layered tree.
+file(GLOB_RECURSE layered_files LIST_DIRECTORIES false RELATIVE "${src}" "${src}/*.h" "${src}/*.cpp" "${src}/*.cu")
+list(SORT layered_files)
+foreach(rel IN LISTS layered_files)
+  if(NOT rel MATCHES "^([^/]+)/")
+    list(APPEND errors "${src}/${rel}:1: a source file outside the folders of src/pathspace/: put it in the folder of its layer")
+    continue()
+  endif()
+  set(folder "${CMAKE_MATCH_1}")
+  pathspace_layer_of_folder(${folder} layer)
+  if(layer STREQUAL "")
+    list(APPEND errors "${src}/${rel}:1: folder ${folder} is in no layer: add it to cmake/PathspaceLayers.cmake")
+    continue()
+  endif()
+  pathspace_check_file("${src}/${rel}" ${folder})
+  math(EXPR files_checked "${files_checked} + 1")
+endforeach()
+
+# Absolute include paths anywhere else in the repository's code.
+foreach(dir src apps tests bench tools)
+  if(NOT IS_DIRECTORY "${ROOT}/${dir}")
+    continue()
+  endif()
+  file(GLOB_RECURSE other_files LIST_DIRECTORIES false "${ROOT}/${dir}/*.h" "${ROOT}/${dir}/*.hpp" "${ROOT}/${dir}/*.cpp"
+       "${ROOT}/${dir}/*.cu" "${ROOT}/${dir}/*.cuh")
+  list(SORT other_files)
+  foreach(file IN LISTS other_files)
+    string(FIND "${file}" "${src}/" at)
+    if(at EQUAL 0)
+      continue()  # checked above
+    endif()
+    pathspace_check_file("${file}" "")
+    math(EXPR files_checked "${files_checked} + 1")
+  endforeach()
+endforeach()
+
+list(LENGTH errors n_errors)
+if(n_errors GREATER 0)
+  foreach(e IN LISTS errors)
+    message("${e}")
+  endforeach()
+  message(FATAL_ERROR "layer check: ${n_errors} problem(s) in ${ROOT}. The layers and the include rule: "
+                      "cmake/PathspaceLayers.cmake, docs/architecture.md section 2.")
+endif()
+if(DEFINED STAMP)
+  file(TOUCH "${STAMP}")
+endif()
+message(STATUS "layer check: ${files_checked} files, no include crosses a layer")

@@ -1,0 +1,44 @@
+// `--filter hashed`: the options of hashed path space filtering (Binder, Fricke, Keller 2021) and
+// its registration. Section numbers are those of the 2021 paper.
+#include "pathspace/filters/filter_registry.h"
+#include "pathspace/filters/hashed_filter.h"
+
+namespace pathspace {
+
+namespace {
+
+OptionTable<HashedFilterSettings> hashed_options() {
+  using S = HashedFilterSettings;
+  OptionTable<S> t;
+  t.number("psf-scale", [](S& s) -> float& { return s.key.psf_scale; }, 0.01, 10000.0,
+           "Voxel edge in projected pixels at the vertex's distance", "sec. 3.1.1, sec. 4");
+  t.flag("psf-no-jitter", [](S& s) -> bool& { return s.key.jitter; }, false,
+         "Quantise without jittering (shows voxel blocks, fig. 6c)", "sec. 3.1.4");
+  t.choice("psf-normal", [](S& s) -> NormalKeyMode& { return s.key.normal; },
+           std::vector<std::pair<std::string, NormalKeyMode>>{
+               {"key", NormalKeyMode::key}, {"fingerprint", NormalKeyMode::fingerprint}, {"off", NormalKeyMode::off}},
+           "Normal in the key, only in the fingerprint, or off", "sec. 3.1.2, sec. 3.2.2 (fig. 7)");
+  t.number("psf-table-factor", &S::table_factor, 0.001, 64.0, "Hash table cells per pixel (rounded up to a power of two)",
+           "sec. 4");
+  t.number("psf-probes", &S::max_probes, 1, 4096, "Linear probing limit (<= 16 stays in one cache line)", "sec. 3.2.2; 2019 paper sec. 3.1");
+  t.number("psf-min-count", &S::min_count, 0, 1 << 20, "Voxels with fewer vertices are low-count", "sec. 3.3");
+  t.flag("psf-neighbours", &S::neighbour_search, true, "Low-count voxels add their 26 neighbours", "sec. 3.3.1");
+  t.flag("psf-multi-level", &S::multi_level, true, "Low-count voxels use a voxel one level coarser", "sec. 3.3.2");
+  t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
+  t.check([](const S& s) {
+    if (s.neighbour_search && s.multi_level)
+      throw OptionError("--psf-neighbours and --psf-multi-level are alternatives; pick one");
+  });
+  return t;
+}
+
+const FilterRegistrar kRegistrar{make_filter_entry<HashedFilterSettings>(
+    "hashed", "hashed path space filtering: jittered voxel averages in a hash table, per pass",
+    "Binder, Fricke, Keller 2021, sec. 3.1-3.3", hashed_options(),
+    [](const FilterContext& ctx, const HashedFilterSettings& s) -> std::unique_ptr<PathSpaceFilter> {
+      return std::make_unique<HashedFilter>(s, ctx.camera, ctx.pixels);
+    })};
+
+}  // namespace
+
+}  // namespace pathspace

@@ -1,0 +1,69 @@
+// The registry of integrators: each integrator registers, with an IntegratorRegistrar in its own
+// folder, its name, a one-line description, its options (an OptionTable over its own settings
+// struct, with paper sections), the filters it composes with, and a factory. The CLI's --help and
+// validation, `pathspace info --integrators [--json]` and the session read this one table.
+#pragma once
+
+#include <any>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/integrator.h"
+#include "pathspace/options/registry.h"
+#include "pathspace/options/settings_schema.h"
+
+namespace pathspace {
+
+class Accel;
+class Scene;
+
+// What an integrator is built from besides its own settings.
+struct IntegratorContext {
+  const Scene& scene;
+  const Accel& accel;
+  uint64_t seed;
+  const FilterChoice& filter;  // FilterChoice::kNone unless the entry composes with filters
+};
+
+struct IntegratorEntry {
+  std::string name, description;
+  std::string paper;                 // the algorithm and where it is described
+  SettingsSchema schema;
+  // The filters it composes with (empty: none; kAllFilters: every registered path space filter).
+  static constexpr const char* kAllFilters = "*";
+  std::vector<std::string> filters;
+  std::function<std::unique_ptr<Integrator>(const IntegratorContext&, const std::any&)> create;
+
+  bool composes_with(const std::string& filter) const;
+  // The names of the registered filters it composes with.
+  std::vector<std::string> filter_names() const;
+};
+
+Registry<IntegratorEntry>& integrator_registry();
+
+template <typename Settings>
+IntegratorEntry make_integrator_entry(
+    std::string name, std::string description, std::string paper, OptionTable<Settings> table, std::vector<std::string> filters,
+    std::function<std::unique_ptr<Integrator>(const IntegratorContext&, const Settings&)> create) {
+  IntegratorEntry e;
+  e.name = std::move(name);
+  e.description = std::move(description);
+  e.paper = std::move(paper);
+  e.schema = SettingsSchema::of(std::move(table));
+  e.filters = std::move(filters);
+  e.create = [create, owner = e.name](const IntegratorContext& ctx, const std::any& settings) {
+    return create(ctx, settings_cast<Settings>(settings, owner));
+  };
+  return e;
+}
+
+// Registers at static initialisation: `const IntegratorRegistrar kRegistrar{make_integrator_entry(...)};`.
+// (The integrators library is linked whole-archive, so no registrar is dropped by the linker.)
+struct IntegratorRegistrar {
+  explicit IntegratorRegistrar(IntegratorEntry entry) { integrator_registry().add(std::move(entry)); }
+};
+
+}  // namespace pathspace

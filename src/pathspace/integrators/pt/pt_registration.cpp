@@ -1,0 +1,46 @@
+// `--integrator pt`: the options of path tracing and its registration. The vertex selection
+// options say where a path is split for path space filtering (2021 paper, sec. 4 and fig. 10).
+#include "pathspace/integrators/common/common_options.h"
+#include "pathspace/integrators/integrator_registry.h"
+#include "pathspace/integrators/pt/pt_integrator.h"
+
+namespace pathspace {
+
+namespace {
+
+OptionTable<PtSettings> pt_options() {
+  using S = PtSettings;
+  OptionTable<S> t;
+  add_max_depth_option(t, &S::max_segments);
+  t.flag("no-nee", &S::nee, false, "No next event estimation (BSDF sampling only)");
+  t.flag("no-bsdf-sampling", &S::bsdf_sampling, false, "Emission only through next event estimation");
+  add_mis_option(t, &S::mis);
+  t.choice("psf-select", [](S& s) -> VertexSelectionMode& { return s.selection.mode; },
+           std::vector<std::pair<std::string, VertexSelectionMode>>{
+               {"first", VertexSelectionMode::first}, {"nth", VertexSelectionMode::nth}, {"all", VertexSelectionMode::all}},
+           "With --filter: vertex selection, first / nth / all sufficiently diffuse vertices", "2021 paper, sec. 4, fig. 10");
+  t.number("psf-nth", [](S& s) -> int& { return s.selection.n; }, 1, 16,
+           "With --psf-select nth: which diffuse vertex (2 = final gather)", "2021 paper, fig. 10");
+  t.number("psf-max-vertices", [](S& s) -> int& { return s.selection.max_vertices; }, 1, kMaxSelectedVertices,
+           "With --psf-select all: vertices per path");
+  t.number("psf-min-roughness", [](S& s) -> float& { return s.selection.min_roughness; }, 0.0, 1.0,
+           "Vertices smoother than this are not selected");
+  t.flag("psf-no-layers", [](S& s) -> bool& { return s.selection.split_layers; }, false,
+         "One average per vertex instead of one per material layer", "2021 paper, sec. 3.1.2");
+  t.check([](const S& s) {
+    if (!s.nee && !s.bsdf_sampling) throw OptionError("--no-nee and --no-bsdf-sampling together would render black");
+  });
+  return t;
+}
+
+const IntegratorRegistrar kRegistrar{make_integrator_entry<PtSettings>(
+    "pt", "path tracing with next event estimation and MIS; filters the selected vertices with --filter",
+    "Veach 1997 (MIS); path split for filtering: Binder, Fricke, Keller 2021, sec. 3", pt_options(),
+    {IntegratorEntry::kAllFilters},
+    [](const IntegratorContext& ctx, const PtSettings& s) -> std::unique_ptr<Integrator> {
+      return std::make_unique<PtIntegrator>(ctx.scene, ctx.accel, s, ctx.seed, ctx.filter);
+    })};
+
+}  // namespace
+
+}  // namespace pathspace

@@ -1,0 +1,130 @@
+// RenderSession: one render with state across passes. It owns (or shares) the scene and its
+// acceleration structure, the integrator with its filter, and the film, and runs passes until a
+// pass count, a time budget or cancel(). Between passes it can be snapshotted (images and
+// statistics so far) and its whole state saved and restored, so a render can be continued bit for
+// bit: run(4) + run(4) equals run(8), in one session or across a save_state()/restore_state().
+// The CLI, the studies, the benchmarks and the tests all render through it.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "pathspace/film/film.h"
+#include "pathspace/film/image.h"
+#include "pathspace/session/render_config.h"
+#include "pathspace/stats/path_counters.h"
+#include "pathspace/stats/statistics.h"
+
+namespace pathspace {
+
+class Accel;
+class Integrator;
+class Scene;
+
+// How long one run() goes on. Passes are never interrupted: cancel() and the time budget take
+// effect between passes.
+struct RunLimit {
+  uint32_t passes = 0;   // > 0: this many passes
+  double seconds = 0.0;  // > 0: whole passes until this much wall time has passed (at least one)
+  // Both 0: until cancel().
+  static RunLimit for_passes(uint32_t n) { return {n, 0.0}; }
+  static RunLimit for_seconds(double s) { return {0, s}; }
+  static RunLimit until_cancelled() { return {0, 0.0}; }
+};
+
+// After every pass of a run.
+struct RenderProgress {
+  uint32_t passes_done = 0;   // in this run
+  uint32_t passes_total = 0;  // of this run; 0 when time-limited or until cancelled
+  uint32_t session_passes = 0;  // in the whole session (restored passes included)
+  double elapsed_s = 0.0;     // of this run
+  double fraction = 0.0;      // 0..1 of this run's passes or time budget; 0 until cancelled
+  uint64_t rays = 0;          // in this run
+  uint64_t paths = 0;
+};
+
+// The common counters of every render, plus the integrator's and filter's own statistics.
+struct RenderStats {
+  std::string integrator, filter;
+  double wall_s = 0.0;  // time spent in passes, over all runs (and restored ones)
+  uint32_t spp = 0;     // passes so far (samples per pixel for the camera-path integrators)
+  uint64_t rays = 0;
+  uint64_t shadow_rays = 0;
+  uint64_t paths = 0;
+  uint64_t dropped_samples = 0;  // NaN/Inf samples replaced by 0
+  int threads = 0;
+  uint64_t seed = 0;
+  Statistics details;  // "<integrator or filter>.<what>" (Integrator::statistics)
+  double mrays_per_s() const { return wall_s > 0 ? double(rays) / wall_s * 1e-6 : 0.0; }
+  double paths_per_s() const { return wall_s > 0 ? double(paths) / wall_s : 0.0; }
+};
+
+struct RenderSnapshot {
+  Image mean, variance;          // the film's mean and variance of the mean
+  RenderStats stats;
+  std::vector<NamedImage> aovs;  // the integrator's debug images, when its options asked for them
+};
+
+struct RunResult {
+  uint32_t passes = 0;  // run in this call
+  double wall_s = 0.0;
+  bool cancelled = false;
+};
+
+// The serializable state of a session: bytes of base/state_archive.h (session header, film sums,
+// the integrator's and filter's own state). Restorable into a session with the same config and scene.
+struct SessionState {
+  std::vector<uint8_t> bytes;
+};
+
+class RenderSession {
+ public:
+  // Shares scene and accel (the session keeps them alive); a null accel is built from the scene.
+  RenderSession(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, RenderConfig config);
+  // Takes the scene (finalized) and builds its acceleration structure.
+  RenderSession(Scene scene, RenderConfig config);
+  ~RenderSession();
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+
+  // Runs passes until `limit` or cancel(); calls on_progress after each pass (outside the lock).
+  RunResult run(const RunLimit& limit, const std::function<void(const RenderProgress&)>& on_progress = {});
+  // Thread-safe. The current pass finishes, then run() returns. A cancel() while no run is going on
+  // stops the next run before its first pass.
+  void cancel();
+
+  // Thread-safe; during a run it waits for the current pass to end (the run goes on).
+  RenderSnapshot snapshot() const;
+  RenderStats stats() const;
+  SessionState save_state() const;
+  // Before or between runs. Throws pathspace::Error when the state belongs to another integrator,
+  // filter, seed or image size, or is damaged.
+  void restore_state(const SessionState& state);
+
+  uint32_t passes_done() const;
+  const RenderConfig& config() const { return config_; }
+  const Scene& scene() const { return *scene_; }
+  const Accel& accel() const { return *accel_; }
+
+ private:
+  RenderStats stats_locked() const;
+
+  std::shared_ptr<const Scene> scene_;
+  std::shared_ptr<const Accel> accel_;
+  RenderConfig config_;
+  std::unique_ptr<Integrator> integrator_;
+  Film film_;
+  PathCounters counters_;
+  uint32_t passes_ = 0;
+  double wall_s_ = 0.0;
+  int threads_ = 0;
+  mutable std::mutex mutex_;  // held while a pass renders and while the film is read
+  std::atomic<bool> cancel_{false};
+};
+
+}  // namespace pathspace

@@ -1,0 +1,81 @@
+// The integrator and filter options exist in one place, the registry; these tests check that its
+// three views agree: `pathspace render --help`, `pathspace info --integrators --json` and the
+// generated tables of docs/cli.md (`pathspace info --integrators --markdown`).
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+std::string run_binary(const std::string& args) {
+  const std::string cmd = "'" PATHSPACE_BINARY "' " + args + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n = 0;
+  while (pipe && (n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
+  return out;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Every option name of every integrator and filter in the JSON table.
+std::set<std::string> json_options(const nlohmann::json& j) {
+  std::set<std::string> names;
+  for (const char* kind : {"integrators", "filters"})
+    for (const auto& entry : j.at(kind))
+      for (const auto& option : entry.at("options")) names.insert(option.at("name").get<std::string>());
+  return names;
+}
+
+nlohmann::json registry_json() { return nlohmann::json::parse(run_binary("info --integrators --json")); }
+
+TEST(RegistryDocs, EveryRegisteredOptionIsInRenderHelp) {
+  const std::string help = run_binary("render --help");
+  for (const std::string& name : json_options(registry_json()))
+    EXPECT_NE(help.find("--" + name + " "), std::string::npos) << "--" << name << " is registered but not in render --help";
+}
+
+TEST(RegistryDocs, EveryIntegratorHasADescriptionAndOptionsHaveHelp) {
+  const nlohmann::json j = registry_json();
+  ASSERT_GE(j.at("integrators").size(), 5u);
+  for (const char* kind : {"integrators", "filters"})
+    for (const auto& entry : j.at(kind)) {
+      EXPECT_FALSE(entry.at("description").get<std::string>().empty()) << entry.at("name");
+      for (const auto& option : entry.at("options")) EXPECT_FALSE(option.at("help").get<std::string>().empty()) << option.at("name");
+    }
+}
+
+TEST(RegistryDocs, IntegratorsInRenderHelpAreRegistered) {
+  const nlohmann::json j = registry_json();
+  const std::string help = run_binary("render --help");
+  for (const auto& entry : j.at("integrators")) {
+    const std::string name = entry.at("name").get<std::string>();
+    EXPECT_NE(help.find("(--integrator " + name + ")"), std::string::npos) << name << " has no option group in --help";
+  }
+}
+
+// docs/cli.md holds the generated block verbatim: regenerate it with
+// `pathspace info --integrators --markdown` after changing a registration.
+TEST(RegistryDocs, CliDocHoldsTheGeneratedTables) {
+  const std::string doc = read_file(PATHSPACE_SOURCE_DIR "/docs/cli.md");
+  const std::string generated = run_binary("info --integrators --markdown");
+  ASSERT_FALSE(generated.empty());
+  EXPECT_NE(doc.find(generated), std::string::npos)
+      << "docs/cli.md does not contain the output of `pathspace info --integrators --markdown`; paste it between the "
+         "generated-block markers";
+}
+
+}  // namespace

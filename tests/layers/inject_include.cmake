@@ -1,0 +1,54 @@
+# Proof that the layer check fails where it must (tests/layers/CMakeLists.txt):
+#   cmake -DROOT=<repository> -DWORK=<scratch dir> -DFILE=<path under src/pathspace/> -DLINE=<n>
+#         -DHEADER=<included path> -DEXPECT=<message> -P inject_include.cmake
+# copies ROOT/src/pathspace/ to WORK/src/pathspace/, inserts `#include "HEADER"` into FILE so that it
+# becomes line LINE (FILE is created when it does not exist), runs cmake/PathspaceLayerCheck.cmake on
+# the copy and succeeds only if that check fails with the line
+#   WORK/src/pathspace/FILE:LINE: EXPECT
+cmake_minimum_required(VERSION 3.25)
+foreach(var ROOT WORK FILE LINE HEADER EXPECT)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "inject_include.cmake: -D${var}=... missing")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}/src")
+file(COPY "${ROOT}/src/pathspace" DESTINATION "${WORK}/src")
+set(target "${WORK}/src/pathspace/${FILE}")
+set(content "")
+if(EXISTS "${target}")
+  file(READ "${target}" content)
+endif()
+# Insert before the LINE-th line (a shorter file is padded with empty lines).
+set(head "")
+set(rest "${content}")
+set(n 1)
+while(n LESS LINE)
+  string(FIND "${rest}" "\n" nl)
+  if(nl EQUAL -1)
+    string(APPEND head "${rest}\n")
+    set(rest "")
+  else()
+    math(EXPR len "${nl} + 1")
+    string(SUBSTRING "${rest}" 0 ${len} line)
+    string(APPEND head "${line}")
+    string(SUBSTRING "${rest}" ${len} -1 rest)
+  endif()
+  math(EXPR n "${n} + 1")
+endwhile()
+file(WRITE "${target}" "${head}#include \"${HEADER}\"\n${rest}")
+
+execute_process(COMMAND "${CMAKE_COMMAND}" "-DROOT=${WORK}" -P "${ROOT}/cmake/PathspaceLayerCheck.cmake"
+                RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
+message("${out}")
+set(expected "${target}:${LINE}: ${EXPECT}")
+if(result EQUAL 0)
+  message(FATAL_ERROR "the layer check passed, but ${FILE}:${LINE} includes ${HEADER}")
+endif()
+string(FIND "${out}" "${expected}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "the layer check failed, but without the line\n  ${expected}")
+endif()
+file(REMOVE_RECURSE "${WORK}")
+message(STATUS "the layer check rejects ${FILE}:${LINE} including ${HEADER}, as it must")
