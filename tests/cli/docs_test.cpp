@@ -30,11 +30,16 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "cli_process.h"
 #include <nlohmann/json.hpp>
 
 namespace {
 
 namespace fs = std::filesystem;
+using pathspace::testing::read_all;
+using pathspace::testing::run_pathspace;
+using pathspace::testing::Run;
 
 const fs::path kRoot = PATHSPACE_SOURCE_DIR;
 
@@ -99,13 +104,6 @@ std::vector<DocLine> split_lines(const std::string& file, const std::string& con
     lines.push_back({file, number, text, fenced});
   }
   return lines;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // README.md and every Markdown file under docs/, relative to the root, sorted.
@@ -344,23 +342,6 @@ void check_integrators(const std::vector<DocLine>& lines, const std::set<std::st
 }
 
 // ---- the pathspace binary ----
-
-struct Run {
-  int exit_code = -1;
-  std::string out;
-};
-
-Run run_pathspace(const std::string& args) {
-  const std::string cmd = "'" PATHSPACE_BINARY "' " + args + " 2>&1";
-  Run r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 std::set<std::string> help_options() {
   std::set<std::string> known;

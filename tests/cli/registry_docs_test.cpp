@@ -1,35 +1,19 @@
 // The integrator and filter options exist in one place, the registry; these tests check that its
 // three views agree: `pathspace render --help`, `pathspace info --integrators --json` and the
 // generated tables of docs/cli.md (`pathspace info --integrators --markdown`).
-#include <array>
-#include <cstdio>
-#include <fstream>
-#include <memory>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_process.h"
+
 namespace {
 
-std::string run_binary(const std::string& args) {
-  const std::string cmd = "'" PATHSPACE_BINARY "' " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n = 0;
-  while (pipe && (n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-  return out;
-}
+std::string run_binary(const std::string& args) { return pathspace::testing::run_pathspace(args).out; }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const std::string& path) { return pathspace::testing::read_all(path); }
 
 // Every option name of every integrator and filter in the JSON table.
 std::set<std::string> json_options(const nlohmann::json& j) {

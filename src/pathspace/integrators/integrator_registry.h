@@ -60,6 +60,14 @@ IntegratorEntry make_integrator_entry(
   return e;
 }
 
+// The factory of an integrator constructed as T(scene, accel, settings, seed).
+template <typename T, typename Settings>
+std::function<std::unique_ptr<Integrator>(const IntegratorContext&, const Settings&)> construct_with_seed() {
+  return [](const IntegratorContext& ctx, const Settings& s) -> std::unique_ptr<Integrator> {
+    return std::make_unique<T>(ctx.scene, ctx.accel, s, ctx.seed);
+  };
+}
+
 // Registers at static initialisation: `const IntegratorRegistrar kRegistrar{make_integrator_entry(...)};`.
 // (The integrators library is linked whole-archive, so no registrar is dropped by the linker.)
 struct IntegratorRegistrar {

@@ -23,9 +23,7 @@ OptionTable<BptSettings> bpt_options() {
 const IntegratorRegistrar kRegistrar{make_integrator_entry<BptSettings>(
     "bpt", "bidirectional path tracing, every strategy (s, t) weighted by MIS",
     "Veach 1997, ch. 10; MIS as in the VCM technical report (Georgiev et al. 2012)", bpt_options(), {},
-    [](const IntegratorContext& ctx, const BptSettings& s) -> std::unique_ptr<Integrator> {
-      return std::make_unique<BptIntegrator>(ctx.scene, ctx.accel, s, ctx.seed);
-    })};
+    construct_with_seed<BptIntegrator, BptSettings>())};
 
 }  // namespace
 

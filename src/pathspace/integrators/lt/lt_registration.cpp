@@ -23,9 +23,7 @@ OptionTable<LtSettings> lt_options() {
 const IntegratorRegistrar kRegistrar{make_integrator_entry<LtSettings>(
     "lt", "light tracing: light paths connected to the camera and splatted (fixed-point, deterministic)",
     "Veach 1997, ch. 10 (the t = 1 strategies); camera projection: PCLT paper sec. 5.2", lt_options(), {},
-    [](const IntegratorContext& ctx, const LtSettings& s) -> std::unique_ptr<Integrator> {
-      return std::make_unique<LtIntegrator>(ctx.scene, ctx.accel, s, ctx.seed);
-    })};
+    construct_with_seed<LtIntegrator, LtSettings>())};
 
 }  // namespace
 

@@ -50,9 +50,7 @@ OptionTable<PcltSettings> pclt_options() {
 const IntegratorRegistrar kRegistrar{make_integrator_entry<PcltSettings>(
     "pclt", "pixel cache light tracing: eye pass into a pixel cache, light paths gather from it and project to the camera",
     "Jendersie, Kuri, Grosch 2017, sec. 3-5", pclt_options(), {},
-    [](const IntegratorContext& ctx, const PcltSettings& s) -> std::unique_ptr<Integrator> {
-      return std::make_unique<PcltIntegrator>(ctx.scene, ctx.accel, s, ctx.seed);
-    })};
+    construct_with_seed<PcltIntegrator, PcltSettings>())};
 
 }  // namespace
 

@@ -24,9 +24,7 @@ OptionTable<SppmSettings> sppm_options() {
 const IntegratorRegistrar kRegistrar{make_integrator_entry<SppmSettings>(
     "sppm", "stochastic progressive photon mapping with the Knaus-Zwicker global radius update",
     "Hachisuka and Jensen 2009; radius: Knaus and Zwicker 2011 (PCLT paper eq. 1)", sppm_options(), {},
-    [](const IntegratorContext& ctx, const SppmSettings& s) -> std::unique_ptr<Integrator> {
-      return std::make_unique<SppmIntegrator>(ctx.scene, ctx.accel, s, ctx.seed);
-    })};
+    construct_with_seed<SppmIntegrator, SppmSettings>())};
 
 }  // namespace
 
