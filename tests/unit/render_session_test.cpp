@@ -225,7 +225,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, SessionContinues, ::testing::ValuesIn(case
                          [](const ::testing::TestParamInfo<Case>& i) { return testing::test_name(i.param.name); });
 
 // A state restores only into a render of the same integrator, filter, seed and image size.
-TEST(SessionState, OtherIntegratorFilterSeedOrSizeIsRefused) {
+TEST(SessionState, OtherIntegratorFilterOptionsSeedSceneOrSizeIsRefused) {
   const RenderConfig pt = threaded(make_render_config("pt", PtSettings{}, kSeed));
   auto source = make_session(pt);
   source->run(RunLimit::for_passes(2));
@@ -244,6 +244,11 @@ TEST(SessionState, OtherIntegratorFilterSeedOrSizeIsRefused) {
   expect_refused(make_session(threaded(make_render_config("pt", PtSettings{}, kSeed + 1))), "other seed");
   expect_refused(make_session(pt, 16, 16), "other size");
   expect_refused(make_session(pt, 16, 64), "same pixel count, other shape");
+  PtSettings no_nee;
+  no_nee.nee = false;
+  expect_refused(make_session(threaded(make_render_config("pt", no_nee, kSeed))), "other option values");
+  auto glossy = std::make_shared<const Scene>(make_builtin_scene("cornell-glossy", kSize, kSize));
+  expect_refused(std::make_unique<RenderSession>(glossy, std::make_shared<const Accel>(*glossy), pt), "other scene, same size");
 
   // The message says what the state was made by.
   auto lt = make_session(threaded(make_render_config("lt", LtSettings{}, kSeed)));
@@ -335,7 +340,9 @@ TEST(SessionRun, TimeBudgetRunsWholePassesAndAtLeastOne) {
 class SessionSnapshot : public ::testing::TestWithParam<Case> {};
 
 // Snapshots taken while another thread runs hold whole passes: the stats' pass count is the number
-// of passes in the film (a snapshot of k passes equals a k-pass render bit for bit).
+// of passes in the film (a snapshot of k passes equals a k-pass render bit for bit). The run lets a
+// waiting snapshot() go before its next pass (std::mutex alone is not fair: without that, 100
+// passes of 32x32 PT could end before any snapshot got the lock), so snapshots arrive mid-run.
 TEST_P(SessionSnapshot, DuringARunHoldsWholePasses) {
   constexpr uint32_t kPasses = 100;
   const RenderConfig& config = GetParam().config;
@@ -343,10 +350,9 @@ TEST_P(SessionSnapshot, DuringARunHoldsWholePasses) {
   std::future<RunResult> done = std::async(std::launch::async, [&] { return session->run(RunLimit::for_passes(kPasses)); });
   std::vector<RenderSnapshot> snaps;
   std::set<uint32_t> seen;
-  while (done.wait_for(std::chrono::microseconds(200)) != std::future_status::ready) {
+  while (snaps.size() < 6 && done.wait_for(std::chrono::microseconds(300)) != std::future_status::ready) {
     RenderSnapshot snap = session->snapshot();
-    if (snap.stats.spp > 0 && snap.stats.spp < kPasses && snaps.size() < 6 && seen.insert(snap.stats.spp).second)
-      snaps.push_back(std::move(snap));
+    if (snap.stats.spp > 0 && snap.stats.spp < kPasses && seen.insert(snap.stats.spp).second) snaps.push_back(std::move(snap));
   }
   EXPECT_EQ(wait_or_abort(done, "run(for_passes(100))").passes, kPasses);
   ASSERT_FALSE(snaps.empty()) << "no snapshot was taken while the run was going on";

@@ -26,7 +26,8 @@ class OptionTable {
   // Cross-option rules on the finished settings (e.g. two options that exclude each other).
   using Check = std::function<void(const Settings&)>;
 
-  // An integer or real option. `field` is a data member pointer or a callable Settings& -> T&.
+  // An integer or real option. `field` is a data member pointer or a callable Settings& -> T&
+  // (describe() reads through it with a const_cast; it never writes there).
   template <typename Field>
   OptionTable& number(std::string name, Field field, double min, double max, std::string help, std::string paper = {}) {
     using T = std::remove_reference_t<std::invoke_result_t<Field, Settings&>>;
@@ -35,7 +36,8 @@ class OptionTable {
     spec.min = min;
     spec.max = max;
     spec.default_text = number_text(widen(std::invoke(field, defaults_)));
-    add(std::move(spec), [field, name, min, max](Settings& s, const std::string& text) {
+    add(std::move(spec), [field](const Settings& s) { return number_text(widen(std::invoke(field, const_cast<Settings&>(s)))); },
+        [field, name, min, max](Settings& s, const std::string& text) {
       T& target = std::invoke(field, s);
       if constexpr (std::is_integral_v<T>)
         target = T(parse_integer_option(name, text, min, max));
@@ -52,7 +54,11 @@ class OptionTable {
   OptionTable& flag(std::string name, Field field, bool value_when_given, std::string help, std::string paper = {}) {
     OptionSpec spec = make_spec(name, OptionType::flag, help, paper);
     spec.default_text = "off";
-    add(std::move(spec), [field, value_when_given](Settings& s, const std::string&) { std::invoke(field, s) = value_when_given; });
+    add(std::move(spec),
+        [field, value_when_given](const Settings& s) {
+          return std::string(std::invoke(field, const_cast<Settings&>(s)) == value_when_given ? "on" : "off");
+        },
+        [field, value_when_given](Settings& s, const std::string&) { std::invoke(field, s) = value_when_given; });
     return *this;
   }
 
@@ -65,7 +71,13 @@ class OptionTable {
       spec.choices.push_back(text);
       if (value == std::invoke(field, defaults_)) spec.default_text = text;
     }
-    add(std::move(spec), [field, name, choices](Settings& s, const std::string& text) {
+    add(std::move(spec),
+        [field, choices](const Settings& s) {
+          for (const auto& [t, value] : choices)
+            if (value == std::invoke(field, const_cast<Settings&>(s))) return t;
+          return std::string("?");
+        },
+        [field, name, choices](Settings& s, const std::string& text) {
       for (const auto& [t, value] : choices)
         if (t == text) {
           std::invoke(field, s) = value;
@@ -101,6 +113,14 @@ class OptionTable {
     return false;
   }
 
+  // Every option's current value as the user would write it, "name=value" separated by spaces: a
+  // fingerprint of the settings (a restored render must continue with the options it was made with).
+  std::string describe(const Settings& settings) const {
+    std::string out;
+    for (const Entry& e : entries_) out += (out.empty() ? "" : " ") + e.spec.name + "=" + e.text(settings);
+    return out;
+  }
+
   // Stores every given option that this table knows into *settings (others are left to the caller),
   // then applies the cross-option checks.
   void apply(const OptionValues& given, Settings* settings) const {
@@ -113,6 +133,7 @@ class OptionTable {
  private:
   struct Entry {
     OptionSpec spec;
+    std::function<std::string(const Settings&)> text;
     std::function<void(Settings&, const std::string&)> set;
   };
 
@@ -131,9 +152,9 @@ class OptionTable {
     else
       return v;
   }
-  void add(OptionSpec spec, std::function<void(Settings&, const std::string&)> set) {
+  void add(OptionSpec spec, std::function<std::string(const Settings&)> text, std::function<void(Settings&, const std::string&)> set) {
     if (has(spec.name)) throw OptionError("option --" + spec.name + " is defined twice in one table");
-    entries_.push_back({std::move(spec), std::move(set)});
+    entries_.push_back({std::move(spec), std::move(text), std::move(set)});
   }
 
   Settings defaults_{};

@@ -19,6 +19,8 @@ struct SettingsSchema {
   std::function<std::any()> defaults;
   // Stores the given options that belong to this schema into *settings (defaults first when empty).
   std::function<void(const OptionValues&, std::any*)> apply;
+  // The options' values in `settings` (the defaults when empty), OptionTable::describe.
+  std::function<std::string(const std::any&)> describe;
 
   template <typename Settings>
   static SettingsSchema of(OptionTable<Settings> table) {
@@ -29,6 +31,9 @@ struct SettingsSchema {
     schema.apply = [shared](const OptionValues& given, std::any* settings) {
       if (!settings->has_value()) *settings = Settings{};
       shared->apply(given, std::any_cast<Settings>(settings));
+    };
+    schema.describe = [shared](const std::any& settings) {
+      return shared->describe(settings.has_value() ? std::any_cast<const Settings&>(settings) : Settings{});
     };
     return schema;
   }

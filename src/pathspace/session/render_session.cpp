@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
@@ -13,6 +14,27 @@
 namespace pathspace {
 
 namespace {
+
+// The integrator's and filter's option values: a continued render must use the options it began with.
+std::string settings_fingerprint(const RenderConfig& config) {
+  std::string out = integrator_registry().at(config.integrator).schema.describe(config.settings);
+  if (config.filter.active()) out += " | " + filter_registry().at(config.filter.name).schema.describe(config.filter.settings);
+  return out;
+}
+
+// What distinguishes one scene from another of the same image size, cheaply: its name, sizes, bounds
+// and a hash of its vertex positions (material parameters are not compared).
+std::string scene_fingerprint(const Scene& scene) {
+  const BoundingSphere b = scene.bounds();
+  uint64_t hash = 1469598103934665603ull;  // FNV-1a over the positions' bytes (floats: no padding)
+  const auto* bytes = reinterpret_cast<const unsigned char*>(scene.positions.data());
+  for (size_t i = 0; i < scene.positions.size() * sizeof(Vec3); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  return "name=" + scene.name + " position_hash=" + std::to_string(hash) + " positions=" + std::to_string(scene.positions.size()) + " triangles=" + std::to_string(scene.triangles.size()) +
+         " spheres=" + std::to_string(scene.spheres.size()) + " materials=" + std::to_string(scene.materials.size()) +
+         " lights=" + std::to_string(scene.lights.size()) + " max_segments=" + std::to_string(scene.max_path_segments) +
+         " bounds=" + std::to_string(b.center.x) + "," + std::to_string(b.center.y) + "," + std::to_string(b.center.z) + "," +
+         std::to_string(b.radius);
+}
 
 std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config) {
   check_composition(config.integrator, config.filter.name);
@@ -53,6 +75,8 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
     if (counted && result.passes >= limit.passes) break;
     if (timed && result.passes > 0 && elapsed() >= limit.seconds) break;
     RenderProgress p;
+    // std::mutex is not fair: let a waiting snapshot() in before taking the lock for the next pass.
+    while (readers_waiting_.load() > 0) std::this_thread::yield();
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto pass_start = std::chrono::steady_clock::now();
@@ -102,12 +126,12 @@ RenderStats RenderSession::stats_locked() const {
 }
 
 RenderStats RenderSession::stats() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  const ReaderLock lock(*this);
   return stats_locked();
 }
 
 RenderSnapshot RenderSession::snapshot() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  const ReaderLock lock(*this);
   RenderSnapshot snap;
   snap.mean = film_.mean();
   snap.variance = film_.variance_of_mean();
@@ -117,11 +141,13 @@ RenderSnapshot RenderSession::snapshot() const {
 }
 
 SessionState RenderSession::save_state() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  const ReaderLock lock(*this);
   StateWriter out;
   out.put_string("session.integrator", config_.integrator);
   out.put_string("session.filter", config_.filter.name);
   out.put("session.seed", config_.seed);
+  out.put_string("session.settings", settings_fingerprint(config_));
+  out.put_string("session.scene", scene_fingerprint(*scene_));
   out.put("session.passes", passes_);
   out.put("session.counters", counters_);
   out.put("session.wall_s", wall_s_);
@@ -141,6 +167,12 @@ void RenderSession::restore_state(const SessionState& state) {
     throw Error("render state: made by --integrator " + integrator + " --filter " + filter + " --seed " + std::to_string(seed) +
                 ", this render is --integrator " + config_.integrator + " --filter " + config_.filter.name + " --seed " +
                 std::to_string(config_.seed));
+  const std::string settings = in.get_string("session.settings");
+  if (settings != settings_fingerprint(config_))
+    throw Error("render state: made with the options '" + settings + "', this render has '" + settings_fingerprint(config_) + "'");
+  const std::string scene = in.get_string("session.scene");
+  if (scene != scene_fingerprint(*scene_))
+    throw Error("render state: made for another scene (" + scene + "; this one: " + scene_fingerprint(*scene_) + ")");
   // Read into fresh objects first, so that a damaged state leaves this session as it was.
   uint32_t passes = 0;
   PathCounters counters;

@@ -103,7 +103,7 @@ class RenderSession {
   RenderStats stats() const;
   SessionState save_state() const;
   // Before or between runs. Throws pathspace::Error when the state belongs to another integrator,
-  // filter, seed or image size, or is damaged.
+  // filter, option values, seed, scene or image size, or is damaged; the session is then unchanged.
   void restore_state(const SessionState& state);
 
   uint32_t passes_done() const;
@@ -113,6 +113,21 @@ class RenderSession {
 
  private:
   RenderStats stats_locked() const;
+  // Holds the lock for a reader (snapshot, stats, save_state); run() lets waiting readers go first.
+  class ReaderLock {
+   public:
+    explicit ReaderLock(const RenderSession& s) : s_(s) {
+      ++s_.readers_waiting_;
+      s_.mutex_.lock();
+      --s_.readers_waiting_;
+    }
+    ~ReaderLock() { s_.mutex_.unlock(); }
+    ReaderLock(const ReaderLock&) = delete;
+    ReaderLock& operator=(const ReaderLock&) = delete;
+
+   private:
+    const RenderSession& s_;
+  };
 
   std::shared_ptr<const Scene> scene_;
   std::shared_ptr<const Accel> accel_;
@@ -124,6 +139,7 @@ class RenderSession {
   double wall_s_ = 0.0;
   int threads_ = 0;
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
+  mutable std::atomic<int> readers_waiting_{0};
   std::atomic<bool> cancel_{false};
 };
 

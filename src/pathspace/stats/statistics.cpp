@@ -77,7 +77,12 @@ std::string format_statistics(const Statistics& stats) {
       case StatKind::value: std::snprintf(buf, sizeof(buf), "%.5g", s.number); break;
       case StatKind::ratio: std::snprintf(buf, sizeof(buf), "%.2f%%", 100.0 * s.number); break;
       case StatKind::seconds: std::snprintf(buf, sizeof(buf), "%.3f s", s.number); break;
-      case StatKind::bytes: std::snprintf(buf, sizeof(buf), "%.2f MiB", s.number / (1024.0 * 1024.0)); break;
+      case StatKind::bytes:
+        if (s.number >= 1024.0 * 1024.0)
+          std::snprintf(buf, sizeof(buf), "%.2f MiB", s.number / (1024.0 * 1024.0));
+        else
+          std::snprintf(buf, sizeof(buf), "%.0f bytes", s.number);
+        break;
       case StatKind::histogram: std::snprintf(buf, sizeof(buf), "%zu bins, %.0f total", s.bins.size(), s.number); break;
       case StatKind::text: std::snprintf(buf, sizeof(buf), "%s", s.text.c_str()); break;
     }
