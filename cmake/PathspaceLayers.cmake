@@ -14,7 +14,7 @@
 # Adding a folder to src/pathspace/ means adding it here; the check fails on a folder found nowhere.
 # This file must stay usable in script mode (cmake -P): no targets, no project() variables.
 
-set(PATHSPACE_LAYERS base geometry scene accel io integrators session study)
+set(PATHSPACE_LAYERS base geometry scene accel io integrators session checkpoint study)
 
 set(PATHSPACE_LAYER_base_FOLDERS        base math parallel options stats)
 set(PATHSPACE_LAYER_base_BELOW          "")
@@ -31,6 +31,9 @@ set(PATHSPACE_LAYER_integrators_FOLDERS filters integrators)
 set(PATHSPACE_LAYER_integrators_BELOW   accel)
 set(PATHSPACE_LAYER_session_FOLDERS     session)
 set(PATHSPACE_LAYER_session_BELOW       integrators)
+# checkpoint: a session's state in a file (session's state, io's atomic writes).
+set(PATHSPACE_LAYER_checkpoint_FOLDERS  checkpoint)
+set(PATHSPACE_LAYER_checkpoint_BELOW    session io)
 set(PATHSPACE_LAYER_study_FOLDERS       study)
 set(PATHSPACE_LAYER_study_BELOW         session io)
 

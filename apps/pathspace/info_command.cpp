@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/options/option_parse.h"
@@ -123,18 +124,41 @@ void print_registry() {
   }
 }
 
+// `pathspace info FILE`: the checkpoint's header, after checking the whole file.
+void print_checkpoint(const std::string& path, bool json) {
+  const CheckpointInfo info = read_checkpoint(path).info;
+  if (json) {
+    fmt::print("{}", checkpoint_header_json(info));
+    return;
+  }
+  fmt::print("checkpoint {} (format version {}, written by pathspace {})\n", path, info.format_version, info.pathspace_version);
+  fmt::print("  scene        {} ({})\n", info.scene, info.scene_hash);
+  fmt::print("  integrator   {}\n  filter       {}\n", info.integrator, info.filter);
+  fmt::print("  image        {}x{}, seed {}\n", info.width, info.height, info.seed);
+  fmt::print("  passes       {} (samples per pixel; iterations for sppm and pclt)\n", info.passes);
+  fmt::print("  paths        {}\n  time spent   {:.2f} s\n", info.paths, info.seconds);
+  fmt::print("  options that change the image (fixed on --resume):\n");
+  for (const auto& [name, value] : info.options)
+    fmt::print("    {:<28} {}\n", name == "scene" ? name : "--" + name, value.empty() ? "(not given)" : value);
+}
+
 }  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
   CLI::App* cmd = app.add_subcommand("info", "List built-in scenes, integrators, filters and the build");
   cmd->add_flag("--scenes", options->scenes, "List the built-in scenes (name and id)");
   cmd->add_flag("--integrators", options->integrators, "List the integrators and filters with their options");
-  cmd->add_flag("--json", options->json, "With --integrators: print the integrator and filter table as JSON");
+  cmd->add_option("checkpoint", options->checkpoint, "A checkpoint file (render --checkpoint): print what it holds")->check(CLI::ExistingFile);
+  cmd->add_flag("--json", options->json, "With --integrators: print the integrator and filter table as JSON; with a checkpoint: its header");
   cmd->add_flag("--markdown", options->markdown, "With --integrators: print the table as the Markdown of docs/cli.md");
   return cmd;
 }
 
 int run_info_command(const InfoOptions& options) {
+  if (!options.checkpoint.empty()) {
+    print_checkpoint(options.checkpoint, options.json);
+    return 0;
+  }
   if (options.markdown) {
     fmt::print("{}", registry_markdown());
     return 0;

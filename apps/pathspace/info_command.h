@@ -1,6 +1,8 @@
 // `pathspace info`: lists the built-in scenes, the integrators and filters with their options (from
-// the registry, as text or --json for tools), and the build.
+// the registry, as text or --json for tools), the build, and what a checkpoint file holds.
 #pragma once
+
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -11,6 +13,7 @@ struct InfoOptions {
   bool integrators = false;
   bool json = false;
   bool markdown = false;
+  std::string checkpoint;  // a checkpoint file to describe (render --checkpoint)
 };
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options);

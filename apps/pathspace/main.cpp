@@ -47,9 +47,12 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     if (render_cmd->parsed()) {
       command = "pathspace render";
-      return run_render_command(render_options);
+      return run_render_command(render_options, *render_cmd);
     }
-    if (info_cmd->parsed()) return run_info_command(info_options);
+    if (info_cmd->parsed()) {
+      command = "pathspace info";
+      return run_info_command(info_options);
+    }
     if (compare_cmd->parsed()) {
       command = "pathspace compare";
       return run_compare_command(compare_options);

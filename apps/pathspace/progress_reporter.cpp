@@ -31,7 +31,7 @@ void ProgressReporter::update(const RenderProgress& p) {
   const std::string numbers =
       fmt::format("{:5.1f}%  {} elapsed, ETA {}  {:.3g} Msamples/s  {:.1f} Mrays/s  ({} spp)", percent,
                   format_duration(p.elapsed_s), format_duration(eta), samples_per_s * 1e-6, mrays_per_s,
-                  p.passes_done);
+                  p.session_passes);
   if (tty_) {
     constexpr int kBarWidth = 30;
     const int filled = std::clamp(static_cast<int>(p.fraction * kBarWidth + 0.5), 0, kBarWidth);

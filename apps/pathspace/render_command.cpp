@@ -1,13 +1,17 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/session/render.h"
@@ -15,8 +19,12 @@
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/parallel/background_job.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "interrupt_handler.h"
 #include "progress_reporter.h"
+#include "render_outputs.h"
+#include "render_resume.h"
 #include "render_stats_json.h"
 #include "usage_error.h"
 
@@ -86,6 +94,37 @@ std::vector<std::string> filter_choices() {
   return names;
 }
 
+// Throws UsageError when two outputs name one file, or an output names an input (the scene file;
+// the resumed checkpoint, except as the new checkpoint, which replaces it atomically).
+void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs, const std::string& scene_file,
+                          const std::string& resume) {
+  namespace fs = std::filesystem;
+  auto same = [](const std::string& a, const std::string& b) {
+    std::error_code ec1, ec2;
+    return fs::weakly_canonical(fs::absolute(a, ec1), ec1) == fs::weakly_canonical(fs::absolute(b, ec2), ec2);
+  };
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    for (size_t j = i + 1; j < outputs.size(); ++j)
+      if (same(outputs[i].second, outputs[j].second))
+        throw UsageError(outputs[i].first + " and " + outputs[j].first + " both name '" + outputs[j].second + "'");
+    if (!scene_file.empty() && same(outputs[i].second, scene_file))
+      throw UsageError(outputs[i].first + " '" + outputs[i].second + "' would overwrite the scene file");
+    if (!resume.empty() && outputs[i].first != "--checkpoint" && same(outputs[i].second, resume))
+      throw UsageError(outputs[i].first + " '" + outputs[i].second + "' would overwrite the checkpoint being resumed");
+  }
+}
+
+void check_image_path(const std::string& path) {
+  try {
+    image_format_from_path(path);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  check_output_writable(path);
+}
+
+const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal"; }
+
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
@@ -98,10 +137,6 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--filter", o->filter, "Path space filter of the selected vertices (with an integrator that composes with it)")
       ->check(CLI::IsMember(filter_choices()))
       ->capture_default_str();
-  CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16)")->check(CLI::Range(1u, 1u << 24));
-  cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp")
-      ->check(CLI::Range(1e-3, 1e7))
-      ->excludes(spp);
   cmd->add_option("-r,--resolution", o->resolution, "Image size WxH (default 512x512, or the scene file's)");
   cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
   cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
@@ -114,20 +149,54 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
-  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
-  cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)");
-  cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file");
-  cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)");
-  cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
   cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
       ->check(CLI::IsMember({"uniform", "power"}))
       ->capture_default_str();
+  // What does not change the image: free to change when a render is resumed (render_resume.h).
+  CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16; with --resume: in total)")
+                         ->check(CLI::Range(1u, 1u << 24))
+                         ->group(kRunOptionsGroup);
+  cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp; with --resume: this many more")
+      ->check(CLI::Range(1e-3, 1e7))
+      ->excludes(spp)
+      ->group(kRunOptionsGroup);
+  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str()->group(kRunOptionsGroup);
+  cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)")->group(kRunOptionsGroup);
+  cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file")->group(kRunOptionsGroup);
+  cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)")
+      ->group(kRunOptionsGroup);
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress output")->group(kRunOptionsGroup);
+  CLI::Option* checkpoint = cmd->add_option("--checkpoint", o->checkpoint,
+                                            "Save the render's state to this file when it ends or is interrupted (it may name the --resume file)")
+                                ->group(kRunOptionsGroup);
+  cmd->add_option("--checkpoint-every", o->checkpoint_every, "Also save the checkpoint every S seconds while rendering (between passes)")
+      ->check(CLI::Range(1e-3, 1e9))
+      ->needs(checkpoint)
+      ->group(kRunOptionsGroup);
+  cmd->add_option("--resume", o->resume, "Continue the render saved in this checkpoint (--spp: to N in total; --time: S more seconds)")
+      ->group(kRunOptionsGroup);
+  cmd->add_option("--write-every", o->write_every, "Write the outputs every S seconds while rendering (between passes)")
+      ->check(CLI::Range(1e-3, 1e9))
+      ->group(kRunOptionsGroup);
   o->registry.add_to(cmd);
   return cmd;
 }
 
-int run_render_command(const RenderOptions& o) {
-  // Validate everything before the (possibly long) render.
+namespace {
+
+// A scene, loaded or built, with what the render needs to know about it.
+struct PreparedScene {
+  Scene scene;
+  std::string label;         // the built-in's name or the file's path
+  std::string display_name;  // the built-in's name or the file's stem
+  std::string id;            // the built-in's id or the file's path (progress line)
+  std::string key;           // "builtin:NAME" or the file's content hash (checkpoints)
+  std::string file;          // the scene file, or empty
+  int file_spp = 0;          // the file's samples per pixel, 0: none
+};
+
+PreparedScene prepare_scene(const RenderOptions& o) {
+  PreparedScene p;
   const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
   const bool from_file = names_scene_file(scene_name);
   const BuiltinSceneInfo* info = from_file ? nullptr : find_builtin_scene(scene_name);
@@ -141,78 +210,156 @@ int run_render_command(const RenderOptions& o) {
   if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
                      o.substitute_missing_textures))
     throw UsageError("--camera-pos, --camera-target, --camera-up, --fov and --substitute-missing-textures apply to scene files only");
-  Resolution res = parse_resolution(o.resolution);
+  const Resolution res = parse_resolution(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
-  const RenderConfig config = render_config(o);
-  const std::string display_name = from_file ? std::filesystem::path(scene_name).stem().string() : info->name;
-  const std::vector<std::string> outputs = output_paths(o, display_name);
-  for (const std::string& path : outputs) {
-    try {
-      image_format_from_path(path);
-    } catch (const Error& e) {
-      throw UsageError(e.what());
-    }
-    check_output_writable(path);
-  }
-  if (!o.stats_path.empty()) check_output_writable(o.stats_path);
-  if (!o.variance_path.empty()) {
-    try {
-      image_format_from_path(o.variance_path);
-    } catch (const Error& e) {
-      throw UsageError(e.what());
-    }
-    check_output_writable(o.variance_path);
-  }
-
-  SceneFileSettings file_settings;
-  Scene scene;
   if (from_file) {
+    p.label = p.id = p.file = scene_name;
+    p.display_name = std::filesystem::path(scene_name).stem().string();
+    p.key = scene_file_hash(scene_name);
     std::vector<std::string> warnings;
-    scene = load_scene(scene_name, load_options, &warnings, &file_settings);
+    SceneFileSettings file_settings;
+    p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
     for (const std::string& w : warnings) fmt::print(stderr, "{}\n", w);
-    res.width = scene.camera.width;
-    res.height = scene.camera.height;
+    p.file_spp = file_settings.spp;
   } else {
-    scene = make_builtin_scene(info->name, res.width, res.height);
+    p.label = p.display_name = info->name;
+    p.id = info->id;
+    p.key = std::string("builtin:") + info->name;
+    p.scene = make_builtin_scene(info->name, res.width, res.height);
   }
   if (o.lens_radius >= 0.f || o.focus_distance > 0.f) {
-    const PerspectiveCamera& c = scene.camera;
+    const PerspectiveCamera& c = p.scene.camera;
     const float radius = o.lens_radius >= 0.f ? o.lens_radius : c.lens_radius;
     const float focus = o.focus_distance > 0.f ? o.focus_distance : (c.is_pinhole() ? 0.f : c.focus_distance);
     if (radius > 0.f && !(focus > 0.f))
       throw UsageError("--lens-radius needs --focus-distance: the scene's camera is a pinhole and has no focus distance");
     if (!(radius > 0.f) && o.focus_distance > 0.f) throw UsageError("--focus-distance needs a thin lens: give --lens-radius too");
-    if (!set_thin_lens(&scene.camera, radius, focus)) throw UsageError("invalid --lens-radius or --focus-distance");
+    if (!set_thin_lens(&p.scene.camera, radius, focus)) throw UsageError("invalid --lens-radius or --focus-distance");
   }
-  scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
-  scene.finalize();
-  RenderSession session(std::move(scene), config);
-  const uint32_t spp = o.spp > 0 ? o.spp : (file_settings.spp > 0 ? uint32_t(file_settings.spp) : 16);
-  const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(spp);
-  ProgressReporter progress(stdout, uint64_t(res.width) * uint64_t(res.height), o.quiet);
-  if (!o.quiet) fmt::print("pathspace: {} ({}), {}x{}, {}\n", display_name, from_file ? scene_name : info->id, res.width, res.height, o.integrator);
-  session.run(limit, [&](const RenderProgress& p) { progress.update(p); });
-  progress.finish();
-  const RenderSnapshot result = session.snapshot();
-  const RenderStats& stats = result.stats;
+  p.scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
+  p.scene.finalize();
+  return p;
+}
 
-  for (const std::string& path : outputs) write_image(path, result.mean);
-  std::vector<std::string> written = outputs;
-  if (!o.variance_path.empty()) {
-    write_image(o.variance_path, result.variance);
-    written.push_back(o.variance_path);
+// The render itself: `resumed` is the checkpoint being continued, or null.
+int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resumed) {
+  // Validate everything before the (possibly long) render.
+  const RenderConfig config = render_config(o);
+  if (resumed && o.spp == 0 && o.time_s <= 0.0)
+    throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
+  const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
+  const bool from_file = names_scene_file(scene_name);
+  const BuiltinSceneInfo* builtin = from_file ? nullptr : find_builtin_scene(scene_name);
+  if (!from_file && !builtin) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
+  OutputPlan plan;
+  plan.images = output_paths(o, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
+  plan.variance = o.variance_path;
+  plan.stats = o.stats_path;
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const std::string& path : plan.images) files.emplace_back("-o", path), check_image_path(path);
+  if (!plan.variance.empty()) files.emplace_back("--variance-out", plan.variance), check_image_path(plan.variance);
+  if (!plan.stats.empty()) files.emplace_back("--stats", plan.stats), check_output_writable(plan.stats);
+  if (!o.checkpoint.empty()) files.emplace_back("--checkpoint", o.checkpoint), check_output_writable(o.checkpoint);
+  check_distinct_files(files, from_file ? scene_name : std::string(), o.resume);
+
+  InterruptHandler interrupt;
+  PreparedScene prepared = prepare_scene(o);
+  const auto image_options = canonical_image_options(cmd, prepared.key, config);
+  if (resumed) check_resume_options(resumed->info, image_options);
+  const int width = prepared.scene.camera.width, height = prepared.scene.camera.height;
+  CheckpointInfo checkpoint_info;
+  checkpoint_info.scene = prepared.label;
+  checkpoint_info.scene_hash = prepared.key;
+  checkpoint_info.integrator = config.integrator;
+  checkpoint_info.filter = config.filter.name;
+  checkpoint_info.width = width;
+  checkpoint_info.height = height;
+  checkpoint_info.seed = config.seed;
+  checkpoint_info.options = image_options;
+  checkpoint_info.given = given_image_options(cmd);
+  auto checkpoint_of = [&](const RenderSession& s) {
+    CheckpointInfo info = checkpoint_info;
+    const RenderStats st = s.stats();
+    info.passes = st.spp;
+    info.seconds = st.wall_s;
+    info.paths = st.paths;
+    return info;
+  };
+
+  const int file_spp = prepared.file_spp;
+  const std::string display_name = prepared.display_name, id = prepared.id;
+  RenderSession session(std::move(prepared.scene), config);
+  if (resumed) session.restore_state(resumed->state);
+  const uint32_t done = session.passes_done();
+  const uint32_t spp = o.spp > 0 ? o.spp : (file_spp > 0 ? uint32_t(file_spp) : 16);
+  if (resumed && o.time_s <= 0.0 && spp < done)
+    throw UsageError(fmt::format("--spp {}: the checkpoint holds {} samples per pixel already", spp, done),
+                     "--spp is the total with --resume; give at least " + std::to_string(done));
+  const uint32_t passes = resumed ? spp - done : spp;
+  plan.run = RenderRunInfo{display_name, width, height, 0, ""};
+  const std::string* depth = o.registry.given().find("max-depth");
+  plan.run.max_segments = depth ? std::stoi(*depth) : session.scene().max_path_segments;
+
+  ProgressReporter progress(stdout, uint64_t(width) * uint64_t(height), o.quiet);
+  if (!o.quiet) {
+    fmt::print("pathspace: {} ({}), {}x{}, {}", display_name, id, width, height, o.integrator);
+    if (resumed) fmt::print(", resumed from {} at {} passes", o.resume, done);
+    fmt::print("\n");
   }
-  for (const NamedImage& aov : result.aovs) {
-    const std::filesystem::path first(outputs.front());
-    const std::string path = (first.parent_path() / (first.stem().string() + ".aov-" + aov.name + ".exr")).string();
-    write_image(path, aov.image);
-    written.push_back(path);
+  // Periodic writes run on their own threads; a write that is still going when the next is due is
+  // skipped, so the render never waits for the disk. Their errors become warnings.
+  using Clock = std::chrono::steady_clock;
+  BackgroundJob output_job, checkpoint_job;
+  Clock::time_point last_output = Clock::now(), last_checkpoint = Clock::now();
+  auto due = [](Clock::time_point& last, double every) {
+    if (every <= 0.0 || std::chrono::duration<double>(Clock::now() - last).count() < every) return false;
+    last = Clock::now();
+    return true;
+  };
+  auto warn = [](const char* what, const std::exception& e) { fmt::print(stderr, "pathspace render: warning: {}: {}\n", what, e.what()); };
+  interrupt.watch(&session);
+  if (passes > 0 || o.time_s > 0.0) {
+    const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
+    session.run(limit, [&](const RenderProgress& p) {
+      progress.update(p);
+      if (due(last_output, o.write_every) && !output_job.busy())
+        output_job.start([&plan, &warn, snap = session.snapshot()] {
+          try {
+            write_outputs(plan, snap);
+          } catch (const std::exception& e) {
+            warn("periodic output write failed", e);
+          }
+        });
+      if (due(last_checkpoint, o.checkpoint_every) && !checkpoint_job.busy())
+        checkpoint_job.start([&o, &warn, info = checkpoint_of(session), state = session.save_state()] {
+          try {
+            write_checkpoint(o.checkpoint, info, state);
+          } catch (const std::exception& e) {
+            warn("periodic checkpoint failed", e);
+          }
+        });
+    });
   }
-  const OptionValues given = o.registry.given();
-  const std::string* depth = given.find("max-depth");
-  RenderRunInfo run{display_name, res.width, res.height, depth ? std::stoi(*depth) : session.scene().max_path_segments,
-                    fmt::format("{}", fmt::join(written, ","))};
-  if (!o.stats_path.empty()) write_text_file(o.stats_path, render_stats_json(stats, run));
+  interrupt.watch(nullptr);
+  progress.finish();
+  output_job.wait();
+  checkpoint_job.wait();
+
+  if (interrupt.signal() != 0 && session.passes_done() == 0) {
+    fmt::print(stderr, "pathspace render: interrupted by {} before the first pass; nothing written\n", signal_name(interrupt.signal()));
+    return interrupt.exit_code();
+  }
+  // The outputs and the checkpoint as one set: they always hold the same passes.
+  const RenderSnapshot result = session.snapshot();
+  ExtraOutput checkpoint;
+  if (!o.checkpoint.empty()) checkpoint = {o.checkpoint, encode_checkpoint(checkpoint_of(session), session.save_state())};
+  const std::vector<std::string> written = write_outputs(plan, result, o.checkpoint.empty() ? nullptr : &checkpoint);
+  const RenderStats& stats = result.stats;
+  if (interrupt.signal() != 0) {
+    fmt::print(stderr, "pathspace render: interrupted by {} after {} passes ({} in this run); wrote {}\n", signal_name(interrupt.signal()),
+               stats.spp, stats.spp - done, fmt::join(written, ", "));
+    return interrupt.exit_code();
+  }
   if (!o.quiet) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
@@ -220,6 +367,27 @@ int run_render_command(const RenderOptions& o) {
     fmt::print("\n{}wrote {}\n", format_statistics(stats.details), fmt::join(written, ", "));
   }
   return 0;
+}
+
+}  // namespace
+
+int run_render_command(const RenderOptions& o, const CLI::App& cmd) {
+  if (o.resume.empty()) return render(o, cmd, nullptr);
+  const Checkpoint checkpoint = read_checkpoint(o.resume);
+  // The integrator and filter first: the checkpoint's other options may not apply to another one.
+  for (const auto& [option, given, then] : {std::tuple{"integrator", o.integrator, checkpoint.info.integrator},
+                                            std::tuple{"filter", o.filter, checkpoint.info.filter}})
+    if (cmd.get_option("--" + std::string(option))->count() > 0 && given != then)
+      throw UsageError(fmt::format("--resume: --{} was '{}' in the checkpoint, this render gives '{}'", option, then, given),
+                       "options that change the image cannot change on resume; leave them out to keep the checkpoint's");
+  // Parse again with the checkpoint's image options filling in what this command line leaves out.
+  std::vector<std::string> args = resume_arguments(cmd, checkpoint.info.given);
+  CLI::App app;
+  RenderOptions merged;
+  CLI::App* merged_cmd = add_render_command(app, &merged);
+  std::reverse(args.begin(), args.end());  // CLI11 takes a vector of arguments last first
+  app.parse(args);
+  return render(merged, *merged_cmd, &checkpoint);
 }
 
 }  // namespace pathspace::cli

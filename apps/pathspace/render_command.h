@@ -29,6 +29,11 @@ struct RenderOptions {
   std::string stats_path;
   std::string variance_path;  // variance-of-the-mean image
   bool quiet = false;
+  // Checkpoints and interruption (docs/cli.md, "Checkpoints").
+  std::string checkpoint;         // --checkpoint FILE: the render's state, at the end and when interrupted
+  double checkpoint_every = 0.0;  // seconds between checkpoints while rendering; 0: at the end only
+  std::string resume;             // --resume FILE: continue the render saved there
+  double write_every = 0.0;       // seconds between output writes while rendering; 0: at the end only
   std::string light_selection = "uniform";
   std::string filter = "none";  // path space filter (filters/filter_registry.h)
   // The integrators' and filters' own options, from the registry.
@@ -37,7 +42,9 @@ struct RenderOptions {
 
 // Adds the `render` subcommand to app; the options are stored in *options.
 CLI::App* add_render_command(CLI::App& app, RenderOptions* options);
-// Runs the command. Throws UsageError for invalid options, pathspace::Error for failures.
-int run_render_command(const RenderOptions& options);
+// Runs the command parsed by `cmd` (the subcommand add_render_command returned). Returns the exit
+// status (0, or 128 + signal when interrupted). Throws UsageError for invalid options,
+// pathspace::Error for failures.
+int run_render_command(const RenderOptions& options, const CLI::App& cmd);
 
 }  // namespace pathspace::cli

@@ -1,9 +1,12 @@
 #include "pathspace/io/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +18,41 @@ namespace pathspace {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Temporary files being written, where a signal handler can find them: fixed slots of fixed-size
+// names (no allocation in the handler). A slot is claimed with `state` 0 -> 1, filled, published
+// with 1 -> 2; the handler unlinks the names of published slots.
+constexpr size_t kSlots = 64;
+constexpr size_t kNameBytes = 4096;
+struct TempSlot {
+  std::atomic<int> state{0};
+  char name[kNameBytes];
+};
+std::array<TempSlot, kSlots> g_temps;
+
+// Lists `temp` (when it fits) for remove_unfinished_temporaries while in scope.
+class ListedTemporary {
+ public:
+  explicit ListedTemporary(const std::string& temp) {
+    if (temp.size() >= kNameBytes) return;
+    for (TempSlot& s : g_temps) {
+      int expected = 0;
+      if (!s.state.compare_exchange_strong(expected, 1)) continue;
+      std::memcpy(s.name, temp.c_str(), temp.size() + 1);
+      s.state.store(2);
+      slot_ = &s;
+      return;
+    }
+  }
+  ~ListedTemporary() {
+    if (slot_) slot_->state.store(0);
+  }
+  ListedTemporary(const ListedTemporary&) = delete;
+  ListedTemporary& operator=(const ListedTemporary&) = delete;
+
+ private:
+  TempSlot* slot_ = nullptr;
+};
 
 // A name next to `path` that no other writer (thread or process) uses.
 std::string temporary_name(const std::string& path) {
@@ -31,18 +69,27 @@ void check_parent_folder(const std::string& path) {
   if (!fs::is_directory(st)) throw Error("cannot write '" + path + "': '" + parent.string() + "' is not a folder");
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+void check_target(const std::string& path) {
   if (path.empty()) throw Error("empty output file name");
   check_parent_folder(path);
   if (fs::is_directory(path)) throw Error("cannot write '" + path + "': it is a folder");
+}
+
+void rename_into_place(const std::string& temp, const std::string& path) {
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) throw Error("cannot write '" + path + "': " + ec.message());
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+  check_target(path);
   const std::string temp = temporary_name(path);
+  const ListedTemporary listed(temp);
   try {
     write(temp);
-    std::error_code ec;
-    fs::rename(temp, path, ec);
-    if (ec) throw Error("cannot write '" + path + "': " + ec.message());
+    rename_into_place(temp, path);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temp, ignored);
@@ -50,20 +97,26 @@ void write_file_atomically(const std::string& path, const std::function<void(con
   }
 }
 
+void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as) {
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (!f) throw Error(shown_as + ": cannot create temporary file '" + file + "': " + std::strerror(errno));
+  int err = 0;  // first errno seen
+  auto check = [&](bool ok) {
+    if (!ok && err == 0) err = errno ? errno : EIO;
+  };
+  check(size == 0 || std::fwrite(data, 1, size, f) == size);
+  check(std::fflush(f) == 0);
+  check(fsync(fileno(f)) == 0);
+  check(std::fclose(f) == 0);
+  if (err != 0) throw Error(shown_as + ": write failed: " + std::strerror(err));
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
-  write_file_atomically(path, [&](const std::string& temp) {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) throw Error("cannot write '" + path + "': write failed");
-  });
+  write_file_atomically(path, [&](const std::string& temp) { write_bytes_synced(temp, text.data(), text.size(), path); });
 }
 
 void check_output_writable(const std::string& path) {
-  if (path.empty()) throw Error("empty output file name");
-  check_parent_folder(path);
-  if (fs::is_directory(path)) throw Error("cannot write '" + path + "': it is a folder");
+  check_target(path);
   const std::string probe = temporary_name(path);
   std::ofstream out(probe, std::ios::binary);
   const int err = errno;
@@ -71,6 +124,49 @@ void check_output_writable(const std::string& path) {
   out.close();
   std::error_code ignored;
   fs::remove(probe, ignored);
+}
+
+struct OutputSet::Listed : ListedTemporary {
+  using ListedTemporary::ListedTemporary;
+};
+
+OutputSet::OutputSet() = default;
+
+OutputSet::~OutputSet() {
+  for (size_t i = committed_; i < temps_.size(); ++i) {
+    std::error_code ignored;
+    fs::remove(temps_[i], ignored);
+  }
+}
+
+void OutputSet::add(const std::string& path, const void* data, size_t size) {
+  check_target(path);
+  for (const std::string& p : paths_)
+    if (p == path) throw Error("cannot write '" + path + "' twice in one set of outputs");
+  const std::string temp = temporary_name(path);
+  auto listed = std::make_unique<Listed>(temp);
+  try {
+    write_bytes_synced(temp, data, size, path);
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw;
+  }
+  paths_.push_back(path);
+  temps_.push_back(temp);
+  listed_.push_back(std::move(listed));
+}
+
+void OutputSet::commit() {
+  for (; committed_ < temps_.size(); ++committed_) {
+    rename_into_place(temps_[committed_], paths_[committed_]);
+    listed_[committed_].reset();
+  }
+}
+
+void remove_unfinished_temporaries() noexcept {
+  for (TempSlot& s : g_temps)
+    if (s.state.load() == 2) ::unlink(s.name);
 }
 
 }  // namespace pathspace

@@ -66,19 +66,6 @@ std::string lower_extension(const std::string& path) {
 
 // ---- writing ---------------------------------------------------------------------------------
 
-// Writes bytes to the temporary file given by write_file_atomically, checking every step; fsync so
-// that after a crash the renamed file is never an empty or partial one.
-void write_bytes(const std::string& path, const std::string& temp, const std::string& bytes) {
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) fail(path, "cannot create temporary file '" + temp + "': " + std::strerror(errno));
-  int err = 0;  // first errno seen
-  auto check = [&](bool ok) { if (!ok && err == 0) err = errno ? errno : EIO; };
-  check(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
-  check(std::fflush(f) == 0);
-  check(fsync(fileno(f)) == 0);
-  check(std::fclose(f) == 0);
-  if (err != 0) fail(path, std::string("write failed: ") + std::strerror(err));
-}
 
 std::string encode_exr(const Image& image) {
   Imf::Header header(image.width, image.height);
@@ -306,26 +293,30 @@ ImageFormat image_format_from_path(const std::string& path) {
   fail(path, "unsupported image extension '" + ext + "' (supported: .exr, .pfm, .png)");
 }
 
-void write_image(const std::string& path, const Image& image) {
+std::string encode_image(const std::string& path, const Image& image) {
   const ImageFormat format = image_format_from_path(path);
   if (image.width <= 0 || image.height <= 0)
     fail(path, fmt::format("cannot write an empty image ({}x{})", image.width, image.height));
   if (image.pixels.size() != size_t(image.width) * size_t(image.height))
     fail(path, "pixel count does not match the image size");
-  std::string bytes;
   try {
     switch (format) {
-      case ImageFormat::exr: bytes = encode_exr(image); break;
-      case ImageFormat::pfm: bytes = encode_pfm(image); break;
-      case ImageFormat::png: bytes = encode_png(path, image); break;
+      case ImageFormat::exr: return encode_exr(image);
+      case ImageFormat::pfm: return encode_pfm(image);
+      case ImageFormat::png: return encode_png(path, image);
     }
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
     fail(path, std::string("encoding failed: ") + e.what());
   }
+  fail(path, "unknown image format");
+}
+
+void write_image(const std::string& path, const Image& image) {
+  const std::string bytes = encode_image(path, image);
   // Temporary file next to the target, renamed into place; removed on any failure.
-  write_file_atomically(path, [&](const std::string& temp) { write_bytes(path, temp, bytes); });
+  write_file_atomically(path, [&](const std::string& temp) { write_bytes_synced(temp, bytes.data(), bytes.size(), path); });
 }
 
 Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file(path), ldr); }

@@ -16,6 +16,8 @@ enum class ImageFormat { exr, pfm, png };
 ImageFormat image_format_from_path(const std::string& path);
 
 void write_image(const std::string& path, const Image& image);
+// The bytes write_image would write (for OutputSet, io/atomic_file.h).
+std::string encode_image(const std::string& path, const Image& image);
 // How 8- and 16-bit files are turned into linear floats: sRGB-decoded (colour images), or v / max
 // (textures that hold linear data, e.g. pbrt's encoding "linear"). Float formats are always linear.
 enum class LdrEncoding { srgb, linear };

@@ -117,7 +117,14 @@ class OptionTable {
   // fingerprint of the settings (a restored render must continue with the options it was made with).
   std::string describe(const Settings& settings) const {
     std::string out;
-    for (const Entry& e : entries_) out += (out.empty() ? "" : " ") + e.spec.name + "=" + e.text(settings);
+    for (const auto& [name, value] : values(settings)) out += (out.empty() ? "" : " ") + name + "=" + value;
+    return out;
+  }
+
+  // Every option's current value as the user would write it, by name, in table order.
+  std::vector<std::pair<std::string, std::string>> values(const Settings& settings) const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const Entry& e : entries_) out.emplace_back(e.spec.name, e.text(settings));
     return out;
   }
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <typeinfo>
+#include <utility>
 #include <vector>
 
 #include "pathspace/options/option_table.h"
@@ -21,6 +22,8 @@ struct SettingsSchema {
   std::function<void(const OptionValues&, std::any*)> apply;
   // The options' values in `settings` (the defaults when empty), OptionTable::describe.
   std::function<std::string(const std::any&)> describe;
+  // The same as (name, value) pairs, OptionTable::values.
+  std::function<std::vector<std::pair<std::string, std::string>>(const std::any&)> values;
 
   template <typename Settings>
   static SettingsSchema of(OptionTable<Settings> table) {
@@ -34,6 +37,9 @@ struct SettingsSchema {
     };
     schema.describe = [shared](const std::any& settings) {
       return shared->describe(settings.has_value() ? std::any_cast<const Settings&>(settings) : Settings{});
+    };
+    schema.values = [shared](const std::any& settings) {
+      return shared->values(settings.has_value() ? std::any_cast<const Settings&>(settings) : Settings{});
     };
     return schema;
   }

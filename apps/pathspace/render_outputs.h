@@ -1,0 +1,34 @@
+// The files of `pathspace render` (images, variance, debug images, --stats JSON), written from one
+// snapshot (and the checkpoint, when one is due) as one OutputSet (io/atomic_file.h): at any moment the folder holds the previous complete
+// set or the new one. Used for the final outputs and for --write-every.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pathspace/session/render_session.h"
+#include "render_stats_json.h"
+
+namespace pathspace::cli {
+
+struct OutputPlan {
+  std::vector<std::string> images;  // -o, at least one
+  std::string variance;             // --variance-out, or empty
+  std::string stats;                // --stats, or empty
+  RenderRunInfo run;                // for the stats JSON (its outputs are filled in)
+};
+
+// "out/a.exr" + "voxel" -> "out/a.aov-voxel.exr".
+std::string aov_path(const std::string& first_image, const std::string& aov);
+
+// A file written with the outputs, in the same set (the checkpoint).
+struct ExtraOutput {
+  std::string path;
+  std::vector<uint8_t> bytes;
+};
+
+// Writes every file of `plan` from `snapshot`, then `extra`, as one set; returns the paths written.
+std::vector<std::string> write_outputs(const OutputPlan& plan, const RenderSnapshot& snapshot, const ExtraOutput* extra = nullptr);
+
+}  // namespace pathspace::cli
