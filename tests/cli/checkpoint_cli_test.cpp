@@ -1,7 +1,8 @@
 // Checkpoints, resume and interruption of `pathspace render` (docs/cli.md, "Checkpoints"), with the
 // real binary:
 //  - 3 passes + checkpoint + resume to 8 equals 8 passes straight, byte for byte (image, variance),
-//    for pt, pt + hashed filter, lt, bpt, sppm and pclt, resumed at 1 and at 2 threads; and
+//    for pt, pt + hashed filter, pt + consistent filter (its radius follows the paths so far), lt, bpt,
+//    sppm and pclt, resumed at 1 and at 2 threads; and
 //    2 + 3 + 3 (resumed twice) too;
 //  - SIGINT to a running render (a real process): exit 130, the outputs, --stats and the checkpoint
 //    hold the same passes, the image equals a straight render of that many passes, and resuming it
@@ -128,6 +129,7 @@ TEST_P(ResumeEqualsStraight, ThreePlusFiveAndTwoPlusThreePlusThree) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, ResumeEqualsStraight,
                          ::testing::Values(ResumeCase{"pt", "-i pt"}, ResumeCase{"pt_hashed", "-i pt --filter hashed --psf-scale 4"},
+                                           ResumeCase{"pt_consistent", "-i pt --filter consistent --psf-iterations 2 --psf-batch-memory 0.01"},
                                            ResumeCase{"lt", "-i lt"}, ResumeCase{"bpt", "-i bpt"},
                                            ResumeCase{"sppm", "-i sppm --photons 2000"}, ResumeCase{"pclt", "-i pclt --pclt-light-paths 2000"}),
                          [](const ::testing::TestParamInfo<ResumeCase>& info) { return std::string(info.param.name); });

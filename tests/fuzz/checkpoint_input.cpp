@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "pathspace/checkpoint/checkpoint_file.h"
+#include "pathspace/filters/consistent_filter_settings.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/builtin_scenes.h"
@@ -25,6 +26,7 @@ std::vector<std::unique_ptr<RenderSession>>& sessions() {
       configs.push_back(c);
     }
     configs.push_back(with_filter(make_render_config("pt", PtSettings{}), "hashed", HashedFilterSettings{}));
+    configs.push_back(with_filter(make_render_config("pt", PtSettings{}), "consistent", ConsistentFilterSettings{}));
     std::vector<std::unique_ptr<RenderSession>> out;
     for (RenderConfig& c : configs) {
       c.threads = 1;

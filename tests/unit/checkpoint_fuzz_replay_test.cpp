@@ -24,7 +24,7 @@ TEST(FuzzCorpusCheckpoint, EveryFileRestoresOrFailsWithError) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_regular_file()) files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 12u) << "seed corpus missing in " << dir;
+  ASSERT_GE(files.size(), 14u) << "seed corpus missing in " << dir;
   int valid = 0;
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.filename().string());
@@ -48,7 +48,7 @@ TEST(FuzzCorpusCheckpoint, EveryFileRestoresOrFailsWithError) {
       EXPECT_FALSE(error.empty());
     }
   }
-  EXPECT_EQ(valid, 12) << "a checkpoint and a bare state for each of the six reference sessions";
+  EXPECT_EQ(valid, 14) << "a checkpoint and a bare state for each of the seven reference sessions";
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/filters/consistent_filter_settings.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/integrators/lt/lt_settings.h"
@@ -88,6 +89,7 @@ std::vector<Case> cases() {
   return {
       {"pt", threaded(make_render_config("pt", PtSettings{}, kSeed))},
       {"pt_hashed", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "hashed", hashed))},
+      {"pt_consistent", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "consistent", ConsistentFilterSettings{}))},
       {"lt", threaded(make_render_config("lt", LtSettings{}, kSeed))},
       {"bpt_strategy_images", threaded(make_render_config("bpt", bpt, kSeed))},
       {"sppm", threaded(make_render_config("sppm", SppmSettings{}, kSeed))},

@@ -8,22 +8,28 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'S', 'S', 'T', 'A', 'T', 'E', '1'};
 
+// resize + memcpy: GCC 12 warns falsely (-Wstringop-overflow) about vector::insert of a range here.
+void append(std::vector<uint8_t>* out, const void* data, size_t size) {
+  if (size == 0) return;
+  const size_t at = out->size();
+  out->resize(at + size);
+  std::memcpy(out->data() + at, data, size);
+}
+
 template <typename T>
 void append(std::vector<uint8_t>* out, const T& v) {
-  const auto* p = reinterpret_cast<const uint8_t*>(&v);
-  out->insert(out->end(), p, p + sizeof(T));
+  append(out, &v, sizeof(T));
 }
 
 }  // namespace
 
-StateWriter::StateWriter() { bytes_.insert(bytes_.end(), kMagic, kMagic + sizeof(kMagic)); }
+StateWriter::StateWriter() { append(&bytes_, kMagic, sizeof(kMagic)); }
 
 void StateWriter::put_bytes(std::string_view key, const void* data, size_t size) {
   append(&bytes_, uint32_t(key.size()));
-  bytes_.insert(bytes_.end(), key.begin(), key.end());
+  append(&bytes_, key.data(), key.size());
   append(&bytes_, uint64_t(size));
-  const auto* p = static_cast<const uint8_t*>(data);
-  if (size) bytes_.insert(bytes_.end(), p, p + size);
+  append(&bytes_, data, size);
 }
 
 StateReader::StateReader(const std::vector<uint8_t>& bytes) : bytes_(bytes) {

@@ -17,6 +17,8 @@ namespace pathspace {
 class StateWriter {
  public:
   StateWriter();
+  // Room for this many bytes in all, so that large sections are copied once.
+  void reserve(size_t bytes) { bytes_.reserve(bytes); }
   void put_bytes(std::string_view key, const void* data, size_t size);
   template <typename T>
   void put(std::string_view key, const T& value) {

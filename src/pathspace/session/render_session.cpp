@@ -143,6 +143,8 @@ RenderSnapshot RenderSession::snapshot() const {
 SessionState RenderSession::save_state() const {
   const ReaderLock lock(*this);
   StateWriter out;
+  // The film's sums, squares and counts are nearly all of it (plus a splat film for LT, BPT, PCLT).
+  out.reserve(film_.pixel_count() * (2 * 3 * sizeof(double) + sizeof(uint32_t)) * 2 + (size_t(1) << 16));
   out.put_string("session.integrator", config_.integrator);
   out.put_string("session.filter", config_.filter.name);
   out.put("session.seed", config_.seed);

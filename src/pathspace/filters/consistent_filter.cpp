@@ -1,0 +1,195 @@
+#include "pathspace/filters/consistent_filter.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/materials/bsdf_layers.h"
+#include "pathspace/parallel/parallel_for.h"
+
+namespace pathspace {
+
+namespace {
+
+
+size_t default_batch_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const size_t physical = pages > 0 && page > 0 ? size_t(pages) * size_t(page) : size_t(8) << 30;
+  return physical / 8;
+}
+
+bool finite(const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+
+// The binary weights of sec. 2.1, w_ij in {0, 1}. Vertices of other layers or other places in
+// their paths estimate other quantities and are never averaged.
+struct Similarity {
+  const VertexBuffer& b;
+  const ConsistentFilterSettings& s;
+
+  bool operator()(size_t i, size_t j) const {
+    if (b.layer[i] != b.layer[j] || b.selected[i] != b.selected[j]) return false;
+    if ((s.weights & kWeightNormal) && dot(b.shading_normal[i], b.shading_normal[j]) < s.normal_threshold) return false;
+    if (s.weights & kWeightAlbedo) {
+      const Rgb d = b.throughput[i] - b.throughput[j];
+      if (std::fabs(d.r) > s.albedo_threshold || std::fabs(d.g) > s.albedo_threshold || std::fabs(d.b) > s.albedo_threshold)
+        return false;
+      if (b.layer[i] != kLayerDiffuse && dot(b.incident[i], b.incident[j]) < s.direction_threshold) return false;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+ConsistentFilter::ConsistentFilter(const ConsistentFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels)
+    : settings_(settings),
+      pixels_(std::max<size_t>(1, pixels)),
+      // Solid angle of K x K pixels at the image centre, pi r0^2 / d^2 = K^2 A_pixel (sec. 2.2).
+      r0_per_distance_(settings.radius_pixels * std::sqrt(camera.pixel_area() / kPi)),
+      batch_bytes_(settings.batch_memory_mb > 0.0 ? size_t(settings.batch_memory_mb * 1048576.0) : default_batch_bytes()),
+      grid_(HashGridConfig{}) {}
+
+size_t ConsistentFilter::bytes_per_record() {
+  // The grid's records (and their compacted copy) and slots, the radius, the slot index and the two
+  // contribution arrays of the iteration.
+  return 2 * sizeof(GridRecord) + 2 * sizeof(GridSlot) + sizeof(float) + sizeof(uint32_t) + 2 * sizeof(Rgb);
+}
+
+void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
+  const auto start = std::chrono::steady_clock::now();
+  *filtered = buffer.contribution;  // every slot keeps its own value unless averaged below
+  const size_t paths = buffer.paths();
+  uint32_t max_neighbours = 0;
+  uint64_t vertices = 0;
+  if (stats_.switched_off_after == 0) {
+    const size_t per_batch = std::max<size_t>(1, batch_bytes_ / bytes_per_record());
+    std::vector<uint32_t> slots;
+    for (size_t p = 0; p < paths;) {
+      // Whole paths, as many as fit (at least one).
+      slots.clear();
+      size_t q = p;
+      for (; q < paths && (slots.empty() || slots.size() + buffer.count[q] <= per_batch); ++q)
+        for (int r = 0; r < buffer.count[q]; ++r) slots.push_back(uint32_t(buffer.slot(q, r)));
+      const double n = double(paths_so_far_ + q);  // paths so far, this batch included (eq. 2)
+      const double scale = std::pow(double(pixels_) / n, double(settings_.alpha));
+      filter_batch(buffer, slots, scale, filtered, &max_neighbours);
+      ++stats_.batches;
+      stats_.largest_batch = std::max<uint64_t>(stats_.largest_batch, slots.size());
+      stats_.radius_scale_last = scale;
+      vertices += slots.size();
+      p = q;
+    }
+  } else {
+    vertices = buffer.total_records();
+  }
+  paths_so_far_ += paths;
+  ++stats_.passes;
+  stats_.vertices += vertices;
+  if (stats_.switched_off_after == 0) {
+    stats_.max_neighbours_last = max_neighbours;
+    // Sec. 2.2: no ball holds more than its own vertex, so averaging has ended.
+    if (vertices > 0 && max_neighbours <= 1) stats_.switched_off_after = uint32_t(stats_.passes);
+  }
+  stats_.filter_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uint32_t>& slots, double radius_scale,
+                                    std::vector<Rgb>* filtered, uint32_t* max_neighbours) {
+  const size_t m = slots.size();
+  if (m == 0) return;
+  radius_.resize(m);
+  in_.resize(m);
+  out_.resize(m);
+  std::vector<float> valid_radii;
+  valid_radii.reserve(m);
+  for (size_t k = 0; k < m; ++k) {
+    const size_t i = slots[k];
+    const float d = b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]);
+    const float r0 = settings_.radius > 0.f ? settings_.radius : r0_per_distance_ * d;
+    const float r = float(double(r0) * radius_scale);
+    const bool usable = all_finite(b.position[i]) && std::isfinite(r) && r > 0.f;
+    radius_[k] = usable ? r : 0.f;
+    if (usable) valid_radii.push_back(r);
+    in_[k] = b.contribution[i];
+  }
+  if (valid_radii.empty()) return;
+  // Cells for the median radius: most queries visit 8 cells; larger balls visit more, still exactly.
+  std::nth_element(valid_radii.begin(), valid_radii.begin() + ptrdiff_t(valid_radii.size() / 2), valid_radii.end());
+  const float cell_radius = valid_radii[valid_radii.size() / 2];
+  const Vec3 nowhere(std::nanf(""), 0.f, 0.f);  // not linked: never found by a query
+  grid_.build(m, cell_radius, [&](size_t k) { return radius_[k] > 0.f ? b.position[slots[k]] : nowhere; });
+
+  const Similarity similar{b, settings_};
+  std::atomic<uint32_t> largest{0};
+  std::atomic<uint64_t> averaged{0};
+  for (int iteration = 0; iteration < std::max(1, settings_.iterations); ++iteration) {
+    parallel_for(m, 256, [&](size_t begin, size_t end) {
+      uint32_t local_largest = 0;
+      uint64_t local_averaged = 0;
+      for (size_t k = begin; k < end; ++k) {
+        const size_t i = slots[k];
+        if (radius_[k] <= 0.f || !finite(in_[k])) {
+          out_[k] = in_[k];
+          continue;
+        }
+        // Eq. 1 with binary weights: the mean over the similar vertices in the ball, x_i included.
+        double sum[3] = {0.0, 0.0, 0.0};
+        uint32_t count = 0;
+        grid_.for_each_in_radius(b.position[i], radius_[k], [&](const GridRecord& rec, float) {
+          const uint32_t j = rec.payload;
+          if (!finite(in_[j]) || !similar(i, slots[j])) return;
+          sum[0] += in_[j].r, sum[1] += in_[j].g, sum[2] += in_[j].b;
+          ++count;
+        });
+        if (count == 0) {  // the vertex itself was not in the grid (probe failure)
+          out_[k] = in_[k];
+          continue;
+        }
+        // Divided, not multiplied by 1 / count: the mean of equal values is then that value exactly.
+        out_[k] = Rgb(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
+        local_largest = std::max(local_largest, count);
+        local_averaged += count;
+      }
+      uint32_t seen = largest.load();
+      while (local_largest > seen && !largest.compare_exchange_weak(seen, local_largest)) {}
+      averaged += local_averaged;
+    });
+    in_.swap(out_);  // fig. 2: the next iteration averages the averages
+  }
+  for (size_t k = 0; k < m; ++k) (*filtered)[slots[k]] = in_[k];
+  *max_neighbours = std::max(*max_neighbours, largest.load());
+  stats_.averaged += averaged.load();
+}
+
+void ConsistentFilter::statistics(Statistics& out) const {
+  out.counter("consistent.passes", stats_.passes);
+  out.counter("consistent.batches", stats_.batches, "batches filtered (each averages over itself only)");
+  out.counter("consistent.vertices", stats_.vertices);
+  out.counter("consistent.paths", paths_so_far_, "n of eq. 2: paths so far, over all passes and resumed runs");
+  out.counter("consistent.largest_batch", stats_.largest_batch, "records in the largest batch");
+  out.bytes("consistent.batch_memory", batch_bytes_, "memory budget of one batch (--psf-batch-memory)");
+  out.value("consistent.radius_scale", stats_.radius_scale_last, "r(n) / r0 in the last batch (eq. 2)");
+  out.value("consistent.mean_neighbours", stats_.vertices ? double(stats_.averaged) / double(stats_.vertices) : 0.0,
+             "contributions averaged per vertex and iteration");
+  out.counter("consistent.max_neighbours_last", stats_.max_neighbours_last, "largest ball count in the last filtered pass");
+  out.counter("consistent.switched_off_after", stats_.switched_off_after,
+              "passes after which every ball held only its own vertex and filtering stopped (0: still filtering; sec. 2.2)");
+  out.seconds("consistent.filter_time", stats_.filter_ms * 1e-3);
+  out.value("consistent.filter_ns_per_vertex", stats_.vertices ? stats_.filter_ms * 1e6 / double(stats_.vertices) : 0.0);
+}
+
+void ConsistentFilter::save_state(StateWriter& out) const {
+  out.put("consistent.paths", paths_so_far_);
+  out.put("consistent.stats", stats_);
+}
+
+void ConsistentFilter::load_state(StateReader& in) {
+  in.get("consistent.paths", &paths_so_far_);
+  in.get("consistent.stats", &stats_);
+}
+
+}  // namespace pathspace

@@ -1,0 +1,75 @@
+// Consistent path space filtering (Keller, Dahm, Binder 2014): each selected vertex x_i gets the
+// average of the contributions of every vertex of its batch inside the ball B(n) around it (eq. 1),
+// weighted by binary similarity weights (sec. 2.1), with a radius r(n) = r0 / n^alpha that shrinks
+// with the total number n of paths so far (eq. 2), over all passes, batches and resumed renders. So
+// the filtered image converges to the unfiltered one and every artefact is transient.
+//
+// n and r0: r0 is the radius of a disk whose solid angle is that of K x K pixels at the length of
+// the camera path to x_i (sec. 2.2), i.e. the radius for one path per pixel, and n counts paths per
+// pixel: r(n) = r0 (P / N)^alpha with N paths so far and P pixels. This is eq. 2 with the paper's
+// r0 scaled by P^alpha, so that K keeps its meaning in pixels at any image size.
+//
+// Batches (sec. 2): the paths of a pass are filtered in consecutive batches as large as the memory
+// budget allows; every vertex averages over its own batch only. The range search is the project's
+// hash grid (hashgrid/), built over the batch's vertices with cells tied to the batch's median
+// radius; query and data points are the same set (sec. 2.2). Records are kept in cell order sorted
+// by index, so every sum has a fixed order: images are bit-identical for any thread count.
+//
+// Switch-off (sec. 2.2): once the largest number of averaged contributions in a pass is 1 (every
+// ball holds only its own vertex), filtering stops for good; the statistics say after which pass.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/camera/perspective_camera.h"
+#include "pathspace/filters/consistent_filter_settings.h"
+#include "pathspace/filters/path_space_filter.h"
+#include "pathspace/hashgrid/hash_grid.h"
+
+namespace pathspace {
+
+struct ConsistentFilterStats {
+  uint64_t passes = 0, batches = 0, vertices = 0;
+  uint64_t averaged = 0;        // contributions averaged, summed over vertices and iterations
+  uint64_t largest_batch = 0;   // records
+  uint32_t max_neighbours_last = 0;  // the largest number averaged by one vertex in the last pass
+  uint32_t switched_off_after = 0;   // pass count after which filtering stopped; 0: still filtering
+  double radius_scale_last = 1.0;    // r / r0 in the last batch
+  double filter_ms = 0.0;
+};
+
+class ConsistentFilter final : public PathSpaceFilter {
+ public:
+  ConsistentFilter(const ConsistentFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
+
+  const char* name() const override { return "consistent"; }
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void statistics(Statistics& out) const override;
+  void save_state(StateWriter& out) const override;
+  void load_state(StateReader& in) override;
+
+  const ConsistentFilterStats& stats() const { return stats_; }
+  // Paths filtered so far (the n of eq. 2, before the next pass).
+  uint64_t paths_so_far() const { return paths_so_far_; }
+  // Bytes one batch may use, and the records that fit (the batch size).
+  size_t batch_memory_bytes() const { return batch_bytes_; }
+  static size_t bytes_per_record();
+
+ private:
+  void filter_batch(const VertexBuffer& buffer, const std::vector<uint32_t>& slots, double radius_scale, std::vector<Rgb>* filtered,
+                    uint32_t* max_neighbours);
+
+  ConsistentFilterSettings settings_;
+  size_t pixels_;
+  float r0_per_distance_;  // r0 / d for the K x K pixel solid angle
+  size_t batch_bytes_;
+  uint64_t paths_so_far_ = 0;
+  ConsistentFilterStats stats_;
+  // Scratch, reused between batches.
+  HashGrid grid_;
+  std::vector<float> radius_;
+  std::vector<Rgb> in_, out_;
+};
+
+}  // namespace pathspace

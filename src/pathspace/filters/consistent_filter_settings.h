@@ -1,0 +1,26 @@
+// Options of the consistent path space filter (Keller, Dahm, Binder 2014) and their defaults.
+#pragma once
+
+#include <cstdint>
+
+namespace pathspace {
+
+// Binary similarity weights of sec. 2.1 (bit set: the weight is on).
+enum ConsistentWeight : uint32_t {
+  kWeightNormal = 1u << 0,  // <n_j, n_i> >= normal_threshold ("blur across geometry")
+  kWeightAlbedo = 1u << 1,  // similar stored attenuation, and on glossy layers similar directions ("blur across textures")
+};
+
+struct ConsistentFilterSettings {
+  float alpha = 0.25f;             // eq. 2: r(n) = r0 / n^alpha; "alpha = 1/4 is a robustly working choice" (sec. 2.2)
+  float radius_pixels = 3.f;       // r0 from the solid angle of K x K pixels at the camera path's length (sec. 2.2)
+  float radius = 0.f;              // > 0: r0 in scene units for every vertex instead
+  uint32_t weights = kWeightNormal | kWeightAlbedo;
+  float normal_threshold = 0.95f;  // sec. 2.1: "<n_j, n_i> >= 0.95 (in our implementation)"
+  float albedo_threshold = 0.05f;  // largest difference of the stored attenuation per channel
+  float direction_threshold = 0.9f;  // glossy layers: <wo_j, wo_i> at least this
+  int iterations = 1;              // iterated averaging, fig. 2
+  double batch_memory_mb = 0.0;    // memory for one batch's filtering; 0: an eighth of the physical memory
+};
+
+}  // namespace pathspace
