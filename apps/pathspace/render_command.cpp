@@ -325,7 +325,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
       if (due(last_output, o.write_every) && !output_job.busy())
         output_job.start([&plan, &warn, snap = session.snapshot()] {
           try {
-            write_outputs(plan, snap);
+            write_outputs(plan, snap, OutputKind::periodic);
           } catch (const std::exception& e) {
             warn("periodic output write failed", e);
           }
@@ -353,7 +353,8 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   const RenderSnapshot result = session.snapshot();
   ExtraOutput checkpoint;
   if (!o.checkpoint.empty()) checkpoint = {o.checkpoint, encode_checkpoint(checkpoint_of(session), session.save_state())};
-  const std::vector<std::string> written = write_outputs(plan, result, o.checkpoint.empty() ? nullptr : &checkpoint);
+  const std::vector<std::string> written =
+      write_outputs(plan, result, OutputKind::final, o.checkpoint.empty() ? nullptr : &checkpoint);
   const RenderStats& stats = result.stats;
   if (interrupt.signal() != 0) {
     fmt::print(stderr, "pathspace render: interrupted by {} after {} passes ({} in this run); wrote {}\n", signal_name(interrupt.signal()),
@@ -364,7 +365,11 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    fmt::print("\n{}wrote {}\n", format_statistics(stats.details), fmt::join(written, ", "));
+    fmt::print("\n{}", format_statistics(stats.details));
+    if (output_job.jobs_done() || checkpoint_job.jobs_done())
+      fmt::print("periodic writes: {} output sets, {} checkpoints, {:.2f} s of CPU on a background thread\n", output_job.jobs_done(),
+                 checkpoint_job.jobs_done(), output_job.cpu_seconds() + checkpoint_job.cpu_seconds());
+    fmt::print("wrote {}\n", fmt::join(written, ", "));
   }
   return 0;
 }

@@ -14,13 +14,15 @@ std::string aov_path(const std::string& first_image, const std::string& aov) {
   return (first.parent_path() / (first.stem().string() + ".aov-" + aov + ".exr")).string();
 }
 
-std::vector<std::string> write_outputs(const OutputPlan& plan, const RenderSnapshot& snapshot, const ExtraOutput* extra) {
+std::vector<std::string> write_outputs(const OutputPlan& plan, const RenderSnapshot& snapshot, OutputKind kind,
+                                       const ExtraOutput* extra) {
+  const ImageEncoding encoding = kind == OutputKind::periodic ? ImageEncoding::fast : ImageEncoding::compact;
   OutputSet set;
-  for (const std::string& path : plan.images) set.add(path, encode_image(path, snapshot.mean));
-  if (!plan.variance.empty()) set.add(plan.variance, encode_image(plan.variance, snapshot.variance));
+  for (const std::string& path : plan.images) set.add(path, encode_image(path, snapshot.mean, encoding));
+  if (!plan.variance.empty()) set.add(plan.variance, encode_image(plan.variance, snapshot.variance, encoding));
   for (const NamedImage& aov : snapshot.aovs) {
     const std::string path = aov_path(plan.images.front(), aov.name);
-    set.add(path, encode_image(path, aov.image));
+    set.add(path, encode_image(path, aov.image, encoding));
   }
   std::vector<std::string> written = set.paths();
   if (!plan.stats.empty()) {

@@ -19,6 +19,9 @@ struct OutputPlan {
   RenderRunInfo run;                // for the stats JSON (its outputs are filled in)
 };
 
+// Periodic sets are soon replaced: they are encoded fast (io/image_io.h, ImageEncoding).
+enum class OutputKind { final, periodic };
+
 // "out/a.exr" + "voxel" -> "out/a.aov-voxel.exr".
 std::string aov_path(const std::string& first_image, const std::string& aov);
 
@@ -29,6 +32,7 @@ struct ExtraOutput {
 };
 
 // Writes every file of `plan` from `snapshot`, then `extra`, as one set; returns the paths written.
-std::vector<std::string> write_outputs(const OutputPlan& plan, const RenderSnapshot& snapshot, const ExtraOutput* extra = nullptr);
+std::vector<std::string> write_outputs(const OutputPlan& plan, const RenderSnapshot& snapshot, OutputKind kind,
+                                       const ExtraOutput* extra = nullptr);
 
 }  // namespace pathspace::cli

@@ -29,23 +29,17 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "support/test_names.h"
+#include "cli_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using pathspace::testing::read_all;
 
 struct Result {
   int exit_code = -1;
   std::string out, err;
 };
-
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void write_bytes(const fs::path& p, const std::string& bytes) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
@@ -70,8 +64,8 @@ class Checkpoints : public ::testing::Test {
     const int status = std::system(cmd.c_str());
     Result r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_bytes(out);
-    r.err = read_bytes(err);
+    r.out = read_all(out);
+    r.err = read_all(err);
     fs::remove(out);
     fs::remove(err);
     return r;
@@ -80,7 +74,7 @@ class Checkpoints : public ::testing::Test {
     const Result r = run(args);
     ASSERT_EQ(r.exit_code, 0) << args << "\n" << r.err;
   }
-  std::string file(const std::string& name) const { return read_bytes(dir_ / name); }
+  std::string file(const std::string& name) const { return read_all(dir_ / name); }
   bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
   // Every file in the folder, for "nothing was written".
   std::vector<std::string> listing() const {
@@ -163,7 +157,7 @@ int interrupt_render(const fs::path& dir, const std::string& args, int sig) {
 }
 
 uint32_t checkpoint_passes(const fs::path& dir, const std::string& name) {
-  const std::string bytes = read_bytes(dir / name);
+  const std::string bytes = read_all(dir / name);
   const size_t start = bytes.find('{'), end = bytes.find("\n}\n");
   return nlohmann::json::parse(bytes.substr(start, end + 2 - start)).at("passes").get<uint32_t>();
 }
@@ -293,6 +287,16 @@ TEST_F(Checkpoints, ResumeNeedsATotalOrATime) {
   expect_same_files("a.exr", "b.exr");
   ok("render --resume a.ckpt -t 0.2 --quiet -o c.exr --checkpoint c.ckpt");
   EXPECT_GT(checkpoint_passes(dir_, "c.ckpt"), 3u);
+}
+
+TEST_F(Checkpoints, DebugImagesAreOfTheLastPassRenderedHere) {
+  ok(std::string("render ") + kScene + " --filter hashed --aov -s 2 -o a.exr --checkpoint a.ckpt");
+  EXPECT_TRUE(exists("a.aov-count.exr"));
+  ok("render --resume a.ckpt -s 2 --quiet -o b.exr");  // no new pass: no debug images to write
+  expect_same_files("a.exr", "b.exr");
+  EXPECT_FALSE(exists("b.aov-count.exr"));
+  ok("render --resume a.ckpt -s 3 --quiet -o c.exr");
+  EXPECT_TRUE(exists("c.aov-count.exr"));
 }
 
 }  // namespace

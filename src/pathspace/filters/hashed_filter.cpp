@@ -365,7 +365,9 @@ void HashedFilter::statistics(Statistics& out) const {
 }
 
 std::vector<NamedImage> HashedFilter::aovs() const {
-  if (!settings_.debug_images) return {};
+  // Nothing filtered by this object yet (a render resumed without a new pass): the debug images
+  // show the last pass, which a checkpoint does not hold.
+  if (!settings_.debug_images || first_slot_of_pixel_.empty()) return {};
   return {{"voxel", aov(FilterAov::voxel)},
           {"count", aov(FilterAov::count)},
           {"level", aov(FilterAov::level)},

@@ -46,11 +46,13 @@
 #define STBIW_ZLIB_COMPRESS pathspace_png_deflate
 #include <stb_image.h>
 #include <zlib.h>
+// The zlib level of the PNG being encoded on this thread (ImageEncoding: fast = Z_BEST_SPEED).
+static thread_local int pathspace_png_level = Z_DEFAULT_COMPRESSION;
 // stb frees the result with STBIW_FREE (free).
 static unsigned char* pathspace_png_deflate(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
   uLongf size = compressBound(uLong(data_len));
   auto* out = static_cast<unsigned char*>(malloc(size));
-  if (!out || compress2(out, &size, data, uLong(data_len), Z_DEFAULT_COMPRESSION) != Z_OK) {
+  if (!out || compress2(out, &size, data, uLong(data_len), pathspace_png_level) != Z_OK) {
     free(out);
     return nullptr;
   }
@@ -82,9 +84,9 @@ std::string lower_extension(const std::string& path) {
 // ---- writing ---------------------------------------------------------------------------------
 
 
-std::string encode_exr(const Image& image) {
+std::string encode_exr(const Image& image, ImageEncoding encoding) {
   Imf::Header header(image.width, image.height);
-  header.compression() = Imf::ZIP_COMPRESSION;
+  header.compression() = encoding == ImageEncoding::fast ? Imf::NO_COMPRESSION : Imf::ZIP_COMPRESSION;
   Imf::FrameBuffer frame;
   // OpenEXR's Slice takes a non-const pointer but only reads through it when writing.
   char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels.data()));
@@ -130,7 +132,8 @@ std::string encode_pfm(const Image& image) {
   return out;
 }
 
-std::string encode_png(const std::string& path, const Image& image) {
+std::string encode_png(const std::string& path, const Image& image, ImageEncoding encoding) {
+  pathspace_png_level = encoding == ImageEncoding::fast ? Z_BEST_SPEED : Z_DEFAULT_COMPRESSION;
   std::vector<unsigned char> px(image.size() * 3);
   for (size_t i = 0; i < image.size(); ++i)
     for (int c = 0; c < 3; ++c) px[3 * i + size_t(c)] = to_srgb8(image.pixels[i][c]);
@@ -308,7 +311,7 @@ ImageFormat image_format_from_path(const std::string& path) {
   fail(path, "unsupported image extension '" + ext + "' (supported: .exr, .pfm, .png)");
 }
 
-std::string encode_image(const std::string& path, const Image& image) {
+std::string encode_image(const std::string& path, const Image& image, ImageEncoding encoding) {
   const ImageFormat format = image_format_from_path(path);
   if (image.width <= 0 || image.height <= 0)
     fail(path, fmt::format("cannot write an empty image ({}x{})", image.width, image.height));
@@ -316,9 +319,9 @@ std::string encode_image(const std::string& path, const Image& image) {
     fail(path, "pixel count does not match the image size");
   try {
     switch (format) {
-      case ImageFormat::exr: return encode_exr(image);
+      case ImageFormat::exr: return encode_exr(image, encoding);
       case ImageFormat::pfm: return encode_pfm(image);
-      case ImageFormat::png: return encode_png(path, image);
+      case ImageFormat::png: return encode_png(path, image, encoding);
     }
   } catch (const Error&) {
     throw;

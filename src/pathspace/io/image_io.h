@@ -16,8 +16,14 @@ enum class ImageFormat { exr, pfm, png };
 ImageFormat image_format_from_path(const std::string& path);
 
 void write_image(const std::string& path, const Image& image);
+// How much time encoding may take: `compact` (what write_image writes) or `fast` for files that are
+// soon replaced (`render --write-every`): EXR without compression (ZIP gains little on noisy float
+// images and costs ~90 ms per 512x512 image), PNG at zlib's fastest level. The pixels are the same
+// either way.
+enum class ImageEncoding { compact, fast };
+
 // The bytes write_image would write (for OutputSet, io/atomic_file.h).
-std::string encode_image(const std::string& path, const Image& image);
+std::string encode_image(const std::string& path, const Image& image, ImageEncoding encoding = ImageEncoding::compact);
 // How 8- and 16-bit files are turned into linear floats: sRGB-decoded (colour images), or v / max
 // (textures that hold linear data, e.g. pbrt's encoding "linear"). Float formats are always linear.
 enum class LdrEncoding { srgb, linear };
