@@ -7,7 +7,10 @@
 //                        this machine's random-access limit for the same memory footprint
 //   BM_RadiusSearch      nanoflann kd-tree radius queries with the radius that gives the same
 //                        mean neighbour count as the filter's voxels (the classic path space filter)
-// Arguments: {vertex set (0 primary, 1 second bounce), threads[, local combining on/off]}.
+//   BM_ConsistentFilter  the consistent filter (Keller et al. 2014; hash grid range search, eq. 1)
+//                        with that radius, so that its balls hold as many vertices on average as
+//                        the hashed filter's voxels: ns per vertex for the whole filter() call
+// Arguments: {vertex set (0 primary, 1 second bounce), threads[, local combining on/off | weights on/off]}.
 #include <benchmark/benchmark.h>
 
 #include <nanoflann.hpp>
@@ -16,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "pathspace/filters/consistent_filter.h"
 #include "pathspace/filters/hashed_filter.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "support/vertex_sets.h"
@@ -119,33 +123,53 @@ struct PointCloud {
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointCloud>, PointCloud, 3, uint32_t>;
 const nanoflann::SearchParams kUnsorted(32, 0.f, false);
 
-void BM_RadiusSearch(benchmark::State& state) {
-  const VertexSet& set = vertex_set(int(state.range(0)));
-  ThreadLimit limit(int(state.range(1)));
-  const PointCloud cloud{&set.positions};
-  KdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tree.buildIndex();
-  // Queries: a fixed pseudo-random subset (a full 2M-query pass takes many seconds).
-  constexpr size_t kQueries = 1 << 15;
-  std::vector<size_t> queries(kQueries);
-  for (size_t q = 0; q < kQueries; ++q) queries[q] = mix64(q) % set.positions.size();
-  auto mean_neighbours = [&](float radius) {
+// Queries: a fixed pseudo-random subset (a full 2M-query pass takes many seconds).
+constexpr size_t kQueries = 1 << 15;
+
+// The kd-tree over a vertex set, the query subset, and the radius whose balls hold as many vertices
+// on average as the hashed filter's voxels (bisection).
+struct RadiusSearchSetup {
+  PointCloud cloud;
+  std::unique_ptr<KdTree> tree;
+  std::vector<size_t> queries;
+  float radius = 0.f;
+
+  explicit RadiusSearchSetup(const VertexSet& set) : cloud{&set.positions}, queries(kQueries) {
+    tree = std::make_unique<KdTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree->buildIndex();
+    for (size_t q = 0; q < kQueries; ++q) queries[q] = mix64(q) % set.positions.size();
+    float lo = 1e-5f, hi = 1.f;
+    for (int it = 0; it < 30; ++it) {
+      const float mid = std::sqrt(lo * hi);
+      (mean_neighbours(mid) < set.mean_voxel_count ? lo : hi) = mid;
+    }
+    radius = std::sqrt(lo * hi);
+  }
+  double mean_neighbours(float r) const {
     std::vector<std::pair<uint32_t, float>> found;
     double sum = 0;
     for (size_t q = 0; q < 512; ++q) {
-      const Vec3& p = set.positions[queries[q]];
+      const Vec3& p = (*cloud.points)[queries[q]];
       const float pt[3] = {p.x, p.y, p.z};
-      sum += double(tree.radiusSearch(pt, radius * radius, found, kUnsorted));
+      sum += double(tree->radiusSearch(pt, r * r, found, kUnsorted));
     }
     return sum / 512.0;
-  };
-  // Bisection for the radius with the filter's mean vertex count per voxel.
-  float lo = 1e-5f, hi = 1.f;
-  for (int it = 0; it < 30; ++it) {
-    const float mid = std::sqrt(lo * hi);
-    (mean_neighbours(mid) < set.mean_voxel_count ? lo : hi) = mid;
   }
-  const float radius = std::sqrt(lo * hi);
+};
+
+const RadiusSearchSetup& radius_search(int kind) {
+  static std::unique_ptr<RadiusSearchSetup> made[2];
+  if (!made[kind]) made[kind] = std::make_unique<RadiusSearchSetup>(vertex_set(kind));
+  return *made[kind];
+}
+
+void BM_RadiusSearch(benchmark::State& state) {
+  const VertexSet& set = vertex_set(int(state.range(0)));
+  ThreadLimit limit(int(state.range(1)));
+  const RadiusSearchSetup& setup = radius_search(int(state.range(0)));
+  const KdTree& tree = *setup.tree;
+  const std::vector<size_t>& queries = setup.queries;
+  const float radius = setup.radius;
   for (auto _ : state) {
     parallel_for(kQueries, 256, [&](size_t begin, size_t end) {
       std::vector<std::pair<uint32_t, float>> found;
@@ -162,7 +186,33 @@ void BM_RadiusSearch(benchmark::State& state) {
   state.counters["query_ns"] = benchmark::Counter(double(kQueries) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
                                                                                benchmark::Counter::kInvert);
   state.counters["radius"] = radius;
-  state.counters["mean_neighbours"] = mean_neighbours(radius);
+  state.counters["mean_neighbours"] = setup.mean_neighbours(radius);
+}
+
+void BM_ConsistentFilter(benchmark::State& state) {
+  const VertexSet& set = vertex_set(int(state.range(0)));
+  ThreadLimit limit(int(state.range(1)));
+  ConsistentFilterSettings settings;
+  settings.radius = radius_search(int(state.range(0))).radius;
+  settings.alpha = 1e-3f;  // the radius stays within 0.3% over the timed passes (n grows with each)
+  if (state.range(2) == 0) settings.weights = 0;
+  ConsistentFilter filter(settings, set.scene().camera, size_t(kWidth) * kHeight);
+  std::vector<Rgb> filtered;
+  uint32_t pass = 0;
+  filter.filter(set.buffer(), 0, pass++, &filtered);  // warm-up: the grid's and scratch allocations
+  const ConsistentFilterStats before = filter.stats();
+  for (auto _ : state) filter.filter(set.buffer(), 0, pass++, &filtered);
+  const ConsistentFilterStats& st = filter.stats();
+  const double vertices = double(st.vertices - before.vertices);
+  state.counters["filter_ns"] = (st.filter_ms - before.filter_ms) * 1e6 / vertices;
+  state.counters["mean_neighbours"] = double(st.averaged - before.averaged) / vertices;
+  state.counters["radius"] = settings.radius;
+}
+
+void consistent_variants(benchmark::internal::Benchmark* b) {
+  for (int kind : {0, 1})
+    for (int threads : {1, 2})
+      for (int weights : {0, 1}) b->Args({kind, threads, weights});
 }
 
 void vertex_sets_and_threads(benchmark::internal::Benchmark* b) {
@@ -179,6 +229,7 @@ void filter_variants(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_HashedFilter)->Apply(filter_variants)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(BM_RandomRmw)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(BM_RadiusSearch)->Apply(vertex_sets_and_threads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_ConsistentFilter)->Apply(consistent_variants)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 }  // namespace
 }  // namespace pathspace

@@ -56,6 +56,18 @@ class ConsistentFilter final : public PathSpaceFilter {
   size_t batch_memory_bytes() const { return batch_bytes_; }
   static size_t bytes_per_record();
 
+  // What the weights compare, per vertex, stored in the grid's cell order.
+  struct CellVertex {
+    Vec3 normal, incident;
+    Rgb throughput;
+    uint8_t layer = 0, selected = 0;
+  };
+  struct BatchVertex {
+    CellVertex vertex;
+    Rgb contribution;
+    float radius = 0.f;
+  };
+
  private:
   void filter_batch(const VertexBuffer& buffer, const std::vector<uint32_t>& slots, double radius_scale, std::vector<Rgb>* filtered,
                     uint32_t* max_neighbours);
@@ -68,7 +80,10 @@ class ConsistentFilter final : public PathSpaceFilter {
   ConsistentFilterStats stats_;
   // Scratch, reused between batches.
   HashGrid grid_;
-  std::vector<float> radius_;
+  std::vector<float> radius_;          // per batch vertex
+  std::vector<BatchVertex> batch_vertex_;  // per batch vertex
+  std::vector<CellVertex> cell_vertex_;    // per grid record, in cell order
+  std::vector<float> cell_radius_;
   std::vector<Rgb> in_, out_;
 };
 
