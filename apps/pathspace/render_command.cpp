@@ -1,7 +1,6 @@
 #include "render_command.h"
 
 #include <algorithm>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -19,9 +18,9 @@
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
-#include "pathspace/parallel/background_job.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "interrupt_handler.h"
+#include "periodic_writer.h"
 #include "progress_reporter.h"
 #include "render_outputs.h"
 #include "render_resume.h"
@@ -306,44 +305,18 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     if (resumed) fmt::print(", resumed from {} at {} passes", o.resume, done);
     fmt::print("\n");
   }
-  // Periodic writes run on their own threads; a write that is still going when the next is due is
-  // skipped, so the render never waits for the disk. Their errors become warnings.
-  using Clock = std::chrono::steady_clock;
-  BackgroundJob output_job, checkpoint_job;
-  Clock::time_point last_output = Clock::now(), last_checkpoint = Clock::now();
-  auto due = [](Clock::time_point& last, double every) {
-    if (every <= 0.0 || std::chrono::duration<double>(Clock::now() - last).count() < every) return false;
-    last = Clock::now();
-    return true;
-  };
-  auto warn = [](const char* what, const std::exception& e) { fmt::print(stderr, "pathspace render: warning: {}: {}\n", what, e.what()); };
+  PeriodicWriter periodic(plan, o.write_every, o.checkpoint, o.checkpoint_every, checkpoint_of);
   interrupt.watch(&session);
   if (passes > 0 || o.time_s > 0.0) {
     const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
     session.run(limit, [&](const RenderProgress& p) {
       progress.update(p);
-      if (due(last_output, o.write_every) && !output_job.busy())
-        output_job.start([&plan, &warn, snap = session.snapshot()] {
-          try {
-            write_outputs(plan, snap, OutputKind::periodic);
-          } catch (const std::exception& e) {
-            warn("periodic output write failed", e);
-          }
-        });
-      if (due(last_checkpoint, o.checkpoint_every) && !checkpoint_job.busy())
-        checkpoint_job.start([&o, &warn, info = checkpoint_of(session), state = session.save_state()] {
-          try {
-            write_checkpoint(o.checkpoint, info, state);
-          } catch (const std::exception& e) {
-            warn("periodic checkpoint failed", e);
-          }
-        });
+      periodic.after_pass(session);
     });
   }
   interrupt.watch(nullptr);
   progress.finish();
-  output_job.wait();
-  checkpoint_job.wait();
+  periodic.finish();
 
   if (interrupt.signal() != 0 && session.passes_done() == 0) {
     fmt::print(stderr, "pathspace render: interrupted by {} before the first pass; nothing written\n", signal_name(interrupt.signal()));
@@ -365,11 +338,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    fmt::print("\n{}", format_statistics(stats.details));
-    if (output_job.jobs_done() || checkpoint_job.jobs_done())
-      fmt::print("periodic writes: {} output sets, {} checkpoints, {:.2f} s of CPU on a background thread\n", output_job.jobs_done(),
-                 checkpoint_job.jobs_done(), output_job.cpu_seconds() + checkpoint_job.cpu_seconds());
-    fmt::print("wrote {}\n", fmt::join(written, ", "));
+    fmt::print("\n{}{}wrote {}\n", format_statistics(stats.details), periodic.summary(), fmt::join(written, ", "));
   }
   return 0;
 }
