@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "pathspace/camera/perspective_camera.h"
@@ -84,6 +85,8 @@ class ConsistentFilter final : public PathSpaceFilter {
   std::vector<BatchVertex> batch_vertex_;  // per batch vertex
   std::vector<CellVertex> cell_vertex_;    // per grid record, in cell order
   std::vector<float> cell_radius_;
+  std::vector<uint32_t> cell_begin_;                       // first record of each cell, then the end
+  std::vector<std::pair<uint64_t, uint32_t>> cell_order_;  // (Morton code, cell), sorted
   std::vector<Rgb> in_, out_;
 };
 
