@@ -75,6 +75,12 @@ class Checkpoints : public ::testing::Test {
     ASSERT_EQ(r.exit_code, 0) << args << "\n" << r.err;
   }
   std::string file(const std::string& name) const { return read_all(dir_ / name); }
+  // The passes a checkpoint holds, as `pathspace info --json` reads them.
+  uint32_t checkpoint_passes(const std::string& name) {
+    const Result r = run("info --json " + name);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.exit_code == 0 ? nlohmann::json::parse(r.out).at("passes").get<uint32_t>() : 0;
+  }
   bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
   // Every file in the folder, for "nothing was written".
   std::vector<std::string> listing() const {
@@ -156,18 +162,12 @@ int interrupt_render(const fs::path& dir, const std::string& args, int sig) {
   return wait_exit_code(pid);
 }
 
-uint32_t checkpoint_passes(const fs::path& dir, const std::string& name) {
-  const std::string bytes = read_all(dir / name);
-  const size_t start = bytes.find('{'), end = bytes.find("\n}\n");
-  return nlohmann::json::parse(bytes.substr(start, end + 2 - start)).at("passes").get<uint32_t>();
-}
-
 TEST_F(Checkpoints, SigintWritesTheCompletedPassesAndResumesBitForBit) {
   const std::string scene = "cornell-box -r 32x24 --seed 3";
   const int code = interrupt_render(dir_, "render " + scene + " -s 1000000 -o run.exr --stats run.json --checkpoint run.ckpt --checkpoint-every 0.01", SIGINT);
   EXPECT_EQ(code, 130) << file("log.txt");
   EXPECT_NE(file("log.txt").find("interrupted by SIGINT"), std::string::npos) << file("log.txt");
-  const uint32_t passes = checkpoint_passes(dir_, "run.ckpt");
+  const uint32_t passes = checkpoint_passes("run.ckpt");
   ASSERT_GT(passes, 0u);
   const nlohmann::json stats = nlohmann::json::parse(file("run.json"));
   EXPECT_EQ(stats.at("spp").get<uint32_t>(), passes) << "the outputs and the checkpoint hold different passes";
@@ -183,7 +183,7 @@ TEST_F(Checkpoints, SigtermExits143WithTheOutputs) {
   const int code = interrupt_render(dir_, "render cornell-box -r 32x24 -s 1000000 -o run.exr --checkpoint run.ckpt --checkpoint-every 0.01", SIGTERM);
   EXPECT_EQ(code, 143) << file("log.txt");
   EXPECT_TRUE(exists("run.exr"));
-  EXPECT_GT(checkpoint_passes(dir_, "run.ckpt"), 0u);
+  EXPECT_GT(checkpoint_passes("run.ckpt"), 0u);
 }
 
 class CheckpointErrors : public Checkpoints {
@@ -265,7 +265,7 @@ TEST_F(Checkpoints, PeriodicWritesEndInTheFinalOutputs) {
   ok(std::string("render ") + kScene + " -s 40 -o a.exr -o a.png --stats a.json --checkpoint a.ckpt --checkpoint-every 0.001 --write-every 0.001");
   ok(std::string("render ") + kScene + " -s 40 -o b.exr");
   expect_same_files("a.exr", "b.exr");
-  EXPECT_EQ(checkpoint_passes(dir_, "a.ckpt"), 40u);
+  EXPECT_EQ(checkpoint_passes("a.ckpt"), 40u);
   EXPECT_EQ(nlohmann::json::parse(file("a.json")).at("spp"), 40);
   for (const std::string& name : listing()) EXPECT_EQ(name.find(".tmp-"), std::string::npos) << name;
 }
@@ -286,7 +286,7 @@ TEST_F(Checkpoints, ResumeNeedsATotalOrATime) {
   ok("render --resume a.ckpt -s 3 --quiet -o b.exr");
   expect_same_files("a.exr", "b.exr");
   ok("render --resume a.ckpt -t 0.2 --quiet -o c.exr --checkpoint c.ckpt");
-  EXPECT_GT(checkpoint_passes(dir_, "c.ckpt"), 3u);
+  EXPECT_GT(checkpoint_passes("c.ckpt"), 3u);
 }
 
 TEST_F(Checkpoints, DebugImagesAreOfTheLastPassRenderedHere) {

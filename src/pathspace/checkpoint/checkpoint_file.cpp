@@ -3,15 +3,15 @@
 #include <zlib.h>
 
 #include <bit>
-#include <cerrno>
 #include <cstring>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "pathspace/base/error.h"
+#include "pathspace/base/fnv1a.h"
 #include "pathspace/io/atomic_file.h"
+#include "pathspace/io/file_bytes.h"
 
 #ifndef PATHSPACE_VERSION
 #define PATHSPACE_VERSION "unknown"
@@ -166,28 +166,14 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
 
 void write_checkpoint(const std::string& path, const CheckpointInfo& info, const SessionState& state) {
   const std::vector<uint8_t> bytes = encode_checkpoint(info, state);
-  write_file_atomically(path, [&](const std::string& temp) { write_bytes_synced(temp, bytes.data(), bytes.size(), path); });
+  write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-namespace {
-
-std::string read_whole_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error(path + ": read failed");
-  return bytes;
-}
-
-}  // namespace
-
-Checkpoint read_checkpoint(const std::string& path) { return decode_checkpoint(read_whole_file(path), path); }
+Checkpoint read_checkpoint(const std::string& path) { return decode_checkpoint(read_file_as_stored(path), path); }
 
 std::string scene_file_hash(const std::string& path) {
-  const std::string bytes = read_whole_file(path);
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a 64
-  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
-  return fmt::format("fnv1a64:{:016x}", hash);
+  const std::string bytes = read_file_as_stored(path);
+  return fmt::format("fnv1a64:{:016x}", fnv1a64(bytes.data(), bytes.size()));
 }
 
 }  // namespace pathspace

@@ -65,11 +65,11 @@ ConsistentFilter::ConsistentFilter(const ConsistentFilterSettings& settings, con
       grid_(HashGridConfig{}) {}
 
 size_t ConsistentFilter::bytes_per_record() {
-  // The grid's records (and their compacted copy) and slots, the radius (per vertex and in cell
-  // order), the slot index, the weights' data (in batch and in cell order) and
-  // the two contribution arrays of the iteration.
-  return 2 * sizeof(GridRecord) + 2 * sizeof(GridSlot) + 2 * sizeof(float) + sizeof(uint32_t) + sizeof(CellVertex) +
-         sizeof(BatchVertex) + 2 * sizeof(Rgb);
+  // The grid's records (and their compacted copy) and slots, the slot index, each vertex's data in
+  // batch order (weights' data, contribution, radius, and a copy of the radius for the median) and
+  // in cell order (weights' data, radius), and the two contribution arrays of the iteration.
+  return 2 * sizeof(GridRecord) + 2 * sizeof(GridSlot) + sizeof(uint32_t) + sizeof(BatchVertex) + sizeof(float) +
+         sizeof(CellVertex) + sizeof(float) + 2 * sizeof(Rgb);
 }
 
 void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
@@ -114,45 +114,42 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
                                     std::vector<Rgb>* filtered, uint32_t* max_neighbours) {
   const size_t m = slots.size();
   if (m == 0) return;
-  radius_.resize(m);
+  // Each vertex's radius and what the weights compare, gathered in batch order (the buffer's arrays
+  // read front to back). Radius 0: no usable position or radius, left out of the grid.
+  batch_vertex_.resize(m);
+  parallel_for(m, 4096, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const size_t i = slots[k];
+      const float d = b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]);
+      const float r0 = settings_.radius > 0.f ? settings_.radius : r0_per_distance_ * d;
+      const float r = float(double(r0) * radius_scale);
+      const bool usable = all_finite(b.position[i]) && std::isfinite(r) && r > 0.f;
+      batch_vertex_[k] = {{b.shading_normal[i], b.incident[i], b.throughput[i], b.layer[i], b.selected[i]}, b.contribution[i], usable ? r : 0.f};
+    }
+  });
   std::vector<float> valid_radii;
   valid_radii.reserve(m);
-  for (size_t k = 0; k < m; ++k) {
-    const size_t i = slots[k];
-    const float d = b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]);
-    const float r0 = settings_.radius > 0.f ? settings_.radius : r0_per_distance_ * d;
-    const float r = float(double(r0) * radius_scale);
-    const bool usable = all_finite(b.position[i]) && std::isfinite(r) && r > 0.f;
-    radius_[k] = usable ? r : 0.f;
-    if (usable) valid_radii.push_back(r);
-  }
+  for (const BatchVertex& v : batch_vertex_)
+    if (v.radius > 0.f) valid_radii.push_back(v.radius);
   if (valid_radii.empty()) return;
   // Cells for the median radius: most queries visit 8 cells; larger balls visit more, still exactly.
   std::nth_element(valid_radii.begin(), valid_radii.begin() + ptrdiff_t(valid_radii.size() / 2), valid_radii.end());
   const float cell_radius = valid_radii[valid_radii.size() / 2];
   const Vec3 nowhere(std::nanf(""), 0.f, 0.f);  // not linked: never found by a query
-  grid_.build(m, cell_radius, [&](size_t k) { return radius_[k] > 0.f ? b.position[slots[k]] : nowhere; });
+  grid_.build(m, cell_radius, [&](size_t k) { return batch_vertex_[k].radius > 0.f ? b.position[slots[k]] : nowhere; });
 
   // Work in the grid's cell order (record c of the compacted grid is batch vertex base[c].payload):
-  // the weights' data and contributions are stored in that order, so a query reads each cell's data
-  // from a few consecutive cache lines; queries go cell by cell, the cells in Morton order, so
-  // consecutive queries share their neighbouring cells. At 1920x1080 this made second-bounce
-  // vertices 2.3x faster than queries in image order, primary hits 10% slower (docs/benchmarks.md).
+  // the weights' data and contributions are stored in that order (one random read per vertex to
+  // permute them), so a query reads each cell's data from a few consecutive cache lines; queries go
+  // cell by cell, the cells in Morton order, so consecutive queries share their neighbouring cells.
+  // At 1920x1080 this made second-bounce vertices 2.3x faster than queries in image order, primary
+  // hits 10% slower (docs/benchmarks.md).
   const size_t linked = grid_.compacted_records();
   const GridRecord* base = linked ? &grid_.record(0) : nullptr;
   cell_vertex_.resize(linked);
   cell_radius_.resize(linked);
   in_.resize(linked);
   out_.resize(linked);
-  // Gathered in batch order first (the buffer's arrays read front to back), then permuted: one
-  // random read per vertex instead of one per array.
-  batch_vertex_.resize(m);
-  parallel_for(m, 4096, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const size_t i = slots[k];
-      batch_vertex_[k] = {{b.shading_normal[i], b.incident[i], b.throughput[i], b.layer[i], b.selected[i]}, b.contribution[i], radius_[k]};
-    }
-  });
   parallel_for(linked, 4096, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
       const BatchVertex& v = batch_vertex_[base[c].payload];

@@ -81,7 +81,6 @@ class ConsistentFilter final : public PathSpaceFilter {
   ConsistentFilterStats stats_;
   // Scratch, reused between batches.
   HashGrid grid_;
-  std::vector<float> radius_;          // per batch vertex
   std::vector<BatchVertex> batch_vertex_;  // per batch vertex
   std::vector<CellVertex> cell_vertex_;    // per grid record, in cell order
   std::vector<float> cell_radius_;

@@ -1,6 +1,5 @@
 #include "pathspace/io/atomic_file.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <array>
@@ -81,22 +80,8 @@ void rename_into_place(const std::string& temp, const std::string& path) {
   if (ec) throw Error("cannot write '" + path + "': " + ec.message());
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-  check_target(path);
-  const std::string temp = temporary_name(path);
-  const ListedTemporary listed(temp);
-  try {
-    write(temp);
-    rename_into_place(temp, path);
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    throw;
-  }
-}
-
+// Writes bytes to `file`, checking every step, and fsyncs it, so that once renamed it is never an
+// empty or partial file after a crash. Errors name `shown_as` (the final path).
 void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as) {
   std::FILE* f = std::fopen(file.c_str(), "wb");
   if (!f) throw Error(shown_as + ": cannot create temporary file '" + file + "': " + std::strerror(errno));
@@ -111,9 +96,15 @@ void write_bytes_synced(const std::string& file, const void* data, size_t size, 
   if (err != 0) throw Error(shown_as + ": write failed: " + std::strerror(err));
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
-  write_file_atomically(path, [&](const std::string& temp) { write_bytes_synced(temp, text.data(), text.size(), path); });
+}  // namespace
+
+void write_file_atomically(const std::string& path, const void* data, size_t size) {
+  OutputSet set;
+  set.add(path, data, size);
+  set.commit();
 }
+
+void write_text_file(const std::string& path, const std::string& text) { write_file_atomically(path, text.data(), text.size()); }
 
 void check_output_writable(const std::string& path) {
   check_target(path);

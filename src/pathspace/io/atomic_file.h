@@ -5,23 +5,19 @@
 // can remove it (remove_unfinished_temporaries), so a render killed by a second Ctrl-C leaves none.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace pathspace {
 
-// Calls write(temp_path), then renames temp_path to path. If write throws, or the rename fails, the
-// temporary file is removed and a pathspace::Error naming `path` is thrown.
-void write_file_atomically(const std::string& path, const std::function<void(const std::string& temp_path)>& write);
+// Writes the bytes to a temporary file next to `path` (fsync'd), then renames it to `path`: a set of
+// one file (OutputSet below). On any failure the temporary file is removed and a pathspace::Error
+// naming `path` is thrown.
+void write_file_atomically(const std::string& path, const void* data, size_t size);
 
 // Writes text to path atomically.
 void write_text_file(const std::string& path, const std::string& text);
-
-// Writes bytes to `file`, checking every step, and fsyncs it, so that once renamed it is never an
-// empty or partial file after a crash. Errors name `shown_as` (the final path).
-void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as);
 
 // Throws pathspace::Error when a file cannot be created next to `path` (missing folder, no
 // permission, parent is not a folder). Used to fail before a long render, not after it.

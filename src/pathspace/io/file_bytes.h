@@ -10,6 +10,9 @@ namespace pathspace {
 // The file's bytes, gunzipped when the file starts with the gzip magic (1f 8b).
 std::string read_file_bytes(const std::string& path);
 
+// The file's bytes as stored (images, checkpoints, content hashes). Errors: "PATH: cannot open: ...".
+std::string read_file_as_stored(const std::string& path);
+
 // Lower-case extension without the ".gz" suffix: "a/b.PLY.gz" -> ".ply".
 std::string scene_file_extension(const std::string& path);
 

@@ -1,5 +1,5 @@
-// Image files. Every format is encoded into memory first and then written through
-// write_file_atomically (io/atomic_file.h), so all formats share one failure handling.
+// Image files. Every format is encoded into memory first (encode_image) and then written through
+// write_file_atomically or an OutputSet (io/atomic_file.h), so all formats share one failure handling.
 // Non-finite pixels: EXR and PFM store them unchanged; PNG stores NaN as 0 and clamps ±Inf
 // (film/tonemap.h, to_srgb8).
 #include "pathspace/io/image_io.h"
@@ -65,6 +65,7 @@ static unsigned char* pathspace_png_deflate(unsigned char* data, int data_len, i
 #include "pathspace/base/error.h"
 #include "pathspace/film/tonemap.h"
 #include "pathspace/io/atomic_file.h"
+#include "pathspace/io/file_bytes.h"
 
 namespace pathspace {
 namespace {
@@ -148,16 +149,6 @@ std::string encode_png(const std::string& path, const Image& image, ImageEncodin
 }
 
 // ---- reading ---------------------------------------------------------------------------------
-
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail(path, "cannot read: is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) fail(path, "read error");
-  return bytes;
-}
 
 // OpenEXR input from bytes already in memory, named after the file for OpenEXR's messages.
 class MemoryIStream : public Imf::IStream {
@@ -333,11 +324,10 @@ std::string encode_image(const std::string& path, const Image& image, ImageEncod
 
 void write_image(const std::string& path, const Image& image) {
   const std::string bytes = encode_image(path, image);
-  // Temporary file next to the target, renamed into place; removed on any failure.
-  write_file_atomically(path, [&](const std::string& temp) { write_bytes_synced(temp, bytes.data(), bytes.size(), path); });
+  write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file(path), ldr); }
+Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file_as_stored(path), ldr); }
 
 Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
   const std::string ext = lower_extension(path);

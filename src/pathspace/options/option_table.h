@@ -27,7 +27,7 @@ class OptionTable {
   using Check = std::function<void(const Settings&)>;
 
   // An integer or real option. `field` is a data member pointer or a callable Settings& -> T&
-  // (describe() reads through it with a const_cast; it never writes there).
+  // (values() reads through it with a const_cast; it never writes there).
   template <typename Field>
   OptionTable& number(std::string name, Field field, double min, double max, std::string help, std::string paper = {}) {
     using T = std::remove_reference_t<std::invoke_result_t<Field, Settings&>>;
@@ -113,15 +113,8 @@ class OptionTable {
     return false;
   }
 
-  // Every option's current value as the user would write it, "name=value" separated by spaces: a
-  // fingerprint of the settings (a restored render must continue with the options it was made with).
-  std::string describe(const Settings& settings) const {
-    std::string out;
-    for (const auto& [name, value] : values(settings)) out += (out.empty() ? "" : " ") + name + "=" + value;
-    return out;
-  }
-
-  // Every option's current value as the user would write it, by name, in table order.
+  // Every option's current value as the user would write it, by name, in table order (the settings'
+  // fingerprint, SettingsSchema::describe, and the options a checkpoint stores).
   std::vector<std::pair<std::string, std::string>> values(const Settings& settings) const {
     std::vector<std::pair<std::string, std::string>> out;
     for (const Entry& e : entries_) out.emplace_back(e.spec.name, e.text(settings));

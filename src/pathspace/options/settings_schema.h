@@ -20,9 +20,8 @@ struct SettingsSchema {
   std::function<std::any()> defaults;
   // Stores the given options that belong to this schema into *settings (defaults first when empty).
   std::function<void(const OptionValues&, std::any*)> apply;
-  // The options' values in `settings` (the defaults when empty), OptionTable::describe.
-  std::function<std::string(const std::any&)> describe;
-  // The same as (name, value) pairs, OptionTable::values.
+  // The options' values in `settings` (the defaults when empty) as (name, value) pairs,
+  // OptionTable::values.
   std::function<std::vector<std::pair<std::string, std::string>>(const std::any&)> values;
 
   template <typename Settings>
@@ -35,13 +34,18 @@ struct SettingsSchema {
       if (!settings->has_value()) *settings = Settings{};
       shared->apply(given, std::any_cast<Settings>(settings));
     };
-    schema.describe = [shared](const std::any& settings) {
-      return shared->describe(settings.has_value() ? std::any_cast<const Settings&>(settings) : Settings{});
-    };
     schema.values = [shared](const std::any& settings) {
       return shared->values(settings.has_value() ? std::any_cast<const Settings&>(settings) : Settings{});
     };
     return schema;
+  }
+
+  // "name=value name=value ...": a fingerprint of the settings (a restored render must continue with
+  // the options it was made with).
+  std::string describe(const std::any& settings) const {
+    std::string out;
+    for (const auto& [name, value] : values(settings)) out += (out.empty() ? "" : " ") + name + "=" + value;
+    return out;
   }
 
   const OptionSpec* find(const std::string& name) const {

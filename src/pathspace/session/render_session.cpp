@@ -6,6 +6,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/base/fnv1a.h"
 #include "pathspace/base/state_archive.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/parallel/parallel_for.h"
@@ -26,9 +27,7 @@ std::string settings_fingerprint(const RenderConfig& config) {
 // and a hash of its vertex positions (material parameters are not compared).
 std::string scene_fingerprint(const Scene& scene) {
   const BoundingSphere b = scene.bounds();
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a over the positions' bytes (floats: no padding)
-  const auto* bytes = reinterpret_cast<const unsigned char*>(scene.positions.data());
-  for (size_t i = 0; i < scene.positions.size() * sizeof(Vec3); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  const uint64_t hash = fnv1a64(scene.positions.data(), scene.positions.size() * sizeof(Vec3));  // floats: no padding
   return "name=" + scene.name + " position_hash=" + std::to_string(hash) + " positions=" + std::to_string(scene.positions.size()) + " triangles=" + std::to_string(scene.triangles.size()) +
          " spheres=" + std::to_string(scene.spheres.size()) + " materials=" + std::to_string(scene.materials.size()) +
          " lights=" + std::to_string(scene.lights.size()) + " max_segments=" + std::to_string(scene.max_path_segments) +
