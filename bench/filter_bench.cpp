@@ -22,7 +22,7 @@
 #include "pathspace/filters/consistent_filter.h"
 #include "pathspace/filters/hashed_filter.h"
 #include "pathspace/parallel/parallel_for.h"
-#include "support/vertex_sets.h"
+#include "pathspace/study/vertex_sets.h"
 
 namespace pathspace {
 namespace {
@@ -30,7 +30,7 @@ namespace {
 constexpr int kWidth = 1920, kHeight = 1080;
 
 struct VertexSet {
-  std::unique_ptr<bench::VertexSet> source;
+  std::unique_ptr<study::VertexSet> source;
   std::vector<Vec3> positions;  // valid records only
   std::vector<Rgb> contributions;
   double mean_voxel_count = 0;  // vertex-weighted, measured with the default filter
@@ -42,7 +42,7 @@ const VertexSet& vertex_set(int kind) {
   static std::unique_ptr<VertexSet> sets[2];
   if (sets[kind]) return *sets[kind];
   auto set = std::make_unique<VertexSet>();
-  set->source = bench::make_vertex_set(bench::VertexSetKind(kind), kWidth, kHeight);
+  set->source = study::make_vertex_set(study::VertexSetKind(kind), kWidth, kHeight);
   const VertexBuffer& b = set->buffer();
   for (size_t p = 0; p < b.paths(); ++p)
     for (int r = 0; r < b.count[p]; ++r) {

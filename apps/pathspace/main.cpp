@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   RenderOptions render_options;
   InfoOptions info_options;
   CompareOptions compare_options;
-  StudyOptions study_options;
+  StudyCommandOptions study_options;
   CLI::App* render_cmd = add_render_command(app, &render_options);
   CLI::App* info_cmd = add_info_command(app, &info_options);
   CLI::App* compare_cmd = add_compare_command(app, &compare_options);
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
       return run_compare_command(compare_options);
     }
     if (study_cmd->parsed()) {
-      command = "pathspace study pclt";
+      command = "pathspace study " + study_options.study;
       return run_study_command(study_options);
     }
   } catch (const CLI::CallForHelp& e) {

@@ -1,6 +1,6 @@
-// `pathspace study pclt` (study_command.h): options, validation before any render, the per-scene loop
-// over the PCLT paper's figures on the experiment harness (src/pathspace/study/), and the JSON and
-// HTML outputs (written atomically, io/atomic_file.h).
+// `pathspace study` (study_command.h): the subcommands' options, the checks and outputs every study
+// shares (study_setup.h), and `study pclt`'s per-scene loop over the PCLT paper's figures
+// (study_pclt_figures.h); `study psf` runs in study_psf_command.cpp.
 #include "study_command.h"
 
 #include <algorithm>
@@ -13,10 +13,11 @@
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render.h"
-#include "pathspace/study/experiment_runner.h"
 #include "pathspace/study/html_report.h"
 #include "pathspace/study/image_files.h"
 #include "study_pclt_figures.h"
+#include "study_psf_figures.h"
+#include "study_setup.h"
 #include "usage_error.h"
 
 namespace pathspace::cli {
@@ -25,14 +26,6 @@ namespace {
 
 constexpr int kMaxStudyResolution = 4096;
 constexpr double kDefaultReferenceFactor = 20.0;
-
-void parse_resolution(const std::string& text, int* width, int* height) {
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", width, &x, height, &extra) != 3 || (x != 'x' && x != 'X'))
-    throw UsageError("--resolution expects WxH, e.g. 128x128, not '" + text + "'");
-  if (*width < 1 || *height < 1 || *width > kMaxStudyResolution || *height > kMaxStudyResolution)
-    throw UsageError(fmt::format("--resolution {}: width and height must be between 1 and {}", text, kMaxStudyResolution));
-}
 
 // The reference is rendered with the best unbiased integrator available: BPT covers every path the
 // Cornell variants have (caustics through its light-tracing strategies), PT is the fallback.
@@ -44,100 +37,146 @@ size_t max_builtin_light_count() {
   return n;
 }
 
-}  // namespace
-
-CLI::App* add_study_command(CLI::App& app, StudyOptions* o) {
-  CLI::App* study = app.add_subcommand("study", "Reproduce a paper's figures on the built-in scenes (images, JSON, HTML)");
-  study->require_subcommand(1);
-  CLI::App* pclt = study->add_subcommand("pclt", "Pixel cache light tracing paper: figs. 1, 5, 6, 7, 8 (fig. 9 explained)");
-  pclt->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
-  pclt->add_option("-r,--resolution", o->resolution, "Image size WxH")->capture_default_str();
-  pclt->add_option("-t,--time", o->time_s, "Seconds per equal-time image (fig. 1); sets the iterations of figs. 5-8")
-      ->check(CLI::Range(1e-3, 1e6))
-      ->capture_default_str();
-  pclt->add_option("--reference-time", o->reference_time_s, "Seconds for each scene's reference (default: 20 x --time)")
+void add_common_options(CLI::App* sub, StudyOptions* o, const std::string& time_help) {
+  sub->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
+  sub->add_option("-r,--resolution", o->resolution, "Image size WxH")->capture_default_str();
+  sub->add_option("-t,--time", o->time_s, time_help)->check(CLI::Range(1e-3, 1e6))->capture_default_str();
+  sub->add_option("--reference-time", o->reference_time_s, "Seconds for each scene's reference (default: 20 x --time)")
       ->check(CLI::Range(1e-3, 1e7));
-  pclt->add_option("--scenes", o->scenes, "Built-in scenes, comma-separated names or ids")
-      ->delimiter(',')
-      ->capture_default_str();
-  pclt->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")->capture_default_str();
-  pclt->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
-  pclt->add_flag("--no-exr", o->no_exr, "Write PNG only (commit-sized output)");
-  pclt->add_flag("-q,--quiet", o->quiet, "No progress lines");
-  return study;
+  sub->add_option("--scenes", o->scenes, "Built-in scenes, comma-separated names or ids")->delimiter(',')->capture_default_str();
+  sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")->capture_default_str();
+  sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  sub->add_flag("--no-exr", o->no_exr, "Write PNG only (commit-sized output)");
+  sub->add_flag("-q,--quiet", o->quiet, "No progress lines");
 }
 
-int run_study_command(const StudyOptions& o) {
-  // Validate everything before the first render.
-  int width = 0, height = 0;
-  parse_resolution(o.resolution, &width, &height);
+int run_pclt_study(const StudyOptions& o) {
+  const StudySetup setup = prepare_study(o);
+  const study::ExperimentRunner runner = make_study_runner(o, /*keep_images=*/true);  // fig. 6 compares with fig. 1's image
+  const study::ReferenceSpec reference = study_reference(o, setup);
+  StudyDocument doc;
+  doc.id = "pclt";
+  doc.paper = "Pixel Cache Light Tracing";
+  doc.title = "Pixel cache light tracing: the paper's figures on pathspace scenes";
+  doc.settings = study_settings(o, setup);
+  doc.figures = make_pclt_figures();
+  describe_fig9(max_builtin_light_count(), &doc.figures);
+  for (const std::string& name : setup.scene_names) {
+    // One scene at a time: its geometry, acceleration structure and images are freed before the next.
+    const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, setup.width, setup.height}, reference);
+    run_pclt_figures(runner, scene, PcltStudyParams{o.time_s, o.seed}, &doc.figures);
+    doc.scenes.push_back(scene.summary);
+  }
+  write_study(o, doc);
+  return 0;
+}
+
+}  // namespace
+
+void parse_resolution(const std::string& text, const std::string& option, int* width, int* height) {
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", width, &x, height, &extra) != 3 || (x != 'x' && x != 'X'))
+    throw UsageError(option + " expects WxH, e.g. 128x128, not '" + text + "'");
+  if (*width < 1 || *height < 1 || *width > kMaxStudyResolution || *height > kMaxStudyResolution)
+    throw UsageError(fmt::format("{} {}: width and height must be between 1 and {}", option, text, kMaxStudyResolution));
+}
+
+StudySetup prepare_study(const StudyOptions& o) {
+  StudySetup s;
+  parse_resolution(o.resolution, "--resolution", &s.width, &s.height);
   if (o.scenes.empty()) throw UsageError("--scenes needs at least one scene");
-  std::vector<std::string> scene_names;
-  for (const std::string& s : o.scenes) {
-    const BuiltinSceneInfo* info = find_builtin_scene(s);
-    if (!info) throw UsageError("unknown scene '" + s + "'", "run 'pathspace info --scenes' for the list");
-    if (std::find(scene_names.begin(), scene_names.end(), info->name) == scene_names.end()) scene_names.push_back(info->name);
+  for (const std::string& name : o.scenes) {
+    const BuiltinSceneInfo* info = find_builtin_scene(name);
+    if (!info) throw UsageError("unknown scene '" + name + "'", "run 'pathspace info --scenes' for the list");
+    if (std::find(s.scene_names.begin(), s.scene_names.end(), info->name) == s.scene_names.end()) s.scene_names.push_back(info->name);
   }
   if (o.out.empty()) throw UsageError("--out must name a folder");
-  const double reference_time = o.reference_time_s > 0 ? o.reference_time_s : kDefaultReferenceFactor * o.time_s;
+  s.reference_time_s = o.reference_time_s > 0 ? o.reference_time_s : kDefaultReferenceFactor * o.time_s;
+  s.reference_integrator = reference_integrator();
   study::create_image_folder(o.out);
   check_output_writable(o.out + "/study.json");
+  return s;
+}
 
-  study::RunnerOptions runner_options;
-  runner_options.out_dir = o.out;
-  runner_options.write_exr = !o.no_exr;
-  runner_options.threads = o.threads;
-  runner_options.keep_images = true;  // fig. 6 compares with fig. 1's image
-  runner_options.quiet = o.quiet;
-  const study::ExperimentRunner runner(runner_options);
-  const std::string ref_integrator = reference_integrator();
+study::ExperimentRunner make_study_runner(const StudyOptions& o, bool keep_images) {
+  study::RunnerOptions r;
+  r.out_dir = o.out;
+  r.write_exr = !o.no_exr;
+  r.threads = o.threads;
+  r.keep_images = keep_images;
+  r.quiet = o.quiet;
+  return study::ExperimentRunner(r);
+}
+
+study::ReferenceSpec study_reference(const StudyOptions& o, const StudySetup& setup) {
   study::ReferenceSpec reference;
-  reference.render = study::reference_render_config(ref_integrator);
+  reference.render = study::reference_render_config(setup.reference_integrator);
   reference.render.seed = o.seed + study::kReferenceSeedOffset;
-  reference.budget = study::Budget::for_seconds(reference_time);
+  reference.budget = study::Budget::for_seconds(setup.reference_time_s);
+  return reference;
+}
 
-  std::vector<StudyFigure> figures = make_pclt_figures();
-  describe_fig9(max_builtin_light_count(), &figures);
-  std::vector<study::SceneSummary> summaries;
-  nlohmann::ordered_json references = nlohmann::ordered_json::object();
-  for (const std::string& name : scene_names) {
-    // One scene at a time: its geometry, acceleration structure and images are freed before the next.
-    const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, width, height}, reference);
-    run_pclt_figures(runner, scene, PcltStudyParams{o.time_s, o.seed}, &figures);
-    summaries.push_back(scene.summary);
-    nlohmann::ordered_json& r = references[scene.id()];
-    r = study::to_json(scene.summary.reference);
-    r["name"] = scene.summary.name;
-    r["lights"] = scene.summary.light_count;
-  }
-
+nlohmann::ordered_json study_settings(const StudyOptions& o, const StudySetup& setup) {
   nlohmann::ordered_json settings;
-  settings["width"] = width;
-  settings["height"] = height;
+  settings["width"] = setup.width;
+  settings["height"] = setup.height;
   settings["time_s"] = o.time_s;
-  settings["reference_time_s"] = reference_time;
-  settings["reference_integrator"] = ref_integrator;
+  settings["reference_time_s"] = setup.reference_time_s;
+  settings["reference_integrator"] = setup.reference_integrator;
   settings["seed"] = o.seed;
   settings["threads"] = o.threads;
   settings["build_type"] = build_type();
   settings["integrators"] = integrator_registry().names();
+  return settings;
+}
 
+void write_study(const StudyOptions& o, const StudyDocument& d) {
+  nlohmann::ordered_json references = nlohmann::ordered_json::object();
+  for (const study::SceneSummary& scene : d.scenes) {
+    nlohmann::ordered_json& r = references[scene.id];
+    r = study::to_json(scene.reference);
+    r["name"] = scene.name;
+    r["lights"] = scene.light_count;
+  }
   nlohmann::ordered_json doc;
-  doc["study"] = "pclt";
-  doc["paper"] = "Pixel Cache Light Tracing";
-  doc["settings"] = settings;
+  doc["study"] = d.id;
+  doc["paper"] = d.paper;
+  doc["settings"] = d.settings;
   doc["scenes"] = references;
   doc["figures"] = nlohmann::ordered_json::object();
-  for (const StudyFigure& f : figures) doc["figures"][f.id] = to_json(f);
+  for (const study::Figure& f : d.figures) doc["figures"][f.id] = study::to_json(f);
   write_text_file(o.out + "/study.json", doc.dump(2) + "\n");
   study::ReportPage page;
-  page.title = "Pixel cache light tracing: the paper's figures on pathspace scenes";
-  page.settings = settings;
-  page.scenes = summaries;
-  for (const StudyFigure& f : figures) page.sections.push_back(report_section(f));
+  page.title = d.title;
+  page.settings = d.settings;
+  page.scenes = d.scenes;
+  for (const study::Figure& f : d.figures) page.sections.push_back(study::report_section(f));
   write_text_file(o.out + "/study.html", study::html_report(o.out, page));
   if (!o.quiet) fmt::print("wrote {0}/study.html, {0}/study.json and {0}/images/\n", o.out);
-  return 0;
+}
+
+CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
+  CLI::App* study = app.add_subcommand("study", "Reproduce a paper's figures on the built-in scenes (images, JSON, HTML)");
+  study->require_subcommand(1);
+  CLI::App* pclt = study->add_subcommand("pclt", "Pixel cache light tracing paper: figs. 1, 5, 6, 7, 8 (fig. 9 explained)");
+  add_common_options(pclt, &o->pclt, "Seconds per equal-time image (fig. 1); sets the iterations of figs. 5-8");
+  pclt->callback([o] { o->study = "pclt"; });
+  CLI::App* psf = study->add_subcommand(
+      "psf", "Path space filtering papers (2014 consistent, 2021 hashed): their figures and an equal-time comparison");
+  add_common_options(psf, &o->psf, "Seconds per equal-time image (the equal-time comparison)");
+  psf->add_option("--max-spp", o->psf_only.max_spp, "Last sample count of the progressive series (2014 fig. 3): 1, 4, 16, ...")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  psf->add_option("--vertex-set-resolution", o->psf_only.vertex_set_resolution,
+                  "Image size WxH of the vertex sets of the hash table figures (2019 figs. 7, 8)")
+      ->capture_default_str();
+  psf->callback([o] { o->study = "psf"; });
+  return study;
+}
+
+int run_study_command(const StudyCommandOptions& o) {
+  if (o.study == "psf") return run_psf_study(o.psf, o.psf_only);
+  return run_pclt_study(o.pclt);
 }
 
 }  // namespace pathspace::cli

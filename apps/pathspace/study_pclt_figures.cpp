@@ -25,12 +25,6 @@ using study::Measurement;
 using study::MetricFormat;
 using study::Record;
 
-StudyFigure& figure(std::vector<StudyFigure>* figures, const std::string& id) {
-  for (StudyFigure& f : *figures)
-    if (f.id == id) return f;
-  throw Error("study: no figure " + id);
-}
-
 bool has_integrator(const std::string& name) { return integrator_registry().find(name) != nullptr; }
 
 // The settings a figure varies, as they appear in study.json and the HTML tables.
@@ -92,33 +86,6 @@ double metric(const Measurement& m, const char* key) {
   return v ? study::as_number(*v) : 0.0;
 }
 
-// Runs the configurations of one figure on one scene (one seed), in order.
-class FigureRunner {
- public:
-  FigureRunner(const study::ExperimentRunner& runner, const study::PreparedScene& scene, uint64_t seed)
-      : runner_(runner), scene_(scene), seed_(seed) {}
-
-  std::vector<Measurement> run(const std::string& fig, std::vector<Configuration> configurations, const Budget& budget,
-                               std::vector<study::ImageMetric> metrics = {}) const {
-    study::Experiment e;
-    e.name = fig;
-    e.configurations = std::move(configurations);
-    e.seeds = {seed_};
-    e.budget = budget;
-    e.metrics = std::move(metrics);
-    return runner_.run_scene(scene_, e);
-  }
-  Measurement run_one(const std::string& fig, Configuration configuration, const Budget& budget,
-                      std::vector<study::ImageMetric> metrics = {}) const {
-    return run(fig, {std::move(configuration)}, budget, std::move(metrics)).front();
-  }
-
- private:
-  const study::ExperimentRunner& runner_;
-  const study::PreparedScene& scene_;
-  uint64_t seed_;
-};
-
 }  // namespace
 
 std::vector<StudyFigure> make_pclt_figures() {
@@ -175,7 +142,7 @@ std::vector<StudyFigure> make_pclt_figures() {
 }
 
 void describe_fig9(size_t max_builtin_lights, std::vector<StudyFigure>* figures) {
-  figure(figures, "fig9").not_reproduced_reason = fmt::format(
+  study::find_figure(figures, "fig9").not_reproduced_reason = fmt::format(
       "Not reproduced: pathspace's built-in scenes have at most {} light{} each (SmallVCM's Cornell variants), so there "
       "is no many-light scene, and the sun variant (gbs_s) is a box lit through its open side rather than a distant "
       "daylight scene of the paper's scale.",
@@ -186,11 +153,11 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
                       std::vector<StudyFigure>* figures) {
   const std::string& id = scene.id();
   const uint64_t pixels = uint64_t(scene.summary.width) * uint64_t(scene.summary.height);
-  const FigureRunner fr(runner, scene, params.seed);
+  const study::FigureRunner fr(runner, scene, params.seed);
   auto passes = [](uint32_t n) { return Budget::for_passes(std::max<uint32_t>(1, n)); };
 
   // Fig. 1: equal time.
-  StudyFigure& f1 = figure(figures, "fig1");
+  StudyFigure& f1 = study::find_figure(figures, "fig1");
   std::vector<Configuration> fig1 = {defaults("PT", "pt"), defaults("LT", "lt")};
   if (has_integrator("bpt")) fig1.push_back(defaults("BPT", "bpt"));
   SppmSettings sppm_settings;
@@ -212,7 +179,7 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
   const uint32_t n = pclt.iterations;
 
   // Fig. 5: equal iterations.
-  StudyFigure& f5 = figure(figures, "fig5");
+  StudyFigure& f5 = study::find_figure(figures, "fig5");
   const Measurement sppm = fr.run_one("fig5", sppm_config("SPPM", sppm_settings), passes(n));
   f5.runs.push_back(sppm);
   f5.runs.push_back(study::reuse(pclt, "fig5", "PCLT"));
@@ -221,7 +188,7 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
       sppm.time_s > 0 ? pclt.time_s / sppm.time_s : 0.0, pclt.error.rel_mse, sppm.error.rel_mse);
 
   // Fig. 6: visibility shortcuts against the shadow-ray image of the same seed.
-  StudyFigure& f6 = figure(figures, "fig6");
+  StudyFigure& f6 = study::find_figure(figures, "fig6");
   Measurement shadow = study::reuse(pclt, "fig6", "PCLT shadow ray");
   shadow.metrics.set("rel_mse_vs_shadow_ray", 0.0);
   shadow.metrics.set("energy_vs_shadow_ray_percent", 0.0);
@@ -247,7 +214,7 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
                                           "plane test nearly exact and as fast as SPPM).", pclt.error.rel_mse);
 
   // Fig. 7: equal total light paths, split into fewer or more per iteration (plane test, as the paper).
-  StudyFigure& f7 = figure(figures, "fig7");
+  StudyFigure& f7 = study::find_figure(figures, "fig7");
   finding.clear();
   for (int k : {0, 1, 2}) {
     const uint64_t paths = k == 0 ? std::max<uint64_t>(1, pixels / 4) : k == 1 ? pixels : 4 * pixels;
@@ -265,7 +232,7 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
                               "does not change.)";
 
   // Fig. 8: chained map against stochastic maps of shrinking size.
-  StudyFigure& f8 = figure(figures, "fig8");
+  StudyFigure& f8 = study::find_figure(figures, "fig8");
   f8.runs.push_back(study::reuse(pclt, "fig8", "Chained (full) map"));
   finding = fmt::format("Chained: {:.2f} s, relMSE {:.4g}. ", pclt.time_s, pclt.error.rel_mse);
   const uint32_t slots = uint32_t(std::bit_ceil(pixels));
@@ -283,42 +250,6 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
   // The images were needed for fig. 6's comparisons only; the files stay.
   for (StudyFigure& f : *figures)
     for (Measurement& m : f.runs) m.image = Image();
-}
-
-nlohmann::ordered_json to_json(const StudyFigure& f) {
-  nlohmann::ordered_json j;
-  j["id"] = f.id;
-  j["title"] = f.title;
-  j["paper"] = f.paper;
-  j["reproduced"] = f.reproduced;
-  if (f.reproduced) j["method"] = f.method;
-  if (!f.reproduced) j["reason"] = f.not_reproduced_reason;
-  j["findings"] = nlohmann::ordered_json::object();
-  for (const auto& [scene, sentence] : f.findings) j["findings"][scene] = sentence;
-  j["runs"] = nlohmann::ordered_json::array();
-  for (const Measurement& m : f.runs) {
-    nlohmann::ordered_json run = {{"figure", f.id}};
-    const nlohmann::ordered_json fields = study::to_json(m);
-    for (const auto& [key, value] : fields.items())
-      if (key != "seed") run[key] = value;  // every run has the study's seed (settings.seed)
-    j["runs"].push_back(std::move(run));
-  }
-  return j;
-}
-
-study::ReportSection report_section(const StudyFigure& f) {
-  study::ReportSection s;
-  s.id = f.id;
-  s.title = f.title;
-  s.lead = "Paper: " + f.paper;
-  if (f.reproduced)
-    s.method = "Here: " + f.method;
-  else
-    s.note = f.not_reproduced_reason;
-  s.metric_rows = f.metric_rows;
-  s.measurements = f.runs;
-  s.findings = f.findings;
-  return s;
 }
 
 }  // namespace pathspace::cli

@@ -6,28 +6,14 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
-#include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "pathspace/study/experiment_runner.h"
-#include "pathspace/study/html_report.h"
+#include "pathspace/study/figure.h"
 
 namespace pathspace::cli {
 
-struct StudyFigure {
-  std::string id;      // "fig1"
-  std::string title;   // "Fig. 1 - equal time"
-  std::string paper;   // what the paper compares and finds
-  std::string method;  // how the study reproduces it here
-  bool reproduced = true;
-  std::string not_reproduced_reason;
-  std::vector<study::MetricRow> metric_rows;
-  std::vector<study::Measurement> runs;         // every scene, in order
-  std::map<std::string, std::string> findings;  // scene id -> sentence from the numbers
-};
+// The figures of both studies are study::Figure (src/pathspace/study/figure.h).
+using StudyFigure = study::Figure;
 
 struct PcltStudyParams {
   double time_s = 5.0;  // equal-time budget (fig. 1); the iteration count of figs. 5-8 follows from it
@@ -43,10 +29,5 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
                       std::vector<StudyFigure>* figures);
 // Sets fig. 9's reason from the largest light count of the built-in scenes.
 void describe_fig9(size_t max_builtin_lights, std::vector<StudyFigure>* figures);
-
-// study.json's figure object; each run is {"figure": id, ...to_json(measurement)}.
-nlohmann::ordered_json to_json(const StudyFigure& figure);
-// The figure as a section of the HTML page ("Paper: ...", "Here: ...").
-study::ReportSection report_section(const StudyFigure& figure);
 
 }  // namespace pathspace::cli

@@ -103,36 +103,52 @@ std::vector<Measurement> ExperimentRunner::run_cell(const PreparedScene& scene, 
     m.time_budget_s = budget.seconds;
     m.time_s = snap.stats.wall_s;
     m.iterations = snap.stats.spp;
-    m.error = image_error(snap.mean, scene.reference);
-    const ImageError debiased = scene.reference_variance.size() > 0
-                                    ? image_error(snap.mean, scene.reference, &scene.reference_variance)
-                                    : m.error;
-    m.rel_mse_debiased = debiased.rel_mse;
-    m.mse_debiased = debiased.mse;
     collect_statistics(snap.stats.details, configuration.statistics, &m.metrics);
     for (const ImageMetric& metric : experiment.metrics) metric(MeasureContext{scene, snap.mean, snap}, &m.metrics);
-
-    if (!options_.out_dir.empty()) {
-      std::string base = fmt::format("images/{}-{}-{}", scene.id(), slug(experiment.name), slug(configuration.label));
-      if (experiment.seeds.size() > 1) base += fmt::format("-s{}", seed);
-      if (checkpoints > 1) base += fmt::format("-p{}", m.iterations);
-      const ImageFiles files = write_images(options_.out_dir, base, snap.mean, scene.reference, options_.write_exr);
-      m.image_png = files.png;
-      m.error_png = files.error_png;
-      m.image_exr = files.exr;
-    }
-    if (!options_.quiet) {
-      fmt::print("{}: {} {} {}{}: {:.2f} s, {} iterations, relMSE {:.4g}\n", options_.log_prefix, scene.id(), experiment.name,
-                 configuration.label, experiment.seeds.size() > 1 ? fmt::format(" (seed {})", seed) : std::string(),
-                 m.time_s, m.iterations, m.error.rel_mse);
-      std::fflush(stdout);
-    }
-    m.image = std::move(snap.mean);
-    if (options_.on_measurement) options_.on_measurement(m);
-    if (!options_.keep_images) m.image = Image();
+    std::string base = fmt::format("images/{}-{}-{}", scene.id(), slug(experiment.name), slug(configuration.label));
+    if (experiment.seeds.size() > 1) base += fmt::format("-s{}", seed);
+    if (checkpoints > 1) base += fmt::format("-p{}", m.iterations);
+    finish_measurement(scene, base, experiment.seeds.size() > 1 ? fmt::format(" (seed {})", seed) : std::string(), std::move(snap.mean),
+                       &m);
     out.push_back(std::move(m));
   }
   return out;
+}
+
+void ExperimentRunner::finish_measurement(const PreparedScene& scene, const std::string& image_base, const std::string& note,
+                                          Image image, Measurement* m) const {
+  m->error = image_error(image, scene.reference);
+  const ImageError debiased =
+      scene.reference_variance.size() > 0 ? image_error(image, scene.reference, &scene.reference_variance) : m->error;
+  m->rel_mse_debiased = debiased.rel_mse;
+  m->mse_debiased = debiased.mse;
+  if (!options_.out_dir.empty()) {
+    const ImageFiles files = write_images(options_.out_dir, image_base, image, scene.reference, options_.write_exr);
+    m->image_png = files.png;
+    m->error_png = files.error_png;
+    m->image_exr = files.exr;
+  }
+  if (!options_.quiet) {
+    fmt::print("{}: {} {} {}{}: {:.2f} s, {} iterations, relMSE {:.4g}\n", options_.log_prefix, scene.id(), m->experiment, m->label,
+               note, m->time_s, m->iterations, m->error.rel_mse);
+    std::fflush(stdout);
+  }
+  m->image = std::move(image);
+  if (options_.on_measurement) options_.on_measurement(*m);
+  if (!options_.keep_images) m->image = Image();
+}
+
+Measurement ExperimentRunner::measure_post_process(const PreparedScene& scene, const Measurement& source,
+                                                   const std::string& experiment, const std::string& label, Image image,
+                                                   double extra_seconds) const {
+  Measurement m = source;
+  m.experiment = experiment;
+  m.label = label;
+  m.time_s = source.time_s + extra_seconds;
+  m.same_render_as.clear();
+  m.image_png.clear(), m.error_png.clear(), m.image_exr.clear();
+  finish_measurement(scene, fmt::format("images/{}-{}-{}", scene.id(), slug(experiment), slug(label)), "", std::move(image), &m);
+  return m;
 }
 
 std::vector<Measurement> ExperimentRunner::run_scene(const PreparedScene& scene, const Experiment& experiment) const {

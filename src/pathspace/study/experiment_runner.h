@@ -44,9 +44,20 @@ class ExperimentRunner {
   std::vector<Measurement> run_cell(const PreparedScene& scene, const Experiment& experiment,
                                     const Configuration& configuration, uint64_t seed) const;
 
+  // An image computed from a run's image after rendering (a post-process such as a screen-space
+  // filter), measured and written like a rendered cell: `source` with its errors, image files and
+  // label replaced, `extra_seconds` added to its time. The image is kept only with keep_images.
+  Measurement measure_post_process(const PreparedScene& scene, const Measurement& source, const std::string& experiment,
+                                   const std::string& label, Image image, double extra_seconds) const;
+
   const RunnerOptions& options() const { return options_; }
 
  private:
+  // Errors against the scene's reference, image files (image_base: "images/SCENE-..."), the progress
+  // line (with `note` after the label) and on_measurement.
+  void finish_measurement(const PreparedScene& scene, const std::string& image_base, const std::string& note, Image image,
+                          Measurement* m) const;
+
   RunnerOptions options_;
 };
 

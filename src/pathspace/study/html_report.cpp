@@ -9,6 +9,7 @@
 #include "pathspace/base/base64.h"
 #include "pathspace/base/error.h"
 #include "pathspace/study/error_colormap.h"
+#include "pathspace/study/markup_escape.h"
 
 namespace pathspace::study {
 
@@ -16,19 +17,7 @@ namespace {
 
 constexpr int kThumbWidth = 160;  // CSS pixels; small renders are scaled up without smoothing
 
-std::string escape(const std::string& text) {
-  std::string s;
-  for (char c : text) {
-    switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      default: s += c;
-    }
-  }
-  return s;
-}
+std::string escape(const std::string& text) { return escape_markup(text); }
 
 // Each PNG becomes one CSS class holding its data URI; <div>s of that class show it. An image used
 // by several sections (a reused run, the reference) is therefore embedded once.
@@ -89,6 +78,7 @@ table{border-collapse:collapse;margin:.4em 0 .8em 0;font-size:.85em}td,th{border
 th{background:#eee}td.k{text-align:left;background:#f3f3f3;font-weight:600;white-space:nowrap}td.s{font-size:.8em;color:#555;max-width:170px}
 .im{width:160px;background-size:100% 100%;image-rendering:pixelated;margin:auto}.best{font-weight:700;color:#0a6}
 .paper,.method{max-width:70em}.paper{font-style:italic}.finding{background:#fff7d6;padding:.4em .6em;border-left:4px solid #e0b000;max-width:70em}
+.plots{display:flex;flex-wrap:wrap;gap:12px;margin:.6em 0}.plots svg{border:1px solid #ddd;flex:none}
 .legend{display:inline-block;width:320px;height:14px;border:1px solid #999;vertical-align:middle}.nr{background:#fde8e8;padding:.6em;border-left:4px solid #c33}
 )";
 
@@ -176,6 +166,12 @@ std::string html_report(const std::string& out_dir, const ReportPage& page) {
       continue;
     }
     if (!s.method.empty()) body += "<p class=method>" + escape(s.method) + "</p>\n";
+    if (!s.plots.empty()) {
+      body += "<div class=plots>\n";
+      for (const std::string& svg : s.plots) body += svg;
+      body += "</div>\n";
+    }
+    if (const auto it = s.findings.find(""); it != s.findings.end()) body += "<p class=finding>" + escape(it->second) + "</p>\n";
     for (const SceneSummary& scene : page.scenes) section_table(body, s, scene, sheet);
   }
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escape(page.title) +

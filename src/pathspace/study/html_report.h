@@ -2,7 +2,7 @@
 // a table per scene with the reference, the renders, their false-colour error maps and numbers side
 // by side. Self-contained: inline CSS, every PNG embedded once as a base64 data URI (CSS classes, so
 // an image shown in several sections is stored once); no script and no external resource, so the
-// page can be mailed or committed as it is.
+// page can be mailed or committed as it is. Plots are inline SVG (svg_plot.h).
 #pragma once
 
 #include <map>
@@ -30,7 +30,8 @@ struct ReportSection {
   std::string note;    // when set, shown highlighted instead of the tables (e.g. why it is not reproduced)
   std::vector<MetricRow> metric_rows;
   std::vector<Measurement> measurements;      // every scene, in order
-  std::map<std::string, std::string> findings;  // scene id -> a sentence from the numbers
+  std::map<std::string, std::string> findings;  // scene id -> a sentence from the numbers ("": about the whole section)
+  std::vector<std::string> plots;  // inline <svg> elements (svg_plot.h), shown before the scene tables
 };
 
 struct ReportPage {

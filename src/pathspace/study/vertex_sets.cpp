@@ -1,25 +1,12 @@
-// Filter input taken from real renders (shared by the filter benchmark and the figure studies):
-// the selected vertices of one 1920x1080 pass of cornell-box, either the first diffuse vertex of
-// each camera path (primary hits, coherent) or the second one (incoherent second-bounce hits).
-#pragma once
-
-#include <memory>
-#include <vector>
+#include "pathspace/study/vertex_sets.h"
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/pt/pt_integrator.h"
 #include "pathspace/scene/builtin_scenes.h"
 
-namespace pathspace::bench {
+namespace pathspace::study {
 
-enum class VertexSetKind { primary = 0, second_bounce = 1 };
-
-struct VertexSet {
-  std::unique_ptr<Scene> scene;
-  VertexBuffer buffer;
-};
-
-inline std::unique_ptr<VertexSet> make_vertex_set(VertexSetKind kind, int width = 1920, int height = 1080) {
+std::unique_ptr<VertexSet> make_vertex_set(VertexSetKind kind, int width, int height) {
   auto set = std::make_unique<VertexSet>();
   set->scene = std::make_unique<Scene>(make_builtin_scene("cornell-box", width, height));
   const Accel accel(*set->scene);
@@ -38,8 +25,6 @@ inline std::unique_ptr<VertexSet> make_vertex_set(VertexSetKind kind, int width 
   return set;
 }
 
-inline const char* vertex_set_name(VertexSetKind kind) {
-  return kind == VertexSetKind::primary ? "primary" : "second_bounce";
-}
+const char* vertex_set_name(VertexSetKind kind) { return kind == VertexSetKind::primary ? "primary" : "second_bounce"; }
 
-}  // namespace pathspace::bench
+}  // namespace pathspace::study

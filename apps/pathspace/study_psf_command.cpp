@@ -1,0 +1,42 @@
+// `pathspace study psf` (study_psf_figures.h): checks the options, runs every figure on each scene in
+// page order (each scene's reference first), the hash table figures once, and writes the page.
+#include <fmt/format.h>
+
+#include "study_psf_figures.h"
+#include "study_setup.h"
+
+namespace pathspace::cli {
+
+int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
+  int vertex_width = 0, vertex_height = 0;
+  parse_resolution(psf.vertex_set_resolution, "--vertex-set-resolution", &vertex_width, &vertex_height);
+  const StudySetup setup = prepare_study(o);
+  // The equal-time comparison filters the PT image after the render, so images are kept until each
+  // scene is done.
+  const study::ExperimentRunner runner = make_study_runner(o, /*keep_images=*/true);
+  const study::ReferenceSpec reference = study_reference(o, setup);
+  StudyDocument doc;
+  doc.id = "psf";
+  doc.paper = "Path Space Filtering (Keller, Dahm, Binder 2014); Massively Parallel Path Space Filtering (Binder, Fricke, Keller 2021)";
+  doc.title = "Path space filtering: the papers' figures on pathspace scenes";
+  doc.settings = study_settings(o, setup);
+  doc.settings["max_spp"] = psf.max_spp;
+  doc.settings["vertex_set_resolution"] = psf.vertex_set_resolution;
+  doc.figures = make_psf_figures();
+  const PsfStudyParams params{o.time_s, o.seed, psf.max_spp};
+  for (const std::string& name : setup.scene_names) {
+    // One scene at a time: its geometry, acceleration structure and images are freed before the next.
+    const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, setup.width, setup.height}, reference);
+    const study::FigureRunner fr(runner, scene, o.seed);
+    for (auto run : {run_2014_fig2, run_2014_fig3, run_2014_fig4, run_2021_fig1, run_2021_fig4, run_2021_fig10, run_equal_time})
+      run(fr, params, &doc.figures);
+    for (study::Figure& f : doc.figures)
+      for (study::Measurement& m : f.runs) m.image = Image();
+    doc.scenes.push_back(scene.summary);
+  }
+  run_hash_table_figures(vertex_width, vertex_height, o.threads, o.quiet, &doc.figures);
+  write_study(o, doc);
+  return 0;
+}
+
+}  // namespace pathspace::cli

@@ -1,0 +1,57 @@
+// `pathspace study psf`: the figures of the two path space filtering papers as the study reproduces
+// them on built-in scenes, one function per figure, on the study harness (src/pathspace/study/):
+//   Keller, Dahm, Binder 2014 (--filter consistent): fig. 2 iterated averaging, fig. 3 progressive
+//     filtering, fig. 4 the similarity weights (study_psf_2014.cpp);
+//   Binder, Fricke, Keller 2021 (--filter hashed): fig. 1 one path per pixel, fig. 4 voxel size,
+//     fig. 10 second-bounce filtering, and the 2019 short version's figs. 7 and 8 (hash collisions,
+//     filter time) on fixed vertex sets (study_psf_2021.cpp);
+//   an equal-time comparison neither paper has: PT, PT + hashed, PT + consistent and PT followed by
+//     an edge-avoiding à-trous filter in screen space (study_psf_equal_time.cpp).
+// Two sections are placeholders for later work (2014 fig. 7 anti-aliasing, 2014 sec. 2.3 caustics).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pathspace/options/option_values.h"
+#include "pathspace/study/figure.h"
+#include "pathspace/study/svg_plot.h"
+#include "study_command.h"
+
+namespace pathspace::cli {
+
+struct PsfStudyParams {
+  double time_s = 3.0;   // equal-time budget
+  uint64_t seed = 0;     // of every run (the reference has its own)
+  uint32_t max_spp = 64; // 2014 fig. 3's last checkpoint
+};
+
+// Every section in page order, with its texts and no runs yet (the placeholders not reproduced).
+std::vector<study::Figure> make_psf_figures();
+
+// Per scene (each appends its runs, findings and plots to its figure).
+void run_2014_fig2(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2014_fig3(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2014_fig4(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2021_fig1(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2021_fig4(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2021_fig10(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+// Once per study: 2019 figs. 7 and 8 on cornell-box vertex sets of width x height.
+void run_hash_table_figures(int width, int height, int threads, bool quiet, std::vector<study::Figure>* figures);
+
+// Shared by the figure files: a PT configuration with a filter and options given by name, as the CLI
+// takes them ({"psf-iterations", "2"}; a flag has an empty value).
+study::Configuration pt_with(const std::string& label, const std::string& filter,
+                             std::initializer_list<std::pair<std::string, std::string>> options = {});
+// relMSE of the runs against x(run), one series.
+study::PlotSeries rel_mse_series(const std::string& name, const std::vector<study::Measurement>& runs,
+                                 const std::function<double(const study::Measurement&)>& x);
+
+int run_psf_study(const StudyOptions& options, const PsfStudyOptions& psf_options);
+
+}  // namespace pathspace::cli

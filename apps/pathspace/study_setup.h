@@ -1,0 +1,42 @@
+// What every `pathspace study` subcommand does around its figures: checking the common options
+// before any render, the runner and the reference, the settings record, and writing study.json and
+// study.html (atomically, io/atomic_file.h). The pclt and psf studies differ only in their figures.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pathspace/study/experiment_runner.h"
+#include "pathspace/study/figure.h"
+#include "study_command.h"
+
+namespace pathspace::cli {
+
+struct StudySetup {
+  int width = 0, height = 0;
+  std::vector<std::string> scene_names;  // canonical names, no repeats
+  double reference_time_s = 0.0;
+  std::string reference_integrator;
+};
+
+// "WxH" with 1 <= W, H <= 4096; throws UsageError naming `option`.
+void parse_resolution(const std::string& text, const std::string& option, int* width, int* height);
+// Checks the options (UsageError), creates the output folder and checks it is writable.
+StudySetup prepare_study(const StudyOptions& options);
+study::ExperimentRunner make_study_runner(const StudyOptions& options, bool keep_images);
+study::ReferenceSpec study_reference(const StudyOptions& options, const StudySetup& setup);
+// width, height, time_s, reference_time_s, reference_integrator, seed, threads, build_type, integrators.
+nlohmann::ordered_json study_settings(const StudyOptions& options, const StudySetup& setup);
+
+// What a study produced, written as study.json and study.html.
+struct StudyDocument {
+  std::string id, paper, title;
+  nlohmann::ordered_json settings;
+  std::vector<study::SceneSummary> scenes;
+  std::vector<study::Figure> figures;
+};
+void write_study(const StudyOptions& options, const StudyDocument& document);
+
+}  // namespace pathspace::cli
