@@ -86,6 +86,10 @@ std::vector<study::Figure> make_psf_figures() {
                      "PT, PT + hashed and PT + consistent filter, each for the same wall time (whole passes); and the PT "
                      "render followed by 5 à-trous iterations guided by the first hits' normals, albedo and positions "
                      "(cast by the study), its time = PT's + the filter's."));
+  for (study::Figure& fig : f) {
+    if (fig.id.rfind("2014-", 0) == 0) fig.metric_rows = filter_metric_rows("consistent");
+    if (fig.id == "2021-fig1" || fig.id == "2021-fig4" || fig.id == "2021-fig10") fig.metric_rows = filter_metric_rows("hashed");
+  }
   return f;
 }
 
@@ -93,7 +97,25 @@ study::Configuration pt_with(const std::string& label, const std::string& filter
                              std::initializer_list<std::pair<std::string, std::string>> options) {
   OptionValues values;
   for (const auto& [name, value] : options) values.set(name, value);
-  return study::configuration(label, "pt", filter, values);
+  study::Configuration c = study::configuration(label, "pt", filter, values);
+  using study::MetricFormat;
+  if (filter == "hashed")
+    c.statistics = {{"hashed.accumulate_s_per_pass", "accumulate_s_per_pass", 1.0, MetricFormat::seconds},
+                    {"hashed.lookup_s_per_pass", "lookup_s_per_pass", 1.0, MetricFormat::seconds},
+                    {"hashed.occupancy", "occupancy_percent", 100.0, MetricFormat::percent}};
+  if (filter == "consistent")
+    c.statistics = {{"consistent.mean_neighbours", "mean_neighbours", 1.0, MetricFormat::number},
+                    {"consistent.radius_scale", "radius_scale", 1.0, MetricFormat::number}};
+  return c;
+}
+
+std::vector<study::MetricRow> filter_metric_rows(const std::string& filter) {
+  using study::MetricFormat;
+  if (filter == "hashed")
+    return {{"accumulate_s_per_pass", "filter accumulate / pass", MetricFormat::seconds},
+            {"lookup_s_per_pass", "filter lookup / pass", MetricFormat::seconds}};
+  return {{"mean_neighbours", "mean vertices per ball", MetricFormat::number},
+          {"radius_scale", "r(n) / r0, last batch", MetricFormat::number}};
 }
 
 study::PlotSeries rel_mse_series(const std::string& name, const std::vector<study::Measurement>& runs,

@@ -48,6 +48,8 @@ void run_hash_table_figures(int width, int height, int threads, bool quiet, std:
 // takes them ({"psf-iterations", "2"}; a flag has an empty value).
 study::Configuration pt_with(const std::string& label, const std::string& filter,
                              std::initializer_list<std::pair<std::string, std::string>> options = {});
+// The filter's statistics that pt_with collects, as table rows ("hashed" or "consistent").
+std::vector<study::MetricRow> filter_metric_rows(const std::string& filter);
 // relMSE of the runs against x(run), one series.
 study::PlotSeries rel_mse_series(const std::string& name, const std::vector<study::Measurement>& runs,
                                  const std::function<double(const study::Measurement&)>& x);

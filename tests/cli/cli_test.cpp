@@ -195,7 +195,7 @@ TEST_F(CliTest, InfoListsEveryBuiltinSceneById) {
 }
 
 TEST_F(CliTest, HelpOnEveryCommand) {
-  for (const char* args : {"--help", "render --help", "info --help", "compare --help", "study --help", "study pclt --help"}) {
+  for (const char* args : {"--help", "render --help", "info --help", "compare --help", "study --help", "study pclt --help", "study psf --help"}) {
     const CliResult r = run(args);
     EXPECT_EQ(r.exit_code, 0) << args;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << args;
@@ -228,7 +228,39 @@ TEST_F(CliTest, StudyPcltWritesJsonHtmlAndEveryImage) {
   EXPECT_EQ(fig1, (std::vector<std::string>{"pt", "lt", "bpt", "sppm", "pclt"}));
 }
 
+// A tiny `study psf` run: every rendered figure lists runs whose images exist, the placeholders say
+// they are not reproduced, the hash table figures carry their data, and the page has the SVG plots.
+TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
+  const CliResult r = run("study psf --scenes bs_c --resolution 16x12 --time 0.05 --reference-time 0.2 --max-spp 4 "
+                          "--vertex-set-resolution 32x24 --no-exr --quiet -o sp");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(read_all(dir_ / "sp/study.json"));
+  EXPECT_EQ(json.at("study"), "psf");
+  const std::string html = read_all(dir_ / "sp/study.html");
+  for (const char* fig : {"2014-fig2", "2014-fig3", "2014-fig4", "2021-fig1", "2021-fig4", "2021-fig10", "equal-time"}) {
+    SCOPED_TRACE(fig);
+    const auto& f = json.at("figures").at(fig);
+    EXPECT_NE(html.find("id=\"" + std::string(fig) + "\""), std::string::npos);
+    ASSERT_FALSE(f.at("runs").empty());
+    for (const auto& run : f.at("runs")) {
+      EXPECT_GT(run.at("iterations").get<int>(), 0);
+      for (const char* key : {"image_png", "error_png"}) EXPECT_TRUE(fs::exists(dir_ / "sp" / run.at(key).get<std::string>())) << run.at(key);
+    }
+  }
+  for (const char* fig : {"2014-fig7", "2014-sec2.3"}) EXPECT_FALSE(json.at("figures").at(fig).at("reproduced").get<bool>()) << fig;
+  EXPECT_FALSE(json.at("figures").at("2019-fig7").at("data").at("psf_fig7").at("rows").empty());
+  EXPECT_FALSE(json.at("figures").at("2019-fig8").at("data").at("psf_fig8").at("rows").empty());
+  size_t svgs = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, 7u);  // 2014 fig. 3, 2021 fig. 4, 2019 fig. 7 (4), 2019 fig. 8
+  const auto& equal_time = json.at("figures").at("equal-time").at("runs");
+  EXPECT_EQ(equal_time.back().at("label"), "PT + à-trous");
+}
+
 TEST_F(CliTest, StudyMisuseIsAUsageError) {
+  expect_usage_error("study psf --vertex-set-resolution 0x3 --quiet", "--vertex-set-resolution");
+  expect_usage_error("study psf --max-spp 0 --quiet", "--max-spp");
+  expect_usage_error("study psf --scenes nope --quiet", "nope");
   expect_usage_error("study pclt --resolution 16 --quiet", "--resolution");
   expect_usage_error("study pclt --scenes nope --quiet", "nope");
   expect_usage_error("study --quiet", "study");

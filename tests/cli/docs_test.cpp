@@ -45,7 +45,7 @@ const fs::path kRoot = PATHSPACE_SOURCE_DIR;
 
 // Help texts whose --options the documentation may name.
 const char* const kHelpCommands[] = {"--help", "render --help", "info --help", "compare --help", "study --help",
-                                     "study pclt --help"};
+                                     "study pclt --help", "study psf --help"};
 
 // Options of other tools that the documentation shows in commands. Exact names, or prefixes
 // ending in '_' for tools whose flags share one.
