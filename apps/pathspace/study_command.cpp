@@ -54,11 +54,8 @@ int run_pclt_study(const StudyOptions& o) {
   const StudySetup setup = prepare_study(o);
   const study::ExperimentRunner runner = make_study_runner(o, /*keep_images=*/true);  // fig. 6 compares with fig. 1's image
   const study::ReferenceSpec reference = study_reference(o, setup);
-  StudyDocument doc;
-  doc.id = "pclt";
-  doc.paper = "Pixel Cache Light Tracing";
-  doc.title = "Pixel cache light tracing: the paper's figures on pathspace scenes";
-  doc.settings = study_settings(o, setup);
+  StudyDocument doc = study_document(o, setup, "pclt", "Pixel Cache Light Tracing",
+                                     "Pixel cache light tracing: the paper's figures on pathspace scenes");
   doc.figures = make_pclt_figures();
   describe_fig9(max_builtin_light_count(), &doc.figures);
   for (const std::string& name : setup.scene_names) {
@@ -128,6 +125,15 @@ nlohmann::ordered_json study_settings(const StudyOptions& o, const StudySetup& s
   settings["build_type"] = build_type();
   settings["integrators"] = integrator_registry().names();
   return settings;
+}
+
+StudyDocument study_document(const StudyOptions& o, const StudySetup& setup, std::string id, std::string paper, std::string title) {
+  StudyDocument d;
+  d.id = std::move(id);
+  d.paper = std::move(paper);
+  d.title = std::move(title);
+  d.settings = study_settings(o, setup);
+  return d;
 }
 
 void write_study(const StudyOptions& o, const StudyDocument& d) {

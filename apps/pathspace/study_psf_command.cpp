@@ -15,11 +15,10 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
   // scene is done.
   const study::ExperimentRunner runner = make_study_runner(o, /*keep_images=*/true);
   const study::ReferenceSpec reference = study_reference(o, setup);
-  StudyDocument doc;
-  doc.id = "psf";
-  doc.paper = "Path Space Filtering (Keller, Dahm, Binder 2014); Massively Parallel Path Space Filtering (Binder, Fricke, Keller 2021)";
-  doc.title = "Path space filtering: the papers' figures on pathspace scenes";
-  doc.settings = study_settings(o, setup);
+  StudyDocument doc = study_document(
+      o, setup, "psf",
+      "Path Space Filtering (Keller, Dahm, Binder 2014); Massively Parallel Path Space Filtering (Binder, Fricke, Keller 2021)",
+      "Path space filtering: the papers' figures on pathspace scenes");
   doc.settings["max_spp"] = psf.max_spp;
   doc.settings["vertex_set_resolution"] = psf.vertex_set_resolution;
   doc.figures = make_psf_figures();

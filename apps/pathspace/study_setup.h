@@ -37,6 +37,9 @@ struct StudyDocument {
   std::vector<study::SceneSummary> scenes;
   std::vector<study::Figure> figures;
 };
+// A document with its identity and the settings of study_settings, no scenes or figures yet.
+StudyDocument study_document(const StudyOptions& options, const StudySetup& setup, std::string id, std::string paper,
+                             std::string title);
 void write_study(const StudyOptions& options, const StudyDocument& document);
 
 }  // namespace pathspace::cli
