@@ -50,6 +50,10 @@ VertexBuffer make_buffer(size_t paths, uint64_t seed, bool constant = false) {
       b.layer[i] = r == 0 ? kLayerDiffuse : kLayerGlossy;
       b.selected[i] = uint8_t(r);
       b.throughput[i] = rng.next_float() < 0.7f ? Rgb(0.5f, 0.5f, 0.5f) : Rgb(0.8f, 0.2f, 0.2f);
+      // Visibility: most see the one light; hemisphere rays of a few lengths, some escaping.
+      b.visible_lights[i] = rng.next_bounded(5) == 0 ? 0u : 1u;
+      const float lengths[4] = {1.f, 1.1f, 2.f, std::numeric_limits<float>::infinity()};
+      b.open_distance[i] = lengths[rng.next_bounded(8) == 0 ? 2 + rng.next_bounded(2) : rng.next_bounded(2)];
       b.contribution[i] = constant ? Rgb(0.3f, 1.7f, 0.05f)
                                    : Rgb(float(rng.next_bounded(4096)), float(rng.next_bounded(4096)), float(rng.next_bounded(4096))) *
                                          (1.f / 1024.f);
@@ -58,16 +62,25 @@ VertexBuffer make_buffer(size_t paths, uint64_t seed, bool constant = false) {
   return b;
 }
 
-bool similar(const VertexBuffer& b, size_t i, size_t j, const ConsistentFilterSettings& s) {
-  if (b.layer[i] != b.layer[j] || b.selected[i] != b.selected[j]) return false;
-  if ((s.weights & kWeightNormal) && dot(b.shading_normal[i], b.shading_normal[j]) < s.normal_threshold) return false;
+bool similar(const FilterVertex& a, const FilterVertex& b, const ConsistentFilterSettings& s) {
+  if (a.layer != b.layer || a.selected != b.selected) return false;
+  if ((s.weights & kWeightNormal) && dot(a.ns, b.ns) < s.normal_threshold) return false;
   if (s.weights & kWeightAlbedo) {
-    const Rgb d = b.throughput[i] - b.throughput[j];
+    const Rgb d = a.throughput - b.throughput;
     if (std::fabs(d.r) > s.albedo_threshold || std::fabs(d.g) > s.albedo_threshold || std::fabs(d.b) > s.albedo_threshold) return false;
-    if (b.layer[i] != kLayerDiffuse && dot(b.incident[i], b.incident[j]) < s.direction_threshold) return false;
+    if (a.layer != kLayerDiffuse && dot(a.wo, b.wo) < s.direction_threshold) return false;
+  }
+  if (s.weights & kWeightVisibility) {
+    if (a.visible_lights != b.visible_lights) return false;
+    const float la = a.open_distance, lb = b.open_distance;
+    const bool same_length =
+        la == lb || (std::isfinite(la) && std::isfinite(lb) && std::fabs(la - lb) <= s.visibility_threshold * std::max(la, lb));
+    if (!same_length) return false;
   }
   return true;
 }
+
+bool similar(const VertexBuffer& b, size_t i, size_t j, const ConsistentFilterSettings& s) { return similar(b.record(i), b.record(j), s); }
 
 // Eq. 1 by brute force over each batch, eq. 2 with n = paths_before + paths up to the batch's end.
 std::vector<Rgb> brute_force(const VertexBuffer& b, const ConsistentFilterSettings& s, uint64_t paths_before) {
@@ -146,6 +159,7 @@ TEST_P(ConsistentAverages, EqualBruteForceOverThreePasses) {
     const VertexBuffer b = make_buffer(kPixels, 100 + pass);
     std::vector<Rgb> got;
     filter.filter(b, 0, pass, &got);
+    filter.end_pass();
     expect_same(b, got, brute_force(b, s, paths));
     paths += b.paths();
     EXPECT_EQ(filter.paths_so_far(), paths);
@@ -155,12 +169,67 @@ TEST_P(ConsistentAverages, EqualBruteForceOverThreePasses) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, ConsistentAverages,
-                         ::testing::Values(Case{"weights_1_thread", kWeightNormal | kWeightAlbedo, 1, 4.0, 1},
-                                           Case{"weights_2_threads", kWeightNormal | kWeightAlbedo, 1, 4.0, 2},
+                         ::testing::Values(Case{"weights_1_thread", kWeightNormal | kWeightAlbedo | kWeightVisibility, 1, 4.0, 1},
+                                           Case{"weights_2_threads", kWeightNormal | kWeightAlbedo | kWeightVisibility, 1, 4.0, 2},
+                                           Case{"normal_albedo", kWeightNormal | kWeightAlbedo, 1, 4.0, 2},
+                                           Case{"visibility_only", kWeightVisibility, 1, 4.0, 2},
                                            Case{"no_weights", 0u, 1, 4.0, 2}, Case{"normal_only", kWeightNormal, 1, 4.0, 2},
                                            Case{"three_iterations", kWeightNormal | kWeightAlbedo, 3, 4.0, 2},
                                            Case{"small_batches", kWeightNormal, 2, 0.05, 2}),
                          [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+// Anti-aliasing queries (sec. 3, fig. 5): a query point gets the mean of the similar data vertices
+// in its ball (it has no contribution of its own), with the radius of the batch filtered last;
+// with no similar vertex it is not found. With iterations, it averages the last iteration's input.
+TEST(ConsistentFilter, QueriesAverageTheFilteredBatchAroundPointsOutsideIt) {
+  const Scene scene = make_builtin_scene("cornell-box", 32, 32);
+  for (const int iterations : {1, 2}) {
+    SCOPED_TRACE("iterations " + std::to_string(iterations));
+    ConsistentFilterSettings s;
+    s.radius = 0.06f;
+    s.iterations = iterations;
+    s.aa_paths = 1;
+    ConsistentFilter filter(s, scene.camera, kPixels);
+    EXPECT_EQ(filter.needs().query_paths, 1);
+    EXPECT_TRUE(filter.needs().visibility);
+    const VertexBuffer data = make_buffer(kPixels, 21), queries = make_buffer(kPixels, 22);
+    std::vector<Rgb> filtered, values;
+    std::vector<uint8_t> found;
+    filter.filter(data, 0, 0, &filtered);
+    filter.query(queries, &values, &found);
+    filter.end_pass();
+    // What the queries average: the contributions after iterations - 1 rounds of eq. 1.
+    ConsistentFilterSettings before = s;
+    before.iterations = iterations - 1;
+    const std::vector<Rgb> averaged = iterations > 1 ? brute_force(data, before, 0) : data.contribution;
+    const float r = float(double(s.radius) * std::pow(double(kPixels) / double(kPixels), double(s.alpha)));
+    int checked = 0, empty = 0;
+    for (size_t qp = 0; qp < queries.paths(); ++qp)
+      for (int qr = 0; qr < queries.count[qp]; ++qr) {
+        const size_t i = queries.slot(qp, qr);
+        double sum[3] = {0, 0, 0};
+        int count = 0;
+        for (size_t dp = 0; dp < data.paths(); ++dp)
+          for (int dr = 0; dr < data.count[dp]; ++dr) {
+            const size_t j = data.slot(dp, dr);
+            if (distance_squared(data.position[j], queries.position[i]) > r * r) continue;
+            if (!similar(queries.record(i), data.record(j), s)) continue;
+            sum[0] += averaged[j].r, sum[1] += averaged[j].g, sum[2] += averaged[j].b;
+            ++count;
+          }
+        ASSERT_EQ(found[i] != 0, count > 0) << "slot " << i;
+        if (count == 0) {
+          ++empty;
+          continue;
+        }
+        const Rgb want(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
+        ASSERT_EQ(std::memcmp(&values[i], &want, sizeof(Rgb)), 0) << "slot " << i << ": " << values[i].r << " want " << want.r;
+        ++checked;
+      }
+    EXPECT_GT(checked, 100);
+    EXPECT_GT(empty, 0) << "some queries must find nothing similar, or that case was not tested";
+  }
+}
 
 TEST(ConsistentFilter, SmallBudgetFiltersInSeveralBatches) {
   const Scene scene = make_builtin_scene("cornell-box", 32, 32);
@@ -179,7 +248,7 @@ TEST(ConsistentFilter, SmallBudgetFiltersInSeveralBatches) {
 TEST(ConsistentFilter, ConstantIsAFixedPointForAnyRadiusAndWeights) {
   const Scene scene = make_builtin_scene("cornell-box", 32, 32);
   for (const float radius : {0.f, 1e-4f, 0.05f, 0.5f, 100.f})
-    for (const uint32_t weights : {0u, uint32_t(kWeightNormal | kWeightAlbedo)})
+    for (const uint32_t weights : {0u, uint32_t(kWeightNormal | kWeightAlbedo | kWeightVisibility)})
       for (const int iterations : {1, 3}) {
         SCOPED_TRACE("radius " + std::to_string(radius) + " weights " + std::to_string(weights));
         ConsistentFilterSettings s;
@@ -206,10 +275,12 @@ TEST(ConsistentFilter, SwitchesOffWhenEveryBallHoldsOnlyItself) {
   const VertexBuffer b = make_buffer(kPixels, 11);
   std::vector<Rgb> got;
   filter.filter(b, 0, 0, &got);
+  filter.end_pass();
   EXPECT_EQ(filter.stats().max_neighbours_last, 1u);
   EXPECT_EQ(filter.stats().switched_off_after, 1u);
   expect_same(b, got, b.contribution);
   filter.filter(b, 0, 1, &got);
+  filter.end_pass();
   expect_same(b, got, b.contribution);
   EXPECT_EQ(filter.paths_so_far(), 2 * kPixels);
 }

@@ -50,9 +50,24 @@ struct Similarity {
         return false;
       if (a.layer != kLayerDiffuse && dot(a.incident, b.incident) < s.direction_threshold) return false;
     }
+    if (s.weights & kWeightVisibility) {
+      if (a.visible_lights != b.visible_lights) return false;
+      if (!similar_lengths(a.open_distance, b.open_distance, s.visibility_threshold)) return false;
+    }
     return true;
   }
+
+  // Hemisphere rays (sec. 2.1): an escaping ray (infinite length) matches only another one.
+  static bool similar_lengths(float a, float b, float threshold) {
+    if (a == b) return true;
+    if (std::isinf(a) || std::isinf(b)) return false;
+    return std::fabs(a - b) <= threshold * std::max(a, b);
+  }
 };
+
+ConsistentFilter::CellVertex cell_vertex(const VertexBuffer& b, size_t i) {
+  return {b.shading_normal[i], b.incident[i], b.throughput[i], b.visible_lights[i], b.open_distance[i], b.layer[i], b.selected[i]};
+}
 
 }  // namespace
 
@@ -67,9 +82,31 @@ ConsistentFilter::ConsistentFilter(const ConsistentFilterSettings& settings, con
 size_t ConsistentFilter::bytes_per_record() {
   // The grid's records (and their compacted copy) and slots, the slot index, each vertex's data in
   // batch order (weights' data, contribution, radius, and a copy of the radius for the median) and
-  // in cell order (weights' data, radius), and the two contribution arrays of the iteration.
+  // in cell order (weights' data, radius), the two contribution arrays of the iteration and the
+  // queries' data.
   return 2 * sizeof(GridRecord) + 2 * sizeof(GridSlot) + sizeof(uint32_t) + sizeof(BatchVertex) + sizeof(float) +
-         sizeof(CellVertex) + sizeof(float) + 2 * sizeof(Rgb);
+         sizeof(CellVertex) + sizeof(float) + 3 * sizeof(Rgb);
+}
+
+FilterNeeds ConsistentFilter::needs() const {
+  FilterNeeds n;
+  n.visibility = (settings_.weights & kWeightVisibility) != 0;
+  n.query_paths = settings_.aa_paths;
+  return n;
+}
+
+size_t ConsistentFilter::batch_paths(int records_per_path) const {
+  // Per path: its vertex buffer entry and filtered values, the filter's scratch per record, and the
+  // same buffer again for the query-only paths (with their values and found flags).
+  const size_t slots = size_t(std::max(1, records_per_path));
+  size_t per_path = VertexBuffer::bytes_per_path() + slots * (VertexBuffer::bytes_per_slot() + sizeof(Rgb) + bytes_per_record());
+  if (settings_.aa_paths > 0) per_path += VertexBuffer::bytes_per_path() + slots * (VertexBuffer::bytes_per_slot() + sizeof(Rgb) + 1);
+  return std::max<size_t>(1, batch_bytes_ / per_path);
+}
+
+float ConsistentFilter::initial_radius(const VertexBuffer& b, size_t i) const {
+  if (settings_.radius > 0.f) return settings_.radius;
+  return r0_per_distance_ * (b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]));
 }
 
 void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
@@ -78,6 +115,7 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
   const size_t paths = buffer.paths();
   uint32_t max_neighbours = 0;
   uint64_t vertices = 0;
+  batch_radius_scale_ = 0.0;
   if (stats_.switched_off_after == 0) {
     const size_t per_batch = std::max<size_t>(1, batch_bytes_ / bytes_per_record());
     std::vector<uint32_t> slots;
@@ -90,6 +128,7 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
       const double n = double(paths_so_far_ + q);  // paths so far, this batch included (eq. 2)
       const double scale = std::pow(double(pixels_) / n, double(settings_.alpha));
       filter_batch(buffer, slots, scale, filtered, &max_neighbours);
+      batch_radius_scale_ = scale;
       ++stats_.batches;
       stats_.largest_batch = std::max<uint64_t>(stats_.largest_batch, slots.size());
       stats_.radius_scale_last = scale;
@@ -100,13 +139,65 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
     vertices = buffer.total_records();
   }
   paths_so_far_ += paths;
-  ++stats_.passes;
   stats_.vertices += vertices;
+  pass_vertices_ += vertices;
+  pass_max_neighbours_ = std::max(pass_max_neighbours_, max_neighbours);
+  stats_.filter_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ConsistentFilter::end_pass() {
+  ++stats_.passes;
   if (stats_.switched_off_after == 0) {
-    stats_.max_neighbours_last = max_neighbours;
+    stats_.max_neighbours_last = pass_max_neighbours_;
     // Sec. 2.2: no ball holds more than its own vertex, so averaging has ended.
-    if (vertices > 0 && max_neighbours <= 1) stats_.switched_off_after = uint32_t(stats_.passes);
+    if (pass_vertices_ > 0 && pass_max_neighbours_ <= 1) stats_.switched_off_after = uint32_t(stats_.passes);
   }
+  pass_max_neighbours_ = 0;
+  pass_vertices_ = 0;
+}
+
+void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, std::vector<uint8_t>* found) {
+  const auto start = std::chrono::steady_clock::now();
+  const size_t slots = q.paths() * size_t(q.records_per_path());
+  values->assign(slots, Rgb());
+  found->assign(slots, 0);
+  const size_t linked = batch_radius_scale_ > 0.0 ? grid_.compacted_records() : 0;
+  const GridRecord* base = linked ? &grid_.record(0) : nullptr;
+  const Similarity similar{settings_};
+  std::atomic<uint64_t> queries{0}, empty{0};
+  parallel_for(q.paths(), 1024, [&](size_t begin, size_t end) {
+    uint64_t local_queries = 0, local_empty = 0;
+    for (size_t path = begin; path < end; ++path)
+      for (int r = 0; r < q.count[path]; ++r) {
+        const size_t i = q.slot(path, r);
+        ++local_queries;
+        const float radius = float(double(initial_radius(q, i)) * batch_radius_scale_);
+        if (!linked || !all_finite(q.position[i]) || !(radius > 0.f) || !std::isfinite(radius)) {
+          ++local_empty;
+          continue;
+        }
+        // Eq. 1 around a point that is not one of the data points (fig. 5): no central contribution.
+        const CellVertex me = cell_vertex(q, i);
+        double sum[3] = {0.0, 0.0, 0.0};
+        uint32_t count = 0;
+        grid_.for_each_in_radius(q.position[i], radius, [&](const GridRecord& rec, float) {
+          const size_t d = size_t(&rec - base);
+          if (!finite(query_data_[d]) || !similar(me, cell_vertex_[d])) return;
+          sum[0] += query_data_[d].r, sum[1] += query_data_[d].g, sum[2] += query_data_[d].b;
+          ++count;
+        });
+        if (count == 0) {
+          ++local_empty;
+          continue;
+        }
+        (*values)[i] = Rgb(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
+        (*found)[i] = 1;
+      }
+    queries += local_queries;
+    empty += local_empty;
+  });
+  stats_.queries += queries.load();
+  stats_.empty_queries += empty.load();
   stats_.filter_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -120,11 +211,9 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
   parallel_for(m, 4096, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const size_t i = slots[k];
-      const float d = b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]);
-      const float r0 = settings_.radius > 0.f ? settings_.radius : r0_per_distance_ * d;
-      const float r = float(double(r0) * radius_scale);
+      const float r = float(double(initial_radius(b, i)) * radius_scale);
       const bool usable = all_finite(b.position[i]) && std::isfinite(r) && r > 0.f;
-      batch_vertex_[k] = {{b.shading_normal[i], b.incident[i], b.throughput[i], b.layer[i], b.selected[i]}, b.contribution[i], usable ? r : 0.f};
+      batch_vertex_[k] = {cell_vertex(b, i), b.contribution[i], usable ? r : 0.f};
     }
   });
   std::vector<float> valid_radii;
@@ -176,7 +265,9 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
   const Similarity similar{settings_};
   std::atomic<uint32_t> largest{0};
   std::atomic<uint64_t> averaged{0};
-  for (int iteration = 0; iteration < std::max(1, settings_.iterations); ++iteration) {
+  const int iterations = std::max(1, settings_.iterations);
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    if (settings_.aa_paths > 0 && iteration == iterations - 1) query_data_ = in_;
     parallel_for(cells, 64, [&](size_t begin, size_t end) {
       uint32_t local_largest = 0;
       uint64_t local_averaged = 0;
@@ -227,6 +318,8 @@ void ConsistentFilter::statistics(Statistics& out) const {
   out.value("consistent.mean_neighbours", stats_.vertices ? double(stats_.averaged) / double(stats_.vertices) : 0.0,
              "contributions averaged per vertex and iteration");
   out.counter("consistent.max_neighbours_last", stats_.max_neighbours_last, "largest ball count in the last filtered pass");
+  out.counter("consistent.query_paths_records", stats_.queries, "records of the query-only anti-aliasing paths (--psf-aa-paths)");
+  out.counter("consistent.empty_queries", stats_.empty_queries, "query records with no similar vertex in their ball (not accumulated)");
   out.counter("consistent.switched_off_after", stats_.switched_off_after,
               "passes after which every ball held only its own vertex and filtering stopped (0: still filtering; sec. 2.2)");
   out.seconds("consistent.filter_time", stats_.filter_ms * 1e-3);

@@ -15,6 +15,14 @@
 // radius; query and data points are the same set (sec. 2.2). Records are kept in cell order sorted
 // by index, so every sum has a fixed order: images are bit-identical for any thread count.
 //
+// Batches bound the memory: batch_paths() is the number of paths whose vertex buffer, query buffer
+// and filtering scratch fit the budget, and the integrator traces, filters and resolves a pass in
+// batches of that many paths (pixels in order), so a 4K image never holds a whole pass.
+//
+// Anti-aliasing (sec. 3, fig. 7): with --psf-aa-paths K, K more camera paths per pixel end at their
+// selected vertex and query the batch's vertices (query()): the weighted average of eq. 1 around a
+// point that has no contribution of its own; an empty query is not accumulated.
+//
 // Switch-off (sec. 2.2): once the largest number of averaged contributions in a pass is 1 (every
 // ball holds only its own vertex), filtering stops for good; the statistics say after which pass.
 #pragma once
@@ -34,6 +42,7 @@ struct ConsistentFilterStats {
   uint64_t passes = 0, batches = 0, vertices = 0;
   uint64_t averaged = 0;        // contributions averaged, summed over vertices and iterations
   uint64_t largest_batch = 0;   // records
+  uint64_t queries = 0, empty_queries = 0;  // records of query-only paths (--psf-aa-paths)
   uint32_t max_neighbours_last = 0;  // the largest number averaged by one vertex in the last pass
   uint32_t switched_off_after = 0;   // pass count after which filtering stopped; 0: still filtering
   double radius_scale_last = 1.0;    // r / r0 in the last batch
@@ -45,7 +54,11 @@ class ConsistentFilter final : public PathSpaceFilter {
   ConsistentFilter(const ConsistentFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
 
   const char* name() const override { return "consistent"; }
+  FilterNeeds needs() const override;
+  size_t batch_paths(int records_per_path) const override;
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void end_pass() override;
+  void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
   void statistics(Statistics& out) const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
@@ -61,6 +74,8 @@ class ConsistentFilter final : public PathSpaceFilter {
   struct CellVertex {
     Vec3 normal, incident;
     Rgb throughput;
+    uint32_t visible_lights = 0;
+    float open_distance = 0.f;
     uint8_t layer = 0, selected = 0;
   };
   struct BatchVertex {
@@ -72,6 +87,7 @@ class ConsistentFilter final : public PathSpaceFilter {
  private:
   void filter_batch(const VertexBuffer& buffer, const std::vector<uint32_t>& slots, double radius_scale, std::vector<Rgb>* filtered,
                     uint32_t* max_neighbours);
+  float initial_radius(const VertexBuffer& b, size_t slot) const;  // r0 (sec. 2.2)
 
   ConsistentFilterSettings settings_;
   size_t pixels_;
@@ -79,6 +95,10 @@ class ConsistentFilter final : public PathSpaceFilter {
   size_t batch_bytes_;
   uint64_t paths_so_far_ = 0;
   ConsistentFilterStats stats_;
+  // The pass in progress (its batches so far).
+  uint32_t pass_max_neighbours_ = 0;
+  uint64_t pass_vertices_ = 0;
+  double batch_radius_scale_ = 0.0;  // r / r0 of the batch filtered last (0: none to query)
   // Scratch, reused between batches.
   HashGrid grid_;
   std::vector<BatchVertex> batch_vertex_;  // per batch vertex
@@ -87,6 +107,7 @@ class ConsistentFilter final : public PathSpaceFilter {
   std::vector<uint32_t> cell_begin_;                       // first record of each cell, then the end
   std::vector<std::pair<uint64_t, uint32_t>> cell_order_;  // (Morton code, cell), sorted
   std::vector<Rgb> in_, out_;
+  std::vector<Rgb> query_data_;  // per grid record: what queries average (the last iteration's input)
 };
 
 }  // namespace pathspace

@@ -15,14 +15,24 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
            "r0 from the solid angle of K x K pixels at the length of the camera path to the vertex", "sec. 2.2");
   t.number("psf-radius", &S::radius, 0.0, 1e30, "r0 in scene units for every vertex instead (0: from --psf-radius-pixels)", "eq. 2");
   t.choice("psf-weights", &S::weights,
-           std::vector<std::pair<std::string, uint32_t>>{{"normal,albedo", kWeightNormal | kWeightAlbedo},
+           std::vector<std::pair<std::string, uint32_t>>{{"normal,albedo,visibility", kWeightNormal | kWeightAlbedo | kWeightVisibility},
+                                                         {"normal,albedo", kWeightNormal | kWeightAlbedo},
+                                                         {"normal,visibility", kWeightNormal | kWeightVisibility},
+                                                         {"albedo,visibility", kWeightAlbedo | kWeightVisibility},
                                                          {"normal", kWeightNormal},
                                                          {"albedo", kWeightAlbedo},
+                                                         {"visibility", kWeightVisibility},
                                                          {"none", 0u}},
-           "Binary similarity weights: normal, albedo (with the direction on glossy layers), both, or none", "sec. 2.1, fig. 4");
+           "Binary similarity weights: normal, albedo (with the direction on glossy layers), visibility, a combination, or none",
+           "sec. 2.1, fig. 4");
   t.number("psf-normal-threshold", &S::normal_threshold, -1.0, 1.0, "Normal weight: smallest <n_j, n_i> averaged", "sec. 2.1");
   t.number("psf-albedo-threshold", &S::albedo_threshold, 0.0, 1e30,
            "Albedo weight: largest difference of the stored attenuation per channel", "sec. 2.1");
+  t.number("psf-visibility-threshold", &S::visibility_threshold, 0.0, 1.0,
+           "Visibility weight: largest relative difference of the lengths of the vertices' rays along the normal", "sec. 2.1");
+  t.number("psf-aa-paths", &S::aa_paths, 0, 64,
+           "Extra camera paths per pixel and pass that only query the filtered vertices (anti-aliasing); empty queries are not counted",
+           "sec. 3, fig. 7");
   t.number("psf-iterations", &S::iterations, 1, 64, "Iterated averaging: average the averages this many times", "sec. 2, fig. 2");
   t.number("psf-batch-memory", &S::batch_memory_mb, 0.0, 1e9,
            "MiB for filtering one batch of paths; a pass is filtered in as many batches as needed (0: an eighth of the RAM)", "sec. 2");

@@ -24,6 +24,24 @@ struct FilterVertex {
   uint8_t layer = 0;     // BsdfLayerId
   uint8_t segments = 0;  // camera path length to this vertex
   uint8_t selected = 0;  // 0 for the first selected vertex of the path, 1 for the next, ...
+  // What the visibility weight compares (Keller et al. 2014, sec. 2.1), recorded only when a filter
+  // asks for it (VisibilityProbes): bit k is set when the k-th delta light of the probe list is
+  // unoccluded from p; open_distance is the length of one ray along ns (infinite when it escapes).
+  uint32_t visible_lights = 0;
+  float open_distance = 0.f;
+};
+
+// The extra rays a selected vertex traces for the visibility weight: one shadow ray to each listed
+// delta light (point, spot, directional; at most 32), and one ray along the shading normal when the
+// scene has area or environment lights ("comparing the lengths of each one ray shot into the
+// hemisphere", sec. 2.1). The ray along ns is the same for all neighbours with similar normals, so
+// the lengths compare the vertices' surroundings, not the noise of random directions.
+inline constexpr int kMaxVisibilityLights = 32;
+struct VisibilityProbes {
+  const uint32_t* delta_lights = nullptr;
+  int delta_count = 0;
+  bool open_ray = false;
+  PS_HD bool any() const { return delta_count > 0 || open_ray; }
 };
 
 inline constexpr int kMaxPathRecords = kMaxSelectedVertices * kMaxBsdfLayers;

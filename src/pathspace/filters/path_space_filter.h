@@ -18,13 +18,31 @@
 
 namespace pathspace {
 
+// What a filter asks of the integrator that feeds it, besides the selected vertices.
+struct FilterNeeds {
+  bool visibility = false;  // record VisibilityProbes data at each selected vertex
+  int query_paths = 0;      // extra camera paths per pixel per pass that only query (query())
+};
+
 class PathSpaceFilter {
  public:
   virtual ~PathSpaceFilter() = default;
   virtual const char* name() const = 0;
-  // filtered[slot] receives the filtered contribution of every valid record slot of `buffer`.
-  // `pass` and `seed` make jitter a pure function of the vertex's path (determinism).
+  virtual FilterNeeds needs() const { return {}; }
+  // The number of paths the filter takes at once, a batch, for records_per_path slots per path;
+  // 0: the whole pass. The integrator traces, filters and resolves a pass batch by batch, so its
+  // vertex buffer never holds more than one batch.
+  virtual size_t batch_paths(int /*records_per_path*/) const { return 0; }
+  // filtered[slot] receives the filtered contribution of every valid record slot of `buffer`, one
+  // batch of the pass (the whole pass when batch_paths() is 0). `pass` and `seed` make jitter a pure
+  // function of the vertex's path (determinism).
   virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) = 0;
+  // After the last batch of a pass.
+  virtual void end_pass() {}
+  // Queries of extra camera paths (FilterNeeds::query_paths) against the batch filtered last:
+  // values[slot] receives the estimate at each valid record slot, found[slot] whether it had any
+  // data to average (an empty query is not accumulated).
+  virtual void query(const VertexBuffer& /*queries*/, std::vector<Rgb>* /*values*/, std::vector<uint8_t>* /*found*/) {}
   // Statistics accumulated over all passes so far, named "<filter>.<what>".
   virtual void statistics(Statistics&) const {}
   // Debug images of the last pass, when the filter's options asked for them.
@@ -44,7 +62,9 @@ class PassthroughFilter final : public PathSpaceFilter {
 
 // Adds every path of the pass to the film: prefix + sum_i throughput_i * filtered_i, summed in
 // record order exactly as PathSample::value(). Paths with a NaN/Inf result are dropped and counted.
+// With `found`, a path with a record whose slot is not found is left out of the film (a query path
+// whose query was empty).
 void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,
-                           PathCounters* counters);
+                           PathCounters* counters, const std::vector<uint8_t>* found = nullptr);
 
 }  // namespace pathspace

@@ -10,15 +10,24 @@ int records_per_path(const VertexSelection& s) {
 }
 
 void VertexBuffer::resize(size_t paths, int records_per_path) {
-  records_per_path_ = records_per_path;
+  if (records_per_path != records_per_path_) {
+    *this = VertexBuffer();
+    records_per_path_ = records_per_path;
+  }
   const size_t slots = paths * size_t(records_per_path);
-  prefix.assign(paths, Rgb());
-  pixel.assign(paths, 0);
+  prefix.resize(paths);
+  pixel.resize(paths);
   count.assign(paths, 0);
-  for (auto* v : {&position, &geometric_normal, &shading_normal, &incident, &previous_position}) v->assign(slots, Vec3());
-  for (auto* v : {&prefix_distance, &roughness}) v->assign(slots, 0.f);
-  for (auto* v : {&throughput, &contribution}) v->assign(slots, Rgb());
-  for (auto* v : {&layer, &segments, &selected}) v->assign(slots, 0);
+  for (auto* v : {&position, &geometric_normal, &shading_normal, &incident, &previous_position}) v->resize(slots);
+  for (auto* v : {&prefix_distance, &roughness, &open_distance}) v->resize(slots);
+  for (auto* v : {&throughput, &contribution}) v->resize(slots);
+  for (auto* v : {&layer, &segments, &selected}) v->resize(slots);
+  visible_lights.resize(slots);
+}
+
+size_t VertexBuffer::bytes_per_path() { return sizeof(Rgb) + sizeof(uint32_t) + sizeof(uint8_t); }
+size_t VertexBuffer::bytes_per_slot() {
+  return 5 * sizeof(Vec3) + 3 * sizeof(float) + 2 * sizeof(Rgb) + 3 * sizeof(uint8_t) + sizeof(uint32_t);
 }
 
 size_t VertexBuffer::total_records() const { return std::accumulate(count.begin(), count.end(), size_t(0)); }
@@ -43,6 +52,8 @@ void VertexBuffer::store(size_t path, uint32_t pixel_index, const PathSample& s)
     layer[i] = v.layer;
     segments[i] = v.segments;
     selected[i] = v.selected;
+    visible_lights[i] = v.visible_lights;
+    open_distance[i] = v.open_distance;
   }
 }
 
@@ -60,6 +71,8 @@ FilterVertex VertexBuffer::record(size_t i) const {
   v.layer = layer[i];
   v.segments = segments[i];
   v.selected = selected[i];
+  v.visible_lights = visible_lights[i];
+  v.open_distance = open_distance[i];
   return v;
 }
 

@@ -13,6 +13,8 @@ namespace pathspace {
 
 class VertexBuffer {
  public:
+  // Keeps the arrays' contents where the layout is unchanged (slots beyond a path's count are never
+  // read), so a buffer resized for a smaller last batch and back costs no clearing pass.
   void resize(size_t paths, int records_per_path);
   size_t paths() const { return prefix.size(); }
   int records_per_path() const { return records_per_path_; }
@@ -33,6 +35,12 @@ class VertexBuffer {
   std::vector<float> prefix_distance, roughness;
   std::vector<Rgb> throughput, contribution;
   std::vector<uint8_t> layer, segments, selected;
+  std::vector<uint32_t> visible_lights;
+  std::vector<float> open_distance;
+
+  // Bytes one path and one record slot take (the batch budget of a filter counts them).
+  static size_t bytes_per_path();
+  static size_t bytes_per_slot();
 
  private:
   int records_per_path_ = 0;

@@ -1,5 +1,6 @@
 // The built-in scenes: exact copies of SmallVCM's Cornell box variants (docs/scenes.md), selectable
-// by SmallVCM's id (e.g. "bs_c") or a descriptive name (e.g. "cornell-box").
+// by SmallVCM's id (e.g. "bs_c") or a descriptive name (e.g. "cornell-box"), and two scenes made to
+// test path space filters (scene/filter_scenes.h).
 #pragma once
 
 #include <string>
@@ -14,6 +15,7 @@ struct BuiltinSceneInfo {
   std::string id;           // SmallVCM acronym, e.g. "bs_c"
   unsigned mask;            // LoadCornellBox bit mask
   std::string description;
+  Scene (*build)(int width, int height) = nullptr;  // set for scenes that are not Cornell variants
 };
 
 inline constexpr const char* kDefaultSceneName = "cornell-box";

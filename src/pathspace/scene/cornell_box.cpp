@@ -2,6 +2,7 @@
 // geometry §3, materials §4, lights §5, camera §2, 10-segment path limit and 1e-3 ray offsets §6.
 #include "pathspace/base/error.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/filter_scenes.h"
 
 namespace pathspace {
 
@@ -15,6 +16,8 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
       {"cornell-glossy-point", "gbs_p", 452, "glossy floor, blue back wall, small spheres, point light"},
       {"cornell-glossy-background", "gbs_b", 456, "glossy floor, blue back wall, small spheres, constant background light"},
       {"cornell-glossy-sun", "gbs_s", 450, "glossy floor, blue back wall, small spheres, directional sun"},
+      {"filter-leak", "f_l", 0, "room split by a thin wall, point light on one side (light a filter leaks)", make_wall_leak_scene},
+      {"filter-fence", "f_f", 0, "room with a fence of pixel-thin bars, ceiling light (anti-aliasing)", make_fence_scene},
   };
   return scenes;
 }
@@ -28,7 +31,7 @@ const BuiltinSceneInfo* find_builtin_scene(const std::string& name_or_id) {
 Scene make_builtin_scene(const std::string& name_or_id, int width, int height) {
   const BuiltinSceneInfo* info = find_builtin_scene(name_or_id);
   if (!info) throw Error("unknown scene '" + name_or_id + "' (see 'pathspace info --scenes')");
-  Scene scene = make_cornell_box(info->mask, width, height);
+  Scene scene = info->build ? info->build(width, height) : make_cornell_box(info->mask, width, height);
   scene.name = info->name;
   return scene;
 }

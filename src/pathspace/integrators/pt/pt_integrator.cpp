@@ -1,11 +1,13 @@
 #include "pathspace/integrators/pt/pt_integrator.h"
 
+#include <algorithm>
 #include <atomic>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/parallel/parallel_for.h"
+#include "pathspace/sampling/hash.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
@@ -13,6 +15,8 @@ namespace pathspace {
 namespace {
 
 constexpr size_t kPixelGrain = 256;
+// Seeds the samplers of the query-only paths apart from the pass's own paths.
+constexpr uint64_t kQueryStreamSalt = 0x5175657279506174ull;
 
 // Sums per-chunk counters into the pass totals (one atomic add per chunk).
 struct SharedCounters {
@@ -37,6 +41,20 @@ PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSetti
     : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed) {
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
   filter_ = make_filter(filter, FilterContext{scene.camera, pixels});
+  if (filter_) needs_ = filter_->needs();
+  if (needs_.visibility) {
+    // The visibility weight's probes (2014 paper, sec. 2.1): the first 32 delta lights, and the
+    // hemisphere ray when any light is extended.
+    for (uint32_t i = 0; i < view_.num_lights; ++i) {
+      if (is_delta_light(view_.lights[i])) {
+        if (probe_lights_.size() < size_t(kMaxVisibilityLights)) probe_lights_.push_back(i);
+      } else {
+        probes_.open_ray = true;
+      }
+    }
+    probes_.delta_lights = probe_lights_.data();
+    probes_.delta_count = int(probe_lights_.size());
+  }
 }
 
 PtIntegrator::~PtIntegrator() = default;
@@ -71,21 +89,48 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
 void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
   const int per_path = records_per_path(settings_.selection);
-  if (buffer_.paths() != n || buffer_.records_per_path() != per_path) buffer_.resize(n, per_path);
+  const size_t batch = filter_->batch_paths(per_path);
+  const size_t step = batch == 0 ? n : std::min(n, batch);
+  for (size_t first = 0; first < n; first += step) {
+    const size_t paths = std::min(step, n - first);
+    trace_batch(pass, first, paths, 0, &buffer_, counters);
+    filter_->filter(buffer_, seed_, pass, &filtered_);
+    resolve_filtered_pass(buffer_, filtered_, film, &counters);
+    // 2014 paper, sec. 3 (fig. 7): extra camera paths per pixel that only query the batch's
+    // vertices, so anti-aliasing costs a primary ray, not a path.
+    for (int k = 1; k <= needs_.query_paths; ++k) {
+      PathCounters query_counters;
+      trace_batch(pass, first, paths, k, &queries_, query_counters);
+      counters.rays += query_counters.rays;
+      counters.shadow_rays += query_counters.shadow_rays;
+      filter_->query(queries_, &queried_, &found_);
+      resolve_filtered_pass(queries_, queried_, film, &counters, &found_);
+    }
+  }
+  filter_->end_pass();
+}
+
+// Traces the paths of pixels [first, first + paths) into `buffer`. Stream 0 is the pass's paths;
+// stream k > 0 the k-th query-only path of each pixel, with a sampler of its own.
+void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int stream, VertexBuffer* buffer,
+                               PathCounters& counters) {
+  const int per_path = records_per_path(settings_.selection);
+  if (buffer->paths() != paths || buffer->records_per_path() != per_path) buffer->resize(paths, per_path);
+  const uint64_t seed = stream == 0 ? seed_ : hash_combine(seed_ ^ kQueryStreamSalt, uint64_t(stream));
   SharedCounters shared;
-  parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
+  parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
-    for (size_t pixel = begin; pixel < end; ++pixel) {
-      const Sampler sampler(seed_, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local, &sample);
-      buffer_.store(pixel, uint32_t(pixel), sample);
+    for (size_t path = begin; path < end; ++path) {
+      const size_t pixel = first + path;
+      const Sampler sampler(seed, pixel, pass);
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local, &sample,
+                    probes_, stream != 0);
+      buffer->store(path, uint32_t(pixel), sample);
     }
     shared.add(local);
   });
-  shared.flush(counters, n);
-  filter_->filter(buffer_, seed_, pass, &filtered_);
-  resolve_filtered_pass(buffer_, filtered_, film, &counters);
+  shared.flush(counters, stream == 0 ? paths : 0);
 }
 
 void PtIntegrator::statistics(Statistics& out) const {

@@ -36,14 +36,21 @@ class PtIntegrator final : public Integrator {
  private:
   void render_plain(uint32_t pass, Film& film, PathCounters& counters);
   void render_filtered(uint32_t pass, Film& film, PathCounters& counters);
+  void trace_batch(uint32_t pass, size_t first, size_t paths, int stream, VertexBuffer* buffer, PathCounters& counters);
 
   SceneView view_;
   const Accel& accel_;
   PtSettings settings_;
   uint64_t seed_;
   std::unique_ptr<PathSpaceFilter> filter_;  // null: plain path tracing
-  VertexBuffer buffer_;
+  FilterNeeds needs_;
+  std::vector<uint32_t> probe_lights_;  // the delta lights of the visibility weight
+  VisibilityProbes probes_;             // none unless the filter needs visibility
+  VertexBuffer buffer_;                 // one batch of the pass
   std::vector<Rgb> filtered_;
+  VertexBuffer queries_;                // one batch of query-only paths
+  std::vector<Rgb> queried_;
+  std::vector<uint8_t> found_;
 };
 
 }  // namespace pathspace

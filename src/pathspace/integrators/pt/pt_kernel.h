@@ -69,6 +69,40 @@ PS_INLINE void eval_layers(const Material& m, const BsdfLayers& layers, bool spl
   }
 }
 
+// The visibility weight's data of a selected vertex (filters/path_sample.h, VisibilityProbes). These
+// rays use no sampler dimension, so recording them changes nothing else in the path.
+template <typename Tracer>
+PS_HD void probe_visibility(const SceneView& scene, const Tracer& tracer, const SurfaceHit& hit, const Vec3& towards_viewer,
+                            const VisibilityProbes& probes, PathCounters* counters, FilterVertex* g) {
+  g->visible_lights = 0;
+  for (int k = 0; k < probes.delta_count; ++k) {
+    const Light& light = scene.lights[probes.delta_lights[k]];
+    Vec3 d = -light.direction;
+    float dist = kInfinity;
+    if (light.type != LightType::directional) {
+      const Vec3 to = light.position - hit.p;
+      dist = length(to);
+      if (!(dist > 0.f)) continue;
+      d = to / dist;
+    }
+    ++counters->rays;
+    ++counters->shadow_rays;
+    if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, d, dist, scene.ray_epsilon))) g->visible_lights |= 1u << k;
+  }
+  g->open_distance = 0.f;
+  if (probes.open_ray) {
+    const Vec3 up = dot(hit.ns, towards_viewer) >= 0.f ? hit.ns : -hit.ns;
+    SurfaceHit h;
+    ++counters->rays;
+    g->open_distance = tracer.intersect(spawn_ray(hit.p, hit.ng, up, scene.ray_epsilon), &h) ? h.t : kInfinity;
+  }
+}
+
+// Whether a path may still select a vertex after `selected` of them.
+PS_INLINE bool selects_more(const VertexSelection& s, int selected) {
+  return s.mode == VertexSelectionMode::all && selected < s.max_vertices && selected < kMaxSelectedVertices;
+}
+
 // Demodulates the closed vertices into records: contribution = C / albedo, throughput = T albedo.
 PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out) {
   for (int k = 0; k < count; ++k) {
@@ -87,9 +121,13 @@ PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out
 }
 }  // namespace pt_detail
 
+// `probes`: the visibility weight's rays at each selected vertex (none by default). `query_only`: the
+// path ends at its last selectable vertex, whose records then carry no contribution (their
+// contributions come from a filter's query: the anti-aliasing paths of Keller et al. 2014, sec. 3).
 template <typename Tracer>
 PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
-                         const PtSettings& settings, PathCounters* counters, PathSample* out) {
+                         const PtSettings& settings, PathCounters* counters, PathSample* out,
+                         const VisibilityProbes& probes = {}, bool query_only = false) {
   using namespace pt_detail;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const VertexSelection& selection = settings.selection;
@@ -164,7 +202,9 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         sel->throughput = abs_beta;
         for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
         sel->after = Rgb();
+        if (probes.any()) probe_visibility(scene, tracer, hit, -ray.d, probes, counters, &g);
         ++selected;
+        if (query_only && !selects_more(selection, selected)) break;
       }
     }
 
