@@ -33,6 +33,13 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
       for (study::Measurement& m : f.runs) m.image = Image();
     doc.scenes.push_back(scene.summary);
   }
+  {
+    // 2014 fig. 7 needs thin geometry: the built-in fence, with a reference of its own.
+    const study::PreparedScene fence = runner.prepare(study::SceneSpec{"filter-fence", setup.width, setup.height}, reference);
+    run_2014_fig7(study::FigureRunner(runner, fence, o.seed), params, &doc.figures);
+    for (study::Measurement& m : study::find_figure(&doc.figures, "2014-fig7").runs) m.image = Image();
+    doc.scenes.push_back(fence.summary);
+  }
   run_hash_table_figures(vertex_width, vertex_height, o.threads, o.quiet, &doc.figures);
   write_study(o, doc);
   return 0;
