@@ -27,7 +27,8 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
     // One scene at a time: its geometry, acceleration structure and images are freed before the next.
     const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, setup.width, setup.height}, reference);
     const study::FigureRunner fr(runner, scene, o.seed);
-    for (auto run : {run_2014_fig2, run_2014_fig3, run_2014_fig4, run_2021_fig1, run_2021_fig4, run_2021_fig10, run_equal_time})
+    for (auto run : {run_2014_fig2, run_2014_fig3, run_2014_fig4, run_2014_sec23, run_2021_fig1, run_2021_fig4, run_2021_fig10,
+                     run_equal_time})
       run(fr, params, &doc.figures);
     for (study::Figure& f : doc.figures)
       for (study::Measurement& m : f.runs) m.image = Image();

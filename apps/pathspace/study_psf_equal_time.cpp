@@ -1,5 +1,6 @@
 // The equal-time comparison of `pathspace study psf` (study_psf_figures.h), which neither path space
-// filtering paper has: PT, PT + hashed and PT + consistent filter for the same wall time, and PT
+// filtering paper has: PT, PT + hashed, PT + consistent filter (with and without photon-mapped
+// caustics, one photon per pixel and pass) for the same wall time, and PT
 // followed by the edge-avoiding à-trous filter in screen space (study/atrous_filter.h), whose guide
 // buffers and filtering are timed and added to the PT render's time.
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
+#include "pathspace/scene/scene.h"
 #include "pathspace/study/atrous_filter.h"
 #include "pathspace/study/guide_buffers.h"
 #include "study_psf_figures.h"
@@ -26,8 +28,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures) {
   study::Figure& f = study::find_figure(figures, "equal-time");
   const study::PreparedScene& scene = fr.scene();
+  const std::string photons = std::to_string(size_t(scene.scene->camera.width) * size_t(scene.scene->camera.height));
   std::vector<study::Measurement> runs =
-      fr.run(f.id, {pt_with("PT", "none"), pt_with("PT + hashed", "hashed"), pt_with("PT + consistent", "consistent")},
+      fr.run(f.id,
+             {pt_with("PT", "none"), pt_with("PT + hashed", "hashed"), pt_with("PT + consistent", "consistent"),
+              pt_with("PT + consistent + caustic photons", "consistent", {{"psf-caustic-photons", photons}})},
              study::Budget::for_seconds(params.time_s));
   const study::Measurement& pt = runs.front();
   if (pt.image.size() == 0) throw Error("study psf: the equal-time comparison needs the PT image (RunnerOptions::keep_images)");

@@ -1,13 +1,12 @@
 // `pathspace study psf`: the figures of the two path space filtering papers as the study reproduces
 // them on built-in scenes, one function per figure, on the study harness (src/pathspace/study/):
 //   Keller, Dahm, Binder 2014 (--filter consistent): fig. 2 iterated averaging, fig. 3 progressive
-//     filtering, fig. 4 the similarity weights, fig. 7 anti-aliasing on filter-fence (study_psf_2014.cpp);
+//     filtering, fig. 4 the similarity weights, fig. 7 anti-aliasing on filter-fence, sec. 2.3 photon-mapped caustics (study_psf_2014.cpp);
 //   Binder, Fricke, Keller 2021 (--filter hashed): fig. 1 one path per pixel, fig. 4 voxel size,
 //     fig. 10 second-bounce filtering, and the 2019 short version's figs. 7 and 8 (hash collisions,
 //     filter time) on fixed vertex sets (study_psf_2021.cpp);
 //   an equal-time comparison neither paper has: PT, PT + hashed, PT + consistent and PT followed by
 //     an edge-avoiding à-trous filter in screen space (study_psf_equal_time.cpp).
-// One section is a placeholder for later work (2014 sec. 2.3 caustics).
 #pragma once
 
 #include <cstdint>
@@ -30,13 +29,14 @@ struct PsfStudyParams {
   uint32_t max_spp = 64; // 2014 fig. 3's last checkpoint
 };
 
-// Every section in page order, with its texts and no runs yet (the placeholders not reproduced).
+// Every section in page order, with its texts and no runs yet.
 std::vector<study::Figure> make_psf_figures();
 
 // Per scene (each appends its runs, findings and plots to its figure).
 void run_2014_fig2(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
 void run_2014_fig3(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
 void run_2014_fig4(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
+void run_2014_sec23(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
 // Once per study, on the built-in filter-fence scene.
 void run_2014_fig7(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);
 void run_2021_fig1(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);

@@ -1,5 +1,6 @@
 // nvcc compile check of the integrator kernels (pathspace_integrators' *_kernel.h): instantiates the
-// per-path functions a CUDA backend will launch (path tracing with vertex recording, light tracing
+// per-path functions a CUDA backend will launch (path tracing with vertex recording, visibility
+// probes, query-only paths and caustic photons, light tracing
 // with splats, bidirectional path tracing, SPPM's eye pass, photon pass and deposit, PCLT's eye and
 // light passes) with a trivial device tracer, so code that breaks the device-safe subset fails the
 // build early. Nothing here runs; no GPU is needed. The lower layers: layers_compile_check.cu.
@@ -14,6 +15,7 @@
 #include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/integrators/pclt/pclt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
+#include "pathspace/integrators/pt/caustic_photons.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/integrators/sppm/sppm_kernel.h"
@@ -34,7 +36,10 @@ struct NullTracer {
   __device__ bool occluded(const Ray& ray) const { return g_hits[0].t < ray.tmax; }
 };
 
-__global__ void pt_compile_check(SceneView scene, PtSettings settings, Rgb* out, uint32_t n) {
+// Path tracing, plain and with what filters ask for: visibility probes, query-only paths and a
+// caustic photon map (traced by trace_caustic_photon).
+__global__ void pt_compile_check(SceneView scene, PtSettings settings, VisibilityProbes probes, CausticMapView caustics,
+                                 CausticPhoton* photons, Rgb* out, uint32_t n) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
   PathCounters counters;
@@ -43,6 +48,9 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Rgb* out,
   PathSample sample;
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample);
   out[i] = sample.value() + pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters);
+  pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample, probes, i % 2 == 0, &caustics);
+  out[i] += sample.value();
+  trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, &counters, &photons[i]);
 }
 
 __global__ void lt_compile_check(SceneView scene, LtSettings settings, SplatFilmView film, uint32_t n) {

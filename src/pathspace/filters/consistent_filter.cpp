@@ -92,6 +92,7 @@ FilterNeeds ConsistentFilter::needs() const {
   FilterNeeds n;
   n.visibility = (settings_.weights & kWeightVisibility) != 0;
   n.query_paths = settings_.aa_paths;
+  n.caustics = settings_.caustics;
   return n;
 }
 

@@ -34,6 +34,14 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
            "Extra camera paths per pixel and pass that only query the filtered vertices (anti-aliasing); empty queries are not counted",
            "sec. 3, fig. 7");
   t.number("psf-iterations", &S::iterations, 1, 64, "Iterated averaging: average the averages this many times", "sec. 2, fig. 2");
+  t.number("psf-caustic-photons", [](S& s) -> uint64_t& { return s.caustics.photons; }, 0.0, 1e9,
+           "Caustic photons per pass: light -> specular -> diffuse paths come from a photon map gathered at the first selected vertex, "
+           "not from path tracing, and are not filtered (0: off)",
+           "sec. 2.3, fig. 1");
+  t.number("psf-caustic-radius", [](S& s) -> float& { return s.caustics.initial_radius; }, 0.0, 1e30,
+           "Caustic photon radius of the first pass in scene units (0: 1% of the scene's bounding radius)", "sec. 2.3");
+  t.number("psf-caustic-alpha", [](S& s) -> float& { return s.caustics.alpha; }, 1e-3, 1.0,
+           "Caustic radius shrinking: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) (Knaus-Zwicker)", "sec. 2.3");
   t.number("psf-batch-memory", &S::batch_memory_mb, 0.0, 1e9,
            "MiB for filtering one batch of paths; a pass is filtered in as many batches as needed (0: an eighth of the RAM)", "sec. 2");
   return t;

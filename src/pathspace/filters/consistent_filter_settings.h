@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "pathspace/filters/caustic_settings.h"
+
 namespace pathspace {
 
 // Binary similarity weights of sec. 2.1 (bit set: the weight is on).
@@ -23,7 +25,8 @@ struct ConsistentFilterSettings {
   float visibility_threshold = 0.25f;  // hemisphere rays: largest |l_i - l_j| / max(l_i, l_j)
   int iterations = 1;              // iterated averaging, fig. 2
   int aa_paths = 0;                // extra query-only camera paths per pixel and pass (sec. 3, fig. 7)
-  double batch_memory_mb = 0.0;    // memory for one batch's filtering; 0: an eighth of the physical memory
+  double batch_memory_mb = 0.0;
+  CausticSettings caustics;        // sec. 2.3: photon-mapped caustics (off: 0 photons)    // memory for one batch's filtering; 0: an eighth of the physical memory
 };
 
 }  // namespace pathspace

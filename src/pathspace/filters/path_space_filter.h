@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pathspace/base/state_archive.h"
+#include "pathspace/filters/caustic_settings.h"
 #include "pathspace/film/film.h"
 #include "pathspace/film/image.h"
 #include "pathspace/filters/vertex_buffer.h"
@@ -22,6 +23,7 @@ namespace pathspace {
 struct FilterNeeds {
   bool visibility = false;  // record VisibilityProbes data at each selected vertex
   int query_paths = 0;      // extra camera paths per pixel per pass that only query (query())
+  CausticSettings caustics; // photon-mapped caustics at the first selected vertex, not filtered
 };
 
 class PathSpaceFilter {

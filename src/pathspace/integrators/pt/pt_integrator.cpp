@@ -55,6 +55,9 @@ PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSetti
     probes_.delta_lights = probe_lights_.data();
     probes_.delta_count = int(probe_lights_.size());
   }
+  if (needs_.caustics.enabled())
+    caustics_ = std::make_unique<CausticPhotonMap>(view_, needs_.caustics,
+                                                   settings_.max_segments > 0 ? settings_.max_segments : view_.max_path_segments);
 }
 
 PtIntegrator::~PtIntegrator() = default;
@@ -91,6 +94,7 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
   const int per_path = records_per_path(settings_.selection);
   const size_t batch = filter_->batch_paths(per_path);
   const size_t step = batch == 0 ? n : std::min(n, batch);
+  if (caustics_) caustics_->build(accel_, seed_, pass, counters);  // 2014 paper, sec. 2.3
   for (size_t first = 0; first < n; first += step) {
     const size_t paths = std::min(step, n - first);
     trace_batch(pass, first, paths, 0, &buffer_, counters);
@@ -125,7 +129,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
       const size_t pixel = first + path;
       const Sampler sampler(seed, pixel, pass);
       pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local, &sample,
-                    probes_, stream != 0);
+                    probes_, stream != 0, caustics_ ? &caustics_->view() : nullptr);
       buffer->store(path, uint32_t(pixel), sample);
     }
     shared.add(local);
@@ -135,6 +139,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
 
 void PtIntegrator::statistics(Statistics& out) const {
   if (filter_) filter_->statistics(out);
+  if (caustics_) caustics_->statistics(out);
 }
 
 std::vector<NamedImage> PtIntegrator::aovs() const { return filter_ ? filter_->aovs() : std::vector<NamedImage>{}; }

@@ -9,6 +9,7 @@
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/integrators/integrator.h"
+#include "pathspace/integrators/pt/caustic_photon_map.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene_view.h"
 
@@ -46,6 +47,7 @@ class PtIntegrator final : public Integrator {
   FilterNeeds needs_;
   std::vector<uint32_t> probe_lights_;  // the delta lights of the visibility weight
   VisibilityProbes probes_;             // none unless the filter needs visibility
+  std::unique_ptr<CausticPhotonMap> caustics_;  // null unless the filter asks for photon-mapped caustics
   VertexBuffer buffer_;                 // one batch of the pass
   std::vector<Rgb> filtered_;
   VertexBuffer queries_;                // one batch of query-only paths

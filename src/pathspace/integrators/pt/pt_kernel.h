@@ -10,6 +10,7 @@
 
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/filters/path_sample.h"
+#include "pathspace/integrators/pt/caustic_photons.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/light_sampling.h"
@@ -124,10 +125,14 @@ PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out
 // `probes`: the visibility weight's rays at each selected vertex (none by default). `query_only`: the
 // path ends at its last selectable vertex, whose records then carry no contribution (their
 // contributions come from a filter's query: the anti-aliasing paths of Keller et al. 2014, sec. 3).
+// `caustics`: a caustic photon map gathered at every sufficiently diffuse vertex (the selection's
+// roughness test); the path then leaves out the emission it reaches from such a vertex through
+// delta bounces only (those paths are the photons'; caustic_photons.h).
 template <typename Tracer>
 PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
                          const PtSettings& settings, PathCounters* counters, PathSample* out,
-                         const VisibilityProbes& probes = {}, bool query_only = false) {
+                         const VisibilityProbes& probes = {}, bool query_only = false,
+                         const CausticMapView* caustics = nullptr) {
   using namespace pt_detail;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const VertexSelection& selection = settings.selection;
@@ -141,12 +146,15 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   float prev_bsdf_pdf = 0.f;
   Vec3 prev_p = ray.o;
   float path_distance = 0.f, prev_distance = 0.f;
+  // With caustics: 1 after a gathering vertex's non-delta bounce, 2 once delta bounces alone
+  // followed it (emission found then belongs to the photon map), 0 otherwise.
+  int caustic_chain = 0;
 
   for (int segments = 1;; ++segments) {
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) {
-      if (scene.environment_light >= 0) {
+      if (scene.environment_light >= 0 && caustic_chain != 2) {
         const Light& env = scene.lights[scene.environment_light];
         if (after_delta || !settings.nee) {
           *radiance += beta * environment_radiance(scene, env, ray.d);
@@ -160,7 +168,7 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     prev_distance = path_distance;
     path_distance += hit.t;
 
-    if (hit.light != kNoLight) {
+    if (hit.light != kNoLight && caustic_chain != 2) {
       const Light& light = scene.lights[hit.light];
       const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
       if (!is_black(le)) {
@@ -185,7 +193,12 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     OpenVertex* sel = nullptr;
     BsdfLayers layers = bsdf_layers(mat);
     if (!selection.split_layers) merge_layers(&layers);
-    if (is_selectable(layers, selection)) {
+    const bool selectable = is_selectable(layers, selection);
+    if (selectable) {
+      // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
+      // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
+      // selected vertex's contribution (light arriving there from elsewhere, filtered with it).
+      if (caustics) *radiance += beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
       ++diffuse_index;
       if (wants_vertex(selection, diffuse_index, selected)) {
         sel = &open[selected];
@@ -243,6 +256,7 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
     if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) break;
     abs_beta *= bs.weight;
+    if (caustics) caustic_chain = selectable ? (bs.delta ? 0 : 1) : (caustic_chain != 0 && bs.delta ? 2 : 0);
     if (sel) {
       Rgb fl[kMaxBsdfLayers];
       eval_layers(mat, layers, selection.split_layers, wo, bs.wi, fl);

@@ -1,0 +1,18 @@
+// Photon-mapped caustics beside path space filtering (Keller, Dahm, Binder 2014, sec. 2.3): what a
+// filter asks of the path tracer when light -> specular -> diffuse -> camera paths are to come from
+// a photon map with its own shrinking radius instead of from path tracing.
+#pragma once
+
+#include <cstdint>
+
+namespace pathspace {
+
+struct CausticSettings {
+  uint64_t photons = 0;        // photons traced per pass; 0: no photon-mapped caustics
+  float initial_radius = 0.f;  // of the first pass in scene units; <= 0: radius_fraction * bounding radius
+  float radius_fraction = 0.01f;
+  float alpha = 2.f / 3.f;     // Knaus-Zwicker: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1)
+  bool enabled() const { return photons > 0; }
+};
+
+}  // namespace pathspace

@@ -1,0 +1,76 @@
+#include "pathspace/integrators/pt/caustic_photon_map.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/base/error.h"
+#include "pathspace/parallel/parallel_for.h"
+
+namespace pathspace {
+
+namespace {
+// Separates the photons' random stream from the camera paths' (both are indexed from 0).
+constexpr uint64_t kCausticStream = 0x636175737469637aull;
+}  // namespace
+
+CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments)
+    : scene_(scene), settings_(settings), max_segments_(max_segments) {
+  r0_ = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
+  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("caustic photon radius must be positive, not {}", r0_));
+  if (!(settings.alpha > 0.f && settings.alpha <= 1.f)) throw Error(fmt::format("caustic photon alpha must be in (0, 1], not {}", settings.alpha));
+}
+
+float CausticPhotonMap::radius(uint32_t pass) const {
+  double r2 = double(r0_) * double(r0_);
+  for (uint32_t i = 1; i <= pass; ++i) r2 *= (double(i) + double(settings_.alpha)) / (double(i) + 1.0);
+  return float(std::sqrt(r2));
+}
+
+void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
+  const auto start = std::chrono::steady_clock::now();
+  const size_t n = size_t(settings_.photons);
+  traced_.resize(n);
+  std::atomic<uint64_t> rays{0};
+  const uint64_t photon_seed = seed ^ kCausticStream;
+  parallel_for(n, 256, [&](size_t begin, size_t end) {
+    PathCounters local;
+    for (size_t i = begin; i < end; ++i) {
+      const Sampler sampler(photon_seed, i, pass);
+      trace_caustic_photon(scene_, accel, sampler, max_segments_, &local, &traced_[i]);
+    }
+    rays += local.rays;
+  });
+  counters.rays += rays.load();
+  const float r = radius(pass);
+  const Vec3 nowhere(NAN, NAN, NAN);
+  grid_.build(n, r, [&](size_t i) { return traced_[i].stored ? traced_[i].p : nowhere; });
+  // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
+  const size_t linked = grid_.compacted_records();
+  in_cells_.resize(linked);
+  parallel_for(linked, 4096, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) in_cells_[i] = traced_[grid_.record(i).payload];
+  });
+  view_.grid = grid_.view();
+  view_.photons = in_cells_.data();
+  view_.radius = linked ? r : 0.f;
+  view_.inv_area_count = float(1.0 / (double(kPi) * double(r) * double(r) * double(n)));
+  view_.max_segments = max_segments_;
+  last_radius_ = r;
+  photons_ += n;
+  stored_ += linked;
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void CausticPhotonMap::statistics(Statistics& out) const {
+  out.counter("caustics.photons", photons_, "caustic photon paths traced (sec. 2.3)");
+  out.counter("caustics.stored", stored_, "photons stored after light -> specular+ -> non-delta");
+  out.value("caustics.initial_radius", r0_, "scene units");
+  out.value("caustics.last_radius", last_radius_, "scene units, the last pass of this run");
+  out.seconds("caustics.time", seconds_);
+}
+
+}  // namespace pathspace

@@ -1,0 +1,45 @@
+// The caustic photon map of the path tracer (Keller, Dahm, Binder 2014, sec. 2.3; kernel in
+// caustic_photons.h): per pass, N photon paths from the lights, the caustic photons among them in a
+// hash grid with the pass's radius. The radius shrinks with the pass index as in progressive photon
+// mapping (Knaus and Zwicker 2011: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), the project's SPPM
+// recurrence), so the caustics converge as the filter's radius does; it is a function of the pass
+// index only, so a resumed render continues it without state.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/filters/caustic_settings.h"
+#include "pathspace/hashgrid/hash_grid.h"
+#include "pathspace/integrators/pt/caustic_photons.h"
+#include "pathspace/scene/scene_view.h"
+#include "pathspace/stats/statistics.h"
+
+namespace pathspace {
+
+class Accel;
+
+class CausticPhotonMap {
+ public:
+  CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments);
+
+  // Traces the pass's photons and builds the map; the view stays valid until the next build.
+  void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
+  const CausticMapView& view() const { return view_; }
+  float radius(uint32_t pass) const;  // the pass's radius (pass 0 = first)
+  void statistics(Statistics& out) const;
+
+ private:
+  SceneView scene_;
+  CausticSettings settings_;
+  int max_segments_;
+  float r0_;
+  HashGrid grid_;
+  std::vector<CausticPhoton> traced_, in_cells_;
+  CausticMapView view_;
+  uint64_t photons_ = 0, stored_ = 0;
+  float last_radius_ = 0.f;
+  double seconds_ = 0.0;
+};
+
+}  // namespace pathspace

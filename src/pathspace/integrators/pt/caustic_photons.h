@@ -1,0 +1,98 @@
+// Caustic photons for the path tracer (Keller, Dahm, Binder 2014, sec. 2.3; device-safe, templated
+// on the ray caster like pt_trace_path). A photon path leaves a light and is stored once, at the
+// first non-delta vertex after one or more delta bounces (a light -> specular+ -> diffuse path), then
+// ends; a photon whose first bounce is not delta ends at once. The path tracer gathers these
+// photons at every sufficiently diffuse vertex of a camera path and leaves out exactly the paths
+// they stand for (emission reached from such a vertex through delta bounces only), so no path is
+// counted twice and none is lost. At the first selected vertex the gathered radiance goes into the
+// path's prefix: it is not averaged again by the filter ("the contribution to vertices obtained by
+// photon mapping should not be included in path space filtering"); at later vertices it is light
+// arriving at the selected vertex from elsewhere, averaged with the rest of its contribution.
+#pragma once
+
+#include "pathspace/hashgrid/hash_grid_view.h"
+#include "pathspace/integrators/common/light_dimensions.h"
+#include "pathspace/integrators/common/light_path_start.h"
+#include "pathspace/materials/bsdf.h"
+#include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/shading_material.h"
+#include "pathspace/stats/path_counters.h"
+
+namespace pathspace {
+
+struct CausticPhoton {
+  Vec3 p;
+  Vec3 wi;      // unit, from p towards where the photon came from
+  Rgb power;    // Phi
+  uint8_t segments = 0;  // light-path segments to p
+  bool stored = false;
+};
+
+// The photon map of one pass: a hash grid over the stored photons, photons[i] belonging to grid
+// record i (cell order), and the pass's radius and normalisation 1 / (pi r^2 N).
+struct CausticMapView {
+  HashGridView grid;
+  const CausticPhoton* photons = nullptr;
+  float radius = 0.f;
+  float inv_area_count = 0.f;
+  int max_segments = 0;
+};
+
+// Traces one photon path; *out receives the stored photon (out->stored false when there is none).
+template <typename Tracer>
+PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, int max_segments,
+                                PathCounters* counters, CausticPhoton* out) {
+  out->stored = false;
+  LightPathStart start;
+  if (!start_light_path(scene, sampler, &start)) return;
+  const EmissionSample& e = start.emission;
+  Rgb beta = e.weight * (1.f / start.select_prob);
+  Ray ray = is_area_light(*start.light) ? spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon) : Ray{e.p, e.d, 0.f, kInfinity};
+  // The shortest camera side is one segment, so longer light paths cannot join.
+  for (int segments = 1; segments < max_segments; ++segments) {
+    SurfaceHit hit;
+    ++counters->rays;
+    if (!tracer.intersect(ray, &hit)) return;
+    Material textured;
+    const Material& mat = shading_material(scene, hit, &textured);
+    const Vec3 wi_world = -ray.d;
+    if (segments > 1 && bsdf_has_non_delta(mat)) {
+      *out = {hit.p, wi_world, beta, uint8_t(segments), true};
+      return;
+    }
+    const Frame frame(hit.ns);
+    const uint32_t v = uint32_t(segments - 1);
+    BsdfSample bs;
+    const Point2 ub{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)), sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
+    if (!bsdf_sample(mat, frame.to_local(wi_world), sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub,
+                     TransportMode::importance, &bs))
+      return;
+    if (!bs.delta) return;  // not a caustic path (any more)
+    beta *= bs.weight;
+    if (is_black(beta) || !all_finite(beta)) return;
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+  }
+}
+
+// Radiance reflected towards wo (world, unit) at a camera-path vertex by the caustic photons within
+// the pass's radius: sum f(wo, wi_p) Phi_p / (pi r^2 N), photons from the side the camera path
+// arrived from only, and only where the joined path fits the segment limit. Summed in the grid's
+// record order: deterministic.
+PS_INLINE Rgb gather_caustics(const SceneView& scene, const CausticMapView& map, const SurfaceHit& hit, const Material& mat,
+                              const Vec3& wo, int camera_segments) {
+  if (map.radius <= 0.f) return Rgb();
+  const Vec3 n_front = dot(hit.ng, wo) >= 0.f ? hit.ng : -hit.ng;
+  const Frame frame(hit.ns);
+  const Vec3 wo_local = frame.to_local(wo);
+  Rgb sum;
+  map.grid.for_each_in_radius(hit.p, map.radius, [&](const GridRecord& rec, float) {
+    const CausticPhoton& ph = map.photons[size_t(&rec - map.grid.records)];
+    if (camera_segments + int(ph.segments) > map.max_segments) return;
+    if (dot(n_front, ph.wi) <= 0.f) return;
+    const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
+    if (all_finite(c)) sum += c;
+  });
+  return sum * map.inv_area_count;
+}
+
+}  // namespace pathspace
