@@ -86,10 +86,15 @@ std::vector<Case> cases() {
   bpt.strategy_images = 3;
   HashedFilterSettings hashed;
   hashed.debug_images = true;  // its AOVs are compared too
+  ConsistentFilterSettings everything;  // batches, query paths and caustic photons
+  everything.aa_paths = 1;
+  everything.batch_memory_mb = 0.05;
+  everything.caustics.photons = 3000;
   return {
       {"pt", threaded(make_render_config("pt", PtSettings{}, kSeed))},
       {"pt_hashed", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "hashed", hashed))},
       {"pt_consistent", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "consistent", ConsistentFilterSettings{}))},
+      {"pt_consistent_caustics_aa", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "consistent", everything))},
       {"lt", threaded(make_render_config("lt", LtSettings{}, kSeed))},
       {"bpt_strategy_images", threaded(make_render_config("bpt", bpt, kSeed))},
       {"sppm", threaded(make_render_config("sppm", SppmSettings{}, kSeed))},

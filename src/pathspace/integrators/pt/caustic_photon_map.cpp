@@ -73,4 +73,18 @@ void CausticPhotonMap::statistics(Statistics& out) const {
   out.seconds("caustics.time", seconds_);
 }
 
+void CausticPhotonMap::save_state(StateWriter& out) const {
+  out.put("caustics.photons", photons_);
+  out.put("caustics.stored", stored_);
+  out.put("caustics.last_radius", last_radius_);
+  out.put("caustics.seconds", seconds_);
+}
+
+void CausticPhotonMap::load_state(StateReader& in) {
+  in.get("caustics.photons", &photons_);
+  in.get("caustics.stored", &stored_);
+  in.get("caustics.last_radius", &last_radius_);
+  in.get("caustics.seconds", &seconds_);
+}
+
 }  // namespace pathspace

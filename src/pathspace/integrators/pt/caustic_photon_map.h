@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pathspace/base/state_archive.h"
 #include "pathspace/filters/caustic_settings.h"
 #include "pathspace/hashgrid/hash_grid.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
@@ -28,6 +29,9 @@ class CausticPhotonMap {
   const CausticMapView& view() const { return view_; }
   float radius(uint32_t pass) const;  // the pass's radius (pass 0 = first)
   void statistics(Statistics& out) const;
+  // The totals behind the statistics (the radius follows from the pass index).
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
 
  private:
   SceneView scene_;

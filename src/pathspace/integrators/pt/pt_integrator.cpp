@@ -144,12 +144,14 @@ void PtIntegrator::statistics(Statistics& out) const {
 
 std::vector<NamedImage> PtIntegrator::aovs() const { return filter_ ? filter_->aovs() : std::vector<NamedImage>{}; }
 
-// Passes of plain PT are independent; a filter may carry statistics from pass to pass.
+// Passes of plain PT are independent; a filter and the caustic photons carry statistics from pass to pass.
 void PtIntegrator::save_state(StateWriter& out) const {
   if (filter_) filter_->save_state(out);
+  if (caustics_) caustics_->save_state(out);
 }
 void PtIntegrator::load_state(StateReader& in) {
   if (filter_) filter_->load_state(in);
+  if (caustics_) caustics_->load_state(in);
 }
 
 }  // namespace pathspace
