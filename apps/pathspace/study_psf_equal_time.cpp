@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
-#include "pathspace/scene/scene.h"
 #include "pathspace/study/atrous_filter.h"
 #include "pathspace/study/guide_buffers.h"
 #include "study_psf_figures.h"
@@ -28,11 +27,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures) {
   study::Figure& f = study::find_figure(figures, "equal-time");
   const study::PreparedScene& scene = fr.scene();
-  const std::string photons = std::to_string(size_t(scene.scene->camera.width) * size_t(scene.scene->camera.height));
   std::vector<study::Measurement> runs =
       fr.run(f.id,
              {pt_with("PT", "none"), pt_with("PT + hashed", "hashed"), pt_with("PT + consistent", "consistent"),
-              pt_with("PT + consistent + caustic photons", "consistent", {{"psf-caustic-photons", photons}})},
+              pt_with("PT + consistent + caustic photons", "consistent", {{"psf-caustic-photons", "1"}})},
              study::Budget::for_seconds(params.time_s));
   const study::Measurement& pt = runs.front();
   if (pt.image.size() == 0) throw Error("study psf: the equal-time comparison needs the PT image (RunnerOptions::keep_images)");

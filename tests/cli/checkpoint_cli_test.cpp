@@ -131,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, ResumeEqualsStraight,
                          ::testing::Values(ResumeCase{"pt", "-i pt"}, ResumeCase{"pt_hashed", "-i pt --filter hashed --psf-scale 4"},
                                            ResumeCase{"pt_consistent", "-i pt --filter consistent --psf-iterations 2 --psf-batch-memory 0.01"},
                                            ResumeCase{"pt_consistent_caustics_aa",
-                                                      "-i pt --filter consistent --psf-aa-paths 1 --psf-caustic-photons 2000 --psf-batch-memory 0.05"},
+                                                      "-i pt --filter consistent --psf-aa-paths 1 --psf-caustic-photons 2 --psf-batch-memory 0.05"},
                                            ResumeCase{"lt", "-i lt"}, ResumeCase{"bpt", "-i bpt"},
                                            ResumeCase{"sppm", "-i sppm --photons 2000"}, ResumeCase{"pclt", "-i pclt --pclt-light-paths 2000"}),
                          [](const ::testing::TestParamInfo<ResumeCase>& info) { return std::string(info.param.name); });

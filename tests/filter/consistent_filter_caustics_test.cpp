@@ -18,24 +18,24 @@
 namespace pathspace {
 namespace {
 
-RenderConfig consistent_config(uint64_t photons, uint64_t seed) {
+RenderConfig consistent_config(double photons_per_pixel, uint64_t seed) {
   ConsistentFilterSettings s;
-  s.caustics.photons = photons;
+  s.caustics.photons_per_pixel = photons_per_pixel;
   return with_filter(make_render_config("pt", PtSettings{}, seed), "consistent", s);
 }
 
 TEST(ConsistentFilterCaustics, PhotonsAreStoredOnlyAfterDeltaBounces) {
   const Scene empty = make_builtin_scene("cornell-empty-area", 16, 16);
-  const auto none = testing::render_with(empty, consistent_config(20000, 1), 2);
+  const auto none = testing::render_with(empty, consistent_config(78.125, 1), 2);  // 20000 photons per pass
   EXPECT_EQ(none.stats.details.number("caustics.photons"), 40000.0);
   EXPECT_EQ(none.stats.details.number("caustics.stored"), 0.0) << "no delta surface, so no caustic photon";
   const Scene box = make_builtin_scene("cornell-box", 16, 16);
-  const auto some = testing::render_with(box, consistent_config(20000, 1), 2);
+  const auto some = testing::render_with(box, consistent_config(78.125, 1), 2);
   EXPECT_GT(some.stats.details.number("caustics.stored"), 400.0);
   EXPECT_LT(some.stats.details.number("caustics.stored"), 20000.0);
 }
 
-double mean_rel_mse(const Scene& scene, const testing::FilteredRender& reference, uint64_t photons, uint32_t spp) {
+double mean_rel_mse(const Scene& scene, const testing::FilteredRender& reference, double photons, uint32_t spp) {
   double sum = 0.0;
   for (uint64_t seed = 0; seed < 2; ++seed)
     sum += image_error(testing::render_with(scene, consistent_config(photons, 500 + seed), spp).mean, reference.mean,
@@ -48,7 +48,7 @@ TEST(ConsistentFilterCaustics, PhotonMappedCausticsLowerTheErrorAndConverge) {
   constexpr int kSize = 48;
   const Scene scene = make_builtin_scene("cornell-box", kSize, kSize);
   const testing::FilteredRender reference = testing::render_with(scene, testing::pt_config(7), 8192);
-  const uint64_t photons = 64 * kSize * kSize;
+  const double photons = 64.0;  // per pixel and pass
   double previous = 0.0;
   for (const uint32_t spp : {4u, 16u, 64u}) {
     const double without = mean_rel_mse(scene, reference, 0, spp);

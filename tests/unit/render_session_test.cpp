@@ -89,7 +89,7 @@ std::vector<Case> cases() {
   ConsistentFilterSettings everything;  // batches, query paths and caustic photons
   everything.aa_paths = 1;
   everything.batch_memory_mb = 0.05;
-  everything.caustics.photons = 3000;
+  everything.caustics.photons_per_pixel = 2.0;
   return {
       {"pt", threaded(make_render_config("pt", PtSettings{}, kSeed))},
       {"pt_hashed", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "hashed", hashed))},

@@ -8,11 +8,11 @@
 namespace pathspace {
 
 struct CausticSettings {
-  uint64_t photons = 0;        // photons traced per pass; 0: no photon-mapped caustics
+  double photons_per_pixel = 0.0;  // photons traced per pass and pixel; 0: no photon-mapped caustics
   float initial_radius = 0.f;  // of the first pass in scene units; <= 0: radius_fraction * bounding radius
   float radius_fraction = 0.01f;
   float alpha = 2.f / 3.f;     // Knaus-Zwicker: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1)
-  bool enabled() const { return photons > 0; }
+  bool enabled() const { return photons_per_pixel > 0.0; }
 };
 
 }  // namespace pathspace

@@ -34,9 +34,9 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
            "Extra camera paths per pixel and pass that only query the filtered vertices (anti-aliasing); empty queries are not counted",
            "sec. 3, fig. 7");
   t.number("psf-iterations", &S::iterations, 1, 64, "Iterated averaging: average the averages this many times", "sec. 2, fig. 2");
-  t.number("psf-caustic-photons", [](S& s) -> uint64_t& { return s.caustics.photons; }, 0.0, 1e9,
-           "Caustic photons per pass: light -> specular -> diffuse paths come from a photon map gathered at the first selected vertex, "
-           "not from path tracing, and are not filtered (0: off)",
+  t.number("psf-caustic-photons", [](S& s) -> double& { return s.caustics.photons_per_pixel; }, 0.0, 1e4,
+           "Caustic photons per pixel and pass: light -> specular -> diffuse paths come from a photon map gathered at diffuse vertices, "
+           "not from path tracing, and the first selected vertex's gather is not filtered (0: off)",
            "sec. 2.3, fig. 1");
   t.number("psf-caustic-radius", [](S& s) -> float& { return s.caustics.initial_radius; }, 0.0, 1e30,
            "Caustic photon radius of the first pass in scene units (0: 1% of the scene's bounding radius)", "sec. 2.3");

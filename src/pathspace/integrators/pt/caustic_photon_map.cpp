@@ -18,7 +18,10 @@ constexpr uint64_t kCausticStream = 0x636175737469637aull;
 }  // namespace
 
 CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments)
-    : scene_(scene), settings_(settings), max_segments_(max_segments) {
+    : scene_(scene),
+      settings_(settings),
+      max_segments_(max_segments),
+      photons_per_pass_(uint64_t(std::llround(settings.photons_per_pixel * double(scene.camera.width) * double(scene.camera.height)))) {
   r0_ = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
   if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("caustic photon radius must be positive, not {}", r0_));
   if (!(settings.alpha > 0.f && settings.alpha <= 1.f)) throw Error(fmt::format("caustic photon alpha must be in (0, 1], not {}", settings.alpha));
@@ -32,7 +35,7 @@ float CausticPhotonMap::radius(uint32_t pass) const {
 
 void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
-  const size_t n = size_t(settings_.photons);
+  const size_t n = size_t(photons_per_pass_);
   traced_.resize(n);
   std::atomic<uint64_t> rays{0};
   const uint64_t photon_seed = seed ^ kCausticStream;
@@ -57,7 +60,7 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
   view_.grid = grid_.view();
   view_.photons = in_cells_.data();
   view_.radius = linked ? r : 0.f;
-  view_.inv_area_count = float(1.0 / (double(kPi) * double(r) * double(r) * double(n)));
+  view_.inv_area_count = n ? float(1.0 / (double(kPi) * double(r) * double(r) * double(n))) : 0.f;
   view_.max_segments = max_segments_;
   last_radius_ = r;
   photons_ += n;

@@ -23,6 +23,7 @@ class Accel;
 class CausticPhotonMap {
  public:
   CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments);
+  uint64_t photons_per_pass() const { return photons_per_pass_; }
 
   // Traces the pass's photons and builds the map; the view stays valid until the next build.
   void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
@@ -37,6 +38,7 @@ class CausticPhotonMap {
   SceneView scene_;
   CausticSettings settings_;
   int max_segments_;
+  uint64_t photons_per_pass_;
   float r0_;
   HashGrid grid_;
   std::vector<CausticPhoton> traced_, in_cells_;
