@@ -37,20 +37,14 @@ const Variant kVariantList[kVariants] = {
 };
 
 void expect_exact_mean(const Scene& scene, const Variant& v, double expected) {
-  double sum = 0, sum_sq = 0;
-  for (int p = 0; p < kPasses; ++p) {
-    ConsistentFilterSettings s;
-    v.apply(&s);
-    const RenderConfig config = with_filter(make_render_config("pt", PtSettings{}, 2000 + uint64_t(p)), "consistent", s);
-    const auto r = testing::render_with(scene, config, 1);
-    double m = 0;
-    for (const Rgb& px : r.mean.pixels) m += px.r;
-    m /= double(r.mean.size());
-    sum += m;
-    sum_sq += m * m;
-  }
-  const testing::MeanTest t = testing::t_test_mean(sum, sum_sq, kPasses, expected);
-  EXPECT_GT(t.p, kAlpha) << v.name << ": mean " << t.mean << " +- " << t.std_error << ", expected " << expected;
+  testing::expect_exact_image_mean(
+      scene,
+      [&](int p) {
+        ConsistentFilterSettings s;
+        v.apply(&s);
+        return with_filter(make_render_config("pt", PtSettings{}, 2000 + uint64_t(p)), "consistent", s);
+      },
+      kPasses, expected, kAlpha, v.name);
 }
 
 class ConsistentFilterFurnace : public ::testing::TestWithParam<int> {};

@@ -2,12 +2,16 @@
 #pragma once
 
 #include <cstring>
+#include <functional>
+
+#include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene.h"
 #include "pathspace/session/render.h"
+#include "support/statistics.h"
 
 namespace pathspace::testing {
 
@@ -31,6 +35,23 @@ inline RenderConfig hashed_config(uint64_t seed = 0, const HashedFilterSettings&
 
 // Plain path tracing.
 inline RenderConfig pt_config(uint64_t seed = 0, const PtSettings& pt = {}) { return make_render_config("pt", pt, seed); }
+
+// Furnace check: the red channel's image mean over `passes` independent single-pass renders
+// (config_for_pass(p) gives each its own seed) equals `expected` by a t-test at level alpha.
+inline void expect_exact_image_mean(const Scene& scene, const std::function<RenderConfig(int)>& config_for_pass, int passes,
+                                    double expected, double alpha, const std::string& what) {
+  double sum = 0, sum_sq = 0;
+  for (int p = 0; p < passes; ++p) {
+    const FilteredRender r = render_with(scene, config_for_pass(p), 1);
+    double m = 0;
+    for (const Rgb& px : r.mean.pixels) m += px.r;
+    m /= double(r.mean.size());
+    sum += m;
+    sum_sq += m * m;
+  }
+  const MeanTest t = t_test_mean(sum, sum_sq, passes, expected);
+  EXPECT_GT(t.p, alpha) << what << ": mean " << t.mean << " +- " << t.std_error << ", expected " << expected;
+}
 
 inline bool bit_identical(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height) return false;

@@ -52,22 +52,16 @@ const Variant kVariantList[kVariants] = {
      }},
 };
 
-// Image means of independent single-pass renders.
 void expect_exact_mean(const Scene& scene, const Variant& v, double expected) {
-  double sum = 0, sum_sq = 0;
-  for (int p = 0; p < kPasses; ++p) {
-    PtSettings pt;
-    HashedFilterSettings h;
-    v.apply(&pt, &h);
-    const auto r = testing::render_with(scene, testing::hashed_config(1000 + uint64_t(p), h, pt), 1);
-    double m = 0;
-    for (const Rgb& px : r.mean.pixels) m += px.r;
-    m /= double(r.mean.size());
-    sum += m;
-    sum_sq += m * m;
-  }
-  const testing::MeanTest t = testing::t_test_mean(sum, sum_sq, kPasses, expected);
-  EXPECT_GT(t.p, kAlpha) << v.name << ": mean " << t.mean << " +- " << t.std_error << ", expected " << expected;
+  testing::expect_exact_image_mean(
+      scene,
+      [&](int p) {
+        PtSettings pt;
+        HashedFilterSettings h;
+        v.apply(&pt, &h);
+        return testing::hashed_config(1000 + uint64_t(p), h, pt);
+      },
+      kPasses, expected, kAlpha, v.name);
 }
 
 class HashedFilterFurnace : public ::testing::TestWithParam<int> {};

@@ -25,17 +25,19 @@ void add_open_room(Scene& scene, uint32_t walls, bool with_floor) {
   add_rect(scene, Vec3(w, -w, 0.f), Vec3(0, 0, h), Vec3(0, 2 * w, 0), walls);     // right
 }
 
-PerspectiveCamera room_camera(int width, int height) {
-  return make_perspective_camera(Vec3(0.f, -3.4f, 1.f), Vec3(0.f, 3.4f, -0.2f), Vec3(0.f, 0.f, 1.f), 45.f, width, height);
+// The camera in front of the open side, the path limit and ray offset of both scenes.
+Scene room_scene(int width, int height) {
+  Scene scene;
+  scene.camera = make_perspective_camera(Vec3(0.f, -3.4f, 1.f), Vec3(0.f, 3.4f, -0.2f), Vec3(0.f, 0.f, 1.f), 45.f, width, height);
+  scene.ray_epsilon = 1e-4f;
+  scene.max_path_segments = 10;
+  return scene;
 }
 
 }  // namespace
 
 Scene make_wall_leak_scene(int width, int height) {
-  Scene scene;
-  scene.camera = room_camera(width, height);
-  scene.ray_epsilon = 1e-4f;
-  scene.max_path_segments = 10;
+  Scene scene = room_scene(width, height);
   const uint32_t white = scene.add_material(make_diffuse(Rgb(0.8f)));
   const uint32_t grey = scene.add_material(make_diffuse(Rgb(0.4f)));
   add_open_room(scene, white, false);
@@ -57,10 +59,7 @@ Scene make_wall_leak_scene(int width, int height) {
 }
 
 Scene make_fence_scene(int width, int height) {
-  Scene scene;
-  scene.camera = room_camera(width, height);
-  scene.ray_epsilon = 1e-4f;
-  scene.max_path_segments = 10;
+  Scene scene = room_scene(width, height);
   const uint32_t white = scene.add_material(make_diffuse(Rgb(0.8f)));
   const uint32_t red = scene.add_material(make_diffuse(Rgb(0.8f, 0.15f, 0.15f)));
   const uint32_t emitter = scene.add_material(Material());
