@@ -53,7 +53,7 @@ Scene make_wall_leak_scene(int width, int height) {
   add_rect(scene, Vec3(-t, -kHalfWidth, 0.f), Vec3(0, 0, kHeight), Vec3(0, 2 * kHalfWidth, 0), white);  // lit face (-x)
   add_rect(scene, Vec3(t, -kHalfWidth, 0.f), Vec3(0, 2 * kHalfWidth, 0), Vec3(0, 0, kHeight), white);   // dark face (+x)
   add_rect(scene, Vec3(-t, -kHalfWidth, 0.f), Vec3(2 * t, 0, 0), Vec3(0, 0, kHeight), white);          // front edge
-  scene.add_point_light(Vec3(-0.5f, 0.f, 1.2f), Rgb(4.f));
+  scene.add_point_light(Vec3(-0.1f, 0.f, 0.3f), Rgb(1.f));
   scene.finalize();
   return scene;
 }
