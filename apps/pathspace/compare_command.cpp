@@ -5,6 +5,7 @@
 
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/io/image_io.h"
+#include "distinct_files.h"
 
 namespace pathspace::cli {
 
@@ -20,6 +21,11 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions* o) {
 }
 
 int run_compare_command(const CompareOptions& o) {
+  if (!o.error_map.empty()) {
+    std::vector<NamedFile> inputs = {{"image", o.image}, {"reference", o.reference}};
+    if (!o.reference_variance.empty()) inputs.push_back({"--reference-variance", o.reference_variance});
+    check_distinct_files({{"--error-map", o.error_map}}, inputs);
+  }
   const Image image = read_image(o.image);
   const Image reference = read_image(o.reference);
   Image variance;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compare_command.h"
+#include "pathspace/base/printable.h"
 #include "pathspace/options/option_spec.h"
 #include "info_command.h"
 #include "render_command.h"
@@ -19,12 +20,25 @@ namespace {
 constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
 
-// CLI11 messages can span lines; the contract is one line per error.
+// CLI11 messages can span lines; the contract is one line per error. Every message passes through
+// here, so input it quotes (a scene file's bytes, a command-line word) is shown with escapes.
 std::string one_line(std::string s) {
   for (char& c : s)
     if (c == '\n') c = ' ';
   while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
+  return pathspace::printable(s);
+}
+
+// CLI11 reports a word that is no command as an unexpected argument; name the commands instead.
+void check_command_word(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->check_name(argv[1])) return;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  throw pathspace::cli::UsageError("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")",
+                                   "run 'pathspace --help' for usage");
 }
 
 }  // namespace
@@ -44,6 +58,7 @@ int main(int argc, char** argv) {
 
   std::string command = "pathspace";
   try {
+    check_command_word(app, argc, argv);
     app.parse(argc, argv);
     if (render_cmd->parsed()) {
       command = "pathspace render";

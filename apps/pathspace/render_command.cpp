@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/base/printable.h"
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
@@ -18,8 +19,13 @@
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/options/option_parse.h"
+#include "pathspace/options/option_spec.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/scene_validation.h"
+#include "distinct_files.h"
 #include "interrupt_handler.h"
+#include "number_options.h"
 #include "periodic_writer.h"
 #include "progress_reporter.h"
 #include "render_outputs.h"
@@ -31,22 +37,12 @@ namespace pathspace::cli {
 
 namespace {
 
-constexpr int kMaxResolution = 16384;
 constexpr const char* kDefaultOutputFolder = "pathspace-out";
 
-struct Resolution {
-  int width = 512, height = 512;
-};
-
+// 512x512 when -r is not given.
 Resolution parse_resolution(const std::string& text) {
-  Resolution r;
-  if (text.empty()) return r;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &r.width, &x, &r.height, &extra) != 3 || (x != 'x' && x != 'X'))
-    throw UsageError("--resolution expects WxH, e.g. 512x512, not '" + text + "'");
-  if (r.width < 1 || r.height < 1 || r.width > kMaxResolution || r.height > kMaxResolution)
-    throw UsageError(fmt::format("--resolution {}: width and height must be between 1 and {}", text, kMaxResolution));
-  return r;
+  if (text.empty()) return Resolution{512, 512};
+  return parse_resolution_option("resolution", text, kMaxImageSide);
 }
 
 // The output files: --out as given, else pathspace-out/<scene>.exr and .png.
@@ -57,13 +53,22 @@ std::vector<std::string> output_paths(const RenderOptions& o, const std::string&
   return {base + ".exr", base + ".png"};
 }
 
+// "x,y,z", each a finite number within the scene coordinate range (scene/scene_validation.h).
 std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
   if (text.empty()) return std::nullopt;
-  Vec3 v;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3 || !all_finite(v))
-    throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}'", option, text));
-  return v;
+  float c[3];
+  size_t begin = 0;
+  for (int i = 0; i < 3; ++i) {
+    const size_t end = i < 2 ? text.find(',', begin) : text.size();
+    if (end == std::string::npos) throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}'", option, text));
+    try {
+      c[i] = parse_float_option(option + 2, text.substr(begin, end - begin), -kMaxSceneCoordinate, kMaxSceneCoordinate);
+    } catch (const OptionError& e) {
+      throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}': {}", option, text, e.what()));
+    }
+    begin = end + 1;
+  }
+  return Vec3(c[0], c[1], c[2]);
 }
 
 // A positional scene argument names a file when it has a scene-file extension or names an existing
@@ -71,6 +76,10 @@ std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
 bool names_scene_file(const std::string& scene) {
   std::error_code ec;
   return is_scene_file(scene) || (!find_builtin_scene(scene) && std::filesystem::is_regular_file(scene, ec));
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
 }
 
 // The integrator, filter and their options, checked against the registry (usage errors name the
@@ -93,30 +102,15 @@ std::vector<std::string> filter_choices() {
   return names;
 }
 
-// Throws UsageError when two outputs name one file, or an output names an input (the scene file;
-// the resumed checkpoint, except as the new checkpoint, which replaces it atomically).
-void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs, const std::string& scene_file,
-                          const std::string& resume) {
-  namespace fs = std::filesystem;
-  auto same = [](const std::string& a, const std::string& b) {
-    std::error_code ec1, ec2;
-    return fs::weakly_canonical(fs::absolute(a, ec1), ec1) == fs::weakly_canonical(fs::absolute(b, ec2), ec2);
-  };
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    for (size_t j = i + 1; j < outputs.size(); ++j)
-      if (same(outputs[i].second, outputs[j].second))
-        throw UsageError(outputs[i].first + " and " + outputs[j].first + " both name '" + outputs[j].second + "'");
-    if (!scene_file.empty() && same(outputs[i].second, scene_file))
-      throw UsageError(outputs[i].first + " '" + outputs[i].second + "' would overwrite the scene file");
-    if (!resume.empty() && outputs[i].first != "--checkpoint" && same(outputs[i].second, resume))
-      throw UsageError(outputs[i].first + " '" + outputs[i].second + "' would overwrite the checkpoint being resumed");
-  }
-}
-
-void check_image_path(const std::string& path) {
+// `option` names where the path came from: "-o" takes every word up to the next option, so a scene
+// name after "-o a.exr" lands here and gets its own message instead of "unsupported extension".
+void check_image_path(const std::string& option, const std::string& path) {
   try {
     image_format_from_path(path);
   } catch (const Error& e) {
+    if (option == "-o" && (find_builtin_scene(path) || is_scene_file(path)))
+      throw UsageError("-o took the scene '" + path + "' as an output file: -o reads every word up to the next option, so "
+                       "give the scene before -o, or end the outputs with --");
     throw UsageError(e.what());
   }
   check_output_writable(path);
@@ -140,26 +134,28 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
   cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
   cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
-  cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(CLI::Range(0.01, 179.0));
+  cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(checked_real("fov", 0.01, 179.0));
   cmd->add_option("--lens-radius", o->lens_radius, "Thin lens radius in scene units for depth of field (0: pinhole; default: the scene's)")
-      ->check(CLI::Range(0.0, 1e30));
+      ->check(checked_real("lens-radius", 0.0, kMaxSceneCoordinate));
   cmd->add_option("--focus-distance", o->focus_distance, "Distance of the plane in focus along the view axis (default: the scene's)")
-      ->check(CLI::Range(1e-30, 1e30));
+      ->check(checked_real("focus-distance", 1e-30, kMaxSceneCoordinate));
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
-  cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")
+      ->check(checked_unsigned("seed", UINT64_MAX))
+      ->capture_default_str();
   cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
       ->check(CLI::IsMember({"uniform", "power"}))
       ->capture_default_str();
   // What does not change the image: free to change when a render is resumed (render_resume.h).
   CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16; with --resume: in total)")
-                         ->check(CLI::Range(1u, 1u << 24))
+                         ->check(checked_integer("spp", 1, 1 << 24))
                          ->group(kRunOptionsGroup);
   cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp; with --resume: this many more")
-      ->check(CLI::Range(1e-3, 1e7))
+      ->check(checked_real("time", 1e-3, 1e7))
       ->excludes(spp)
       ->group(kRunOptionsGroup);
-  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str()->group(kRunOptionsGroup);
+  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str()->group(kRunOptionsGroup);
   cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)")->group(kRunOptionsGroup);
   cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file")->group(kRunOptionsGroup);
   cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)")
@@ -169,13 +165,13 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
                                             "Save the render's state to this file when it ends or is interrupted (it may name the --resume file)")
                                 ->group(kRunOptionsGroup);
   cmd->add_option("--checkpoint-every", o->checkpoint_every, "Also save the checkpoint every S seconds while rendering (between passes)")
-      ->check(CLI::Range(1e-3, 1e9))
+      ->check(checked_real("checkpoint-every", 1e-3, 1e9))
       ->needs(checkpoint)
       ->group(kRunOptionsGroup);
   cmd->add_option("--resume", o->resume, "Continue the render saved in this checkpoint (--spp: to N in total; --time: S more seconds)")
       ->group(kRunOptionsGroup);
   cmd->add_option("--write-every", o->write_every, "Write the outputs every S seconds while rendering (between passes)")
-      ->check(CLI::Range(1e-3, 1e9))
+      ->check(checked_real("write-every", 1e-3, 1e9))
       ->group(kRunOptionsGroup);
   o->registry.add_to(cmd);
   return cmd;
@@ -217,8 +213,13 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     p.key = scene_file_hash(scene_name);
     std::vector<std::string> warnings;
     SceneFileSettings file_settings;
-    p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
-    for (const std::string& w : warnings) fmt::print(stderr, "{}\n", w);
+    try {
+      p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
+    } catch (const Error&) {
+      print_warnings(warnings);  // what was noticed before the error can explain it
+      throw;
+    }
+    print_warnings(warnings);
     p.file_spp = file_settings.spp;
   } else {
     p.label = p.display_name = info->name;
@@ -237,6 +238,10 @@ PreparedScene prepare_scene(const RenderOptions& o) {
   }
   p.scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
   p.scene.finalize();
+  // Every scene, built-in or from any file format, with the command line's camera changes applied.
+  std::vector<std::string> warnings;
+  validate_scene(p.scene, &warnings);
+  print_warnings(warnings);
   return p;
 }
 
@@ -254,12 +259,20 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   plan.images = output_paths(o, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
   plan.variance = o.variance_path;
   plan.stats = o.stats_path;
-  std::vector<std::pair<std::string, std::string>> files;
-  for (const std::string& path : plan.images) files.emplace_back("-o", path), check_image_path(path);
-  if (!plan.variance.empty()) files.emplace_back("--variance-out", plan.variance), check_image_path(plan.variance);
-  if (!plan.stats.empty()) files.emplace_back("--stats", plan.stats), check_output_writable(plan.stats);
-  if (!o.checkpoint.empty()) files.emplace_back("--checkpoint", o.checkpoint), check_output_writable(o.checkpoint);
-  check_distinct_files(files, from_file ? scene_name : std::string(), o.resume);
+  std::vector<NamedFile> files, inputs;
+  for (const std::string& path : plan.images) files.push_back({"-o", path}), check_image_path("-o", path);
+  if (!plan.variance.empty()) files.push_back({"--variance-out", plan.variance}), check_image_path("--variance-out", plan.variance);
+  if (!plan.stats.empty()) files.push_back({"--stats", plan.stats}), check_output_writable(plan.stats);
+  if (from_file) inputs.push_back({"the scene file", scene_name});
+  // The new checkpoint may replace the resumed one (atomically); no other output may.
+  if (!o.resume.empty()) inputs.push_back({"--resume", o.resume});
+  check_distinct_files(files, inputs);
+  if (!o.checkpoint.empty()) {
+    check_output_writable(o.checkpoint);
+    std::vector<NamedFile> all = files;
+    all.push_back({"--checkpoint", o.checkpoint});
+    check_distinct_files(all, from_file ? std::vector<NamedFile>{inputs.front()} : std::vector<NamedFile>{});
+  }
 
   InterruptHandler interrupt;
   PreparedScene prepared = prepare_scene(o);
@@ -346,6 +359,9 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
 }  // namespace
 
 int run_render_command(const RenderOptions& o, const CLI::App& cmd) {
+  // An empty positional is a mistake (an unset shell variable), not a request for the default scene.
+  if (cmd.get_option("scene")->count() > 0 && o.scene.empty())
+    throw UsageError("the scene is an empty string", "run 'pathspace info --scenes' for the list, or pass a scene file");
   if (o.resume.empty()) return render(o, cmd, nullptr);
   const Checkpoint checkpoint = read_checkpoint(o.resume);
   // The integrator and filter first: the checkpoint's other options may not apply to another one.

@@ -15,6 +15,7 @@
 #include "pathspace/session/render.h"
 #include "pathspace/study/html_report.h"
 #include "pathspace/study/image_files.h"
+#include "number_options.h"
 #include "study_pclt_figures.h"
 #include "study_psf_figures.h"
 #include "study_setup.h"
@@ -40,12 +41,14 @@ size_t max_builtin_light_count() {
 void add_common_options(CLI::App* sub, StudyOptions* o, const std::string& time_help) {
   sub->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
   sub->add_option("-r,--resolution", o->resolution, "Image size WxH")->capture_default_str();
-  sub->add_option("-t,--time", o->time_s, time_help)->check(CLI::Range(1e-3, 1e6))->capture_default_str();
+  sub->add_option("-t,--time", o->time_s, time_help)->check(checked_real("time", 1e-3, 1e6))->capture_default_str();
   sub->add_option("--reference-time", o->reference_time_s, "Seconds for each scene's reference (default: 20 x --time)")
-      ->check(CLI::Range(1e-3, 1e7));
+      ->check(checked_real("reference-time", 1e-3, 1e7));
   sub->add_option("--scenes", o->scenes, "Built-in scenes, comma-separated names or ids")->delimiter(',')->capture_default_str();
-  sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")->capture_default_str();
-  sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")
+      ->check(checked_unsigned("seed", UINT64_MAX))
+      ->capture_default_str();
+  sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str();
   sub->add_flag("--no-exr", o->no_exr, "Write PNG only (commit-sized output)");
   sub->add_flag("-q,--quiet", o->quiet, "No progress lines");
 }
@@ -71,11 +74,9 @@ int run_pclt_study(const StudyOptions& o) {
 }  // namespace
 
 void parse_resolution(const std::string& text, const std::string& option, int* width, int* height) {
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", width, &x, height, &extra) != 3 || (x != 'x' && x != 'X'))
-    throw UsageError(option + " expects WxH, e.g. 128x128, not '" + text + "'");
-  if (*width < 1 || *height < 1 || *width > kMaxStudyResolution || *height > kMaxStudyResolution)
-    throw UsageError(fmt::format("{} {}: width and height must be between 1 and {}", option, text, kMaxStudyResolution));
+  const Resolution r = parse_resolution_option(option.substr(2), text, kMaxStudyResolution);
+  *width = r.width;
+  *height = r.height;
 }
 
 StudySetup prepare_study(const StudyOptions& o) {
@@ -171,7 +172,7 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
       "psf", "Path space filtering papers (2014 consistent, 2021 hashed): their figures and an equal-time comparison");
   add_common_options(psf, &o->psf, "Seconds per equal-time image (the equal-time comparison)");
   psf->add_option("--max-spp", o->psf_only.max_spp, "Last sample count of the progressive series (2014 fig. 3): 1, 4, 16, ...")
-      ->check(CLI::Range(1, 1 << 20))
+      ->check(checked_integer("max-spp", 1, 1 << 20))
       ->capture_default_str();
   psf->add_option("--vertex-set-resolution", o->psf_only.vertex_set_resolution,
                   "Image size WxH of the vertex sets of the hash table figures (2019 figs. 7, 8)")

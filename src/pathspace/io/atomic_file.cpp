@@ -1,5 +1,6 @@
 #include "pathspace/io/atomic_file.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -11,6 +12,7 @@
 #include <fstream>
 
 #include "pathspace/base/error.h"
+#include "pathspace/io/file_identity.h"
 
 namespace pathspace {
 
@@ -81,14 +83,19 @@ void rename_into_place(const std::string& temp, const std::string& path) {
 }
 
 // Writes bytes to `file`, checking every step, and fsyncs it, so that once renamed it is never an
-// empty or partial file after a crash. Errors name `shown_as` (the final path).
-void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as) {
+// empty or partial file after a crash. Errors name `shown_as` (the final path). When `replaced`
+// exists, the new file takes its permission bits, as `cp` over an existing file keeps them (the
+// owner stays the writer's: a rename cannot keep another user's ownership).
+void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as,
+                        const std::string& replaced) {
   std::FILE* f = std::fopen(file.c_str(), "wb");
   if (!f) throw Error(shown_as + ": cannot create temporary file '" + file + "': " + std::strerror(errno));
   int err = 0;  // first errno seen
   auto check = [&](bool ok) {
     if (!ok && err == 0) err = errno ? errno : EIO;
   };
+  struct stat old {};
+  if (::stat(replaced.c_str(), &old) == 0) check(::fchmod(fileno(f), old.st_mode & 07777) == 0);
   check(size == 0 || std::fwrite(data, 1, size, f) == size);
   check(std::fflush(f) == 0);
   check(fsync(fileno(f)) == 0);
@@ -133,24 +140,27 @@ OutputSet::~OutputSet() {
 void OutputSet::add(const std::string& path, const void* data, size_t size) {
   check_target(path);
   for (const std::string& p : paths_)
-    if (p == path) throw Error("cannot write '" + path + "' twice in one set of outputs");
-  const std::string temp = temporary_name(path);
+    if (same_file(p, path)) throw Error("cannot write '" + path + "' twice in one set of outputs ('" + p + "' is the same file)");
+  // Through a symlink: the temporary lies next to the link's target and replaces it, the link stays.
+  const std::string target = write_target(path);
+  const std::string temp = temporary_name(target);
   auto listed = std::make_unique<Listed>(temp);
   try {
-    write_bytes_synced(temp, data, size, path);
+    write_bytes_synced(temp, data, size, path, target);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temp, ignored);
     throw;
   }
   paths_.push_back(path);
+  targets_.push_back(target);
   temps_.push_back(temp);
   listed_.push_back(std::move(listed));
 }
 
 void OutputSet::commit() {
   for (; committed_ < temps_.size(); ++committed_) {
-    rename_into_place(temps_[committed_], paths_[committed_]);
+    rename_into_place(temps_[committed_], targets_[committed_]);
     listed_[committed_].reset();
   }
 }

@@ -28,7 +28,9 @@ void check_output_writable(const std::string& path);
 // Until commit() the folder holds the previous set; after it, the new one. A process that dies
 // between two of commit()'s renames (a few microseconds) leaves the files renamed so far new and the
 // rest old, and may leave NAME.tmp-PID-N files; no file is ever partial. A set destroyed without
-// commit() removes its temporaries.
+// commit() removes its temporaries. A path that is a symlink replaces the link's target (the link
+// stays); a replaced file's permission bits are kept. Two paths naming one file (io/file_identity.h)
+// are an error.
 class OutputSet {
  public:
   OutputSet();
@@ -45,7 +47,7 @@ class OutputSet {
 
  private:
   struct Listed;  // a temporary listed for remove_unfinished_temporaries until renamed or removed
-  std::vector<std::string> paths_, temps_;
+  std::vector<std::string> paths_, targets_, temps_;  // as given, after symlinks, temporary
   std::vector<std::unique_ptr<Listed>> listed_;
   size_t committed_ = 0;  // files renamed so far
 };

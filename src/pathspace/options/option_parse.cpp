@@ -50,6 +50,20 @@ int64_t parse_integer_option(const std::string& name, const std::string& text, d
   return value;
 }
 
+uint64_t parse_unsigned_option(const std::string& name, const std::string& text, uint64_t max) {
+  uint64_t value = 0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  if (begin != end && *begin == '+') ++begin;
+  const bool negative = begin != end && *begin == '-';
+  const auto [ptr, ec] = std::from_chars(negative ? begin + 1 : begin, end, value);
+  if (begin == end || ec == std::errc::invalid_argument || ptr != end)
+    throw OptionError(option_message(name, text, "expects a whole number"));
+  if (negative || ec == std::errc::result_out_of_range || value > max)
+    throw OptionError(option_message(name, text, "must be between 0 and " + std::to_string(max)));
+  return value;
+}
+
 float parse_float_option(const std::string& name, const std::string& text, double min, double max) {
   return parse_real<float>(name, text, min, max);
 }

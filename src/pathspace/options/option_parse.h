@@ -12,6 +12,8 @@ std::string option_message(const std::string& name, const std::string& text, con
 
 // Whole numbers; throws OptionError (naming --name) when text is not one or lies outside [min, max].
 int64_t parse_integer_option(const std::string& name, const std::string& text, double min, double max);
+// Whole numbers 0 ... max for 64-bit unsigned fields (seeds): "-1" is out of range, never wrapped.
+uint64_t parse_unsigned_option(const std::string& name, const std::string& text, uint64_t max);
 // Finite reals, parsed directly into the field's precision.
 float parse_float_option(const std::string& name, const std::string& text, double min, double max);
 double parse_double_option(const std::string& name, const std::string& text, double min, double max);

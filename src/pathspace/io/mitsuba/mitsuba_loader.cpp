@@ -49,7 +49,6 @@ class Builder {
     const int w = options_.width > 0 ? options_.width : film_width_;
     const int h = options_.height > 0 ? options_.height : film_height_;
     if (!has_sensor_) w_->add(doc_.loc(doc_.scene()), "no <sensor>; using a camera at the origin looking along +z");
-    if (scene_.lights.empty()) w_->add(doc_.loc(doc_.scene()), "no emitters in the scene: the image will be black");
     // Mitsuba's fov spans fov_axis; pathspace's file camera takes the shorter image axis.
     const double t = std::tan(fov_ * M_PI / 360.0), diag = std::hypot(double(w), double(h));
     double tx = t, ty = t * h / w;

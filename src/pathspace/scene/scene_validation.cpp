@@ -1,0 +1,99 @@
+#include "pathspace/scene/scene_validation.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "pathspace/base/error.h"
+
+namespace pathspace {
+
+namespace {
+
+std::string text(const Vec3& v) { return fmt::format("({:g}, {:g}, {:g})", v.x, v.y, v.z); }
+std::string text(const Rgb& c) { return fmt::format("({:g}, {:g}, {:g})", c.r, c.g, c.b); }
+
+bool in_range(float x) { return std::isfinite(x) && std::fabs(x) <= kMaxSceneCoordinate; }
+bool in_range(const Vec3& v) { return in_range(v.x) && in_range(v.y) && in_range(v.z); }
+
+void check_point(const Vec3& p, const std::string& what) {
+  if (!in_range(p))
+    throw Error(fmt::format("{} at {} is outside the supported range: every coordinate finite and within +-{:g}", what, text(p),
+                            kMaxSceneCoordinate));
+}
+
+void check_length(float x, const std::string& what, bool zero_allowed) {
+  if (!in_range(x) || x < 0.f || (!zero_allowed && x == 0.f))
+    throw Error(fmt::format("{} is {:g}, outside the supported range: {} and at most {:g}", what, x, zero_allowed ? ">= 0" : "> 0",
+                            kMaxSceneCoordinate));
+}
+
+void check_direction(const Vec3& d, const std::string& what) {
+  if (!all_finite(d) || !(dot(d, d) > 0.f)) throw Error(fmt::format("{} {} is not a direction", what, text(d)));
+}
+
+// Reflectances, emission, complex IOR: finite and >= 0 per channel.
+void check_non_negative(const Rgb& c, const std::string& what) {
+  if (!all_finite(c) || c.r < 0.f || c.g < 0.f || c.b < 0.f)
+    throw Error(fmt::format("{} {} must be finite and >= 0 in every channel", what, text(c)));
+}
+
+void check_scalar(float x, float min, const std::string& what) {
+  if (!std::isfinite(x) || x < min) throw Error(fmt::format("{} is {:g}: it must be finite and >= {:g}", what, x, min));
+}
+
+void check_camera(const PerspectiveCamera& c) {
+  if (c.width < 1 || c.height < 1 || c.width > kMaxImageSide || c.height > kMaxImageSide)
+    throw Error(fmt::format("the camera's image is {}x{} pixels: each side must be between 1 and {} (-r sets it)", c.width,
+                            c.height, kMaxImageSide));
+  check_point(c.position, "the camera");
+  for (const Vec3& axis : {c.forward, c.right, c.up}) check_direction(axis, "a camera axis");
+  if (!std::isfinite(c.tan_x) || !std::isfinite(c.tan_y) || !(c.tan_x > 0.f) || !(c.tan_y > 0.f))
+    throw Error(fmt::format("the camera's field of view is not valid (tan of half angles {:g}, {:g})", c.tan_x, c.tan_y));
+  check_length(c.lens_radius, "the camera's lens radius", true);
+  if (!c.is_pinhole()) check_length(c.focus_distance, "the camera's focus distance", false);
+}
+
+void check_material(const Material& m, size_t i, std::vector<std::string>* gains) {
+  const std::string name = "material " + std::to_string(i);
+  check_non_negative(m.diffuse, name + ": diffuse reflectance");
+  check_non_negative(m.glossy, name + ": glossy reflectance");
+  check_non_negative(m.specular, name + ": specular reflectance");
+  check_scalar(m.exponent, 0.f, name + ": Phong exponent");
+  check_scalar(m.ior, 0.f, name + ": index of refraction");
+  check_scalar(m.alpha, 0.f, name + ": roughness");
+  check_non_negative(m.eta, name + ": conductor eta");
+  check_non_negative(m.k, name + ": conductor k");
+  if (m.type == MaterialType::rough_dielectric && !(m.ior > 0.f))
+    throw Error(fmt::format("{}: a rough dielectric needs an index of refraction > 0, not {:g}", name, m.ior));
+  if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f) gains->push_back(name);
+}
+
+}  // namespace
+
+void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
+  check_camera(scene.camera);
+  for (size_t i = 0; i < scene.positions.size(); ++i) check_point(scene.positions[i], "vertex " + std::to_string(i));
+  for (size_t i = 0; i < scene.spheres.size(); ++i) {
+    const Sphere& s = scene.spheres[i];
+    check_point(s.center, "the centre of sphere " + std::to_string(i));
+    check_length(s.radius, "the radius of sphere " + std::to_string(i), false);
+  }
+  std::vector<std::string> gains;
+  for (size_t i = 0; i < scene.materials.size(); ++i) check_material(scene.materials[i], i, &gains);
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& l = scene.lights[i];
+    const std::string name = "light " + std::to_string(i);
+    check_non_negative(l.value, name + ": emission");
+    if (is_point_light(l)) check_point(l.position, name);
+    if (l.type == LightType::directional || l.type == LightType::spot) check_direction(l.direction, name + ": direction");
+  }
+  if (!gains.empty())
+    warnings->push_back(fmt::format("warning: {} reflect{} more light than {} receive{} (a reflectance above 1 adds energy)",
+                                    fmt::join(gains, ", "), gains.size() == 1 ? "s" : "", gains.size() == 1 ? "it" : "they",
+                                    gains.size() == 1 ? "s" : ""));
+  if (scene.lights.empty())
+    warnings->push_back("warning: the scene has no light sources (no emitting surface, light or environment): the image will be black");
+}
+
+}  // namespace pathspace
