@@ -1,0 +1,181 @@
+// Robustness (issue 17): for each kind of bad input, the real binary exits with the documented status
+// (2 usage, 1 bad input; docs/cli.md "Exit codes and errors"), the message names the cause, and no
+// file in the test's folder changes except the requested outputs (contents and modes before and after).
+// Kinds: values that crashed Embree, outputs that overwrite each other or an input, numbers that
+// wrapped or were ignored, and misleading messages.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+
+#include "cli/cli_process.h"
+#include "support/gltf_test_files.h"
+#include "support/temp_dir.h"
+
+namespace pathspace::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a file is: its bytes, permission bits, and a symlink's target.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string name = fs::relative(e.path(), dir).string();
+    if (e.is_symlink()) files[name] = "link:" + fs::read_symlink(e.path()).string();
+    else if (e.is_regular_file()) files[name] = read_all(e.path()) + "|mode:" + std::to_string(int(e.status().permissions()));
+    else files[name] = "folder";
+  }
+  return files;
+}
+
+const char* kCamera =
+    "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [ 40 ]\n"
+    "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n";
+const char* kLight = "LightSource \"point\" \"rgb I\" [ 5 5 5 ] \"point3 from\" [ 0 0 4 ]\n";
+
+class Robustness : public ::testing::Test {
+ protected:
+  TempDir dir{"robustness"};
+
+  std::string write(const std::string& name, const std::string& bytes) {
+    std::ofstream(dir.file(name), std::ios::binary) << bytes;
+    return name;
+  }
+  // Runs `pathspace ARGS` in the test folder; expects the status, every text in `names` in the
+  // output, and the folder unchanged except for `outputs`.
+  testing::Run expect(const std::string& args, int status, const std::vector<std::string>& names, const std::set<std::string>& outputs = {}) {
+    const auto before = snapshot(dir.path);
+    const fs::path cwd = fs::current_path();
+    fs::current_path(dir.path);
+    const testing::Run r = run_pathspace(args);
+    fs::current_path(cwd);
+    EXPECT_EQ(r.exit_code, status) << args << "\n" << r.out;
+    for (const std::string& n : names) EXPECT_NE(r.out.find(n), std::string::npos) << args << ": no '" << n << "' in\n" << r.out;
+    auto after = snapshot(dir.path);
+    for (const std::string& o : outputs) after.erase(o);
+    auto expected = before;
+    for (const std::string& o : outputs) expected.erase(o);
+    EXPECT_EQ(after, expected) << args << ": a file other than the outputs changed";
+    return r;
+  }
+};
+
+constexpr const char* kQuick = " -r 8x8 -s 1 -q";
+
+// --- values Embree aborted on (SIGABRT in ray.valid()) ---
+
+TEST_F(Robustness, HugeLensRadiusIsAUsageError) {
+  expect(std::string("render cornell-box --lens-radius 1e20 --focus-distance 1 -o a.exr") + kQuick, 2, {"--lens-radius", "1e20"});
+}
+
+TEST_F(Robustness, HugePbrtGeometryIsAnInputError) {
+  const std::map<std::string, std::string> shapes = {
+      {"radius", "Shape \"sphere\" \"float radius\" 1e20\n"},
+      {"translate", "Translate 1e20 0 0\nShape \"sphere\"\n"},
+      {"scale", "Scale 1e20 1e20 1e20\nShape \"sphere\"\n"},
+      {"coordinates", "Shape \"trianglemesh\" \"point3 P\" [ 0 0 0  1e20 0 0  0 1 0 ] \"integer indices\" [ 0 1 2 ]\n"}};
+  for (const auto& [what, shape] : shapes) {
+    SCOPED_TRACE(what);
+    write("huge.pbrt", std::string(kCamera) + kLight + shape);
+    expect(std::string("render huge.pbrt -o a.exr") + kQuick, 1, {"outside the supported range"});
+  }
+}
+
+TEST_F(Robustness, InvalidMaterialIsAnInputError) {
+  write("neg.pbrt", std::string(kCamera) + kLight + "Material \"diffuse\" \"rgb reflectance\" [ -0.5 0.5 0.5 ]\nShape \"sphere\"\n");
+  expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"diffuse reflectance", "-0.5", ">= 0"});
+}
+
+TEST_F(Robustness, SceneWithoutLightsWarns) {
+  write("dark.pbrt", std::string(kCamera) + "Shape \"sphere\"\n");
+  expect(std::string("render dark.pbrt -o a.exr") + kQuick, 0, {"warning: the scene has no light sources"}, {"a.exr"});
+}
+
+TEST_F(Robustness, GltfCameraBeyondTheImageLimitIsAnInputError) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  write("wide.gltf", b.gltf(R"("scenes":[{"nodes":[0,1]}],"nodes":[{"camera":0,"translation":[0,0,5]},{"mesh":0}],)"
+                            R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"aspectRatio":64.0,"znear":0.1}}],)"
+                            R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" +
+                            std::to_string(pos) + "}}]}]"));
+  expect("render wide.gltf -s 1 -q -o a.exr", 1, {"32768x512", "16384"});
+}
+
+// --- outputs that would overwrite each other or an input (file identity, not names) ---
+
+TEST_F(Robustness, OutputsNamingOneFileAreAUsageError) {
+  write("a.exr", "old");
+  fs::create_symlink("a.exr", dir.file("link.exr"));
+  expect(std::string("render -o a.exr --stats ./a.exr") + kQuick, 2, {"-o 'a.exr'", "--stats './a.exr'"});
+  expect(std::string("render -o a.exr --variance-out link.exr") + kQuick, 2, {"-o 'a.exr'", "--variance-out 'link.exr'"});
+  fs::create_hard_link(dir.file("a.exr"), dir.file("hard.exr"));
+  expect(std::string("render -o a.exr b.png --checkpoint hard.exr") + kQuick, 2, {"-o 'a.exr'", "--checkpoint 'hard.exr'"});
+}
+
+TEST_F(Robustness, CompareRefusesToOverwriteAnInput) {
+  expect(std::string("render -o a.exr b.exr") + kQuick, 0, {}, {"a.exr", "b.exr"});
+  expect("compare a.exr b.exr --error-map ./a.exr", 2, {"--error-map './a.exr'", "image 'a.exr'"});
+  fs::create_symlink("b.exr", dir.file("ref.exr"));
+  expect("compare a.exr b.exr --error-map ref.exr", 2, {"--error-map 'ref.exr'", "reference 'b.exr'"});
+}
+
+// Replacing an existing output keeps its mode, and a symlink keeps pointing at the file it names,
+// which receives the new image (as cp would).
+TEST_F(Robustness, OverwritingKeepsModeAndFollowsSymlinks) {
+  write("target.exr", "old");
+  fs::permissions(dir.file("target.exr"), fs::perms(0640));
+  fs::create_symlink("target.exr", dir.file("link.exr"));
+  expect(std::string("render -o link.exr") + kQuick, 0, {}, {"target.exr"});
+  EXPECT_TRUE(fs::is_symlink(dir.file("link.exr")));
+  EXPECT_NE(read_all(dir.file("target.exr")), "old");
+  struct stat st {};
+  ASSERT_EQ(::stat(dir.file("target.exr").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0640u);
+}
+
+// --- numbers that wrapped, were ignored or gave the wrong status ---
+
+TEST_F(Robustness, NumbersAreCheckedWhole) {
+  expect("render -o a.exr -s 1 -q -r 4294967297x1", 2, {"--resolution", "4294967297x1"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --seed -1", 2, {"--seed '-1'"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --seed 18446744073709551616", 2, {"--seed"});
+  expect("render -o a.exr -r 8x8 -q --time nan", 2, {"--time 'nan'"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --lens-radius nan --focus-distance 1", 2, {"--lens-radius 'nan'"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --focus-distance inf --lens-radius 0.1", 2, {"--focus-distance 'inf'"});
+  expect("render -o a.exr -r 8x8 -q --spp 1e3", 2, {"--spp '1e3'"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --threads 4294967297", 2, {"--threads"});
+  expect("study pclt -o st --scenes bs_c --resolution 4294967297x1 --quiet", 2, {"--resolution"});
+  expect("study psf -o st --scenes bs_c --time nan --quiet", 2, {"--time 'nan'"});
+  expect("study psf -o st --scenes bs_c --seed -1 --quiet", 2, {"--seed '-1'"});
+}
+
+TEST_F(Robustness, EmptySceneNameIsAUsageError) { expect(std::string("render '' -o a.exr") + kQuick, 2, {"empty"}); }
+
+// --- messages that blamed the wrong thing or echoed raw bytes ---
+
+TEST_F(Robustness, UnknownCommandNamesTheCommands) {
+  expect("rendr cornell-box", 2, {"unknown command 'rendr'", "render", "info", "compare", "study"});
+}
+
+TEST_F(Robustness, OutputListSwallowingTheSceneSaysSo) {
+  expect(std::string("render -o a.exr cornell-box") + kQuick, 2, {"-o took the scene 'cornell-box'", "--"});
+}
+
+TEST_F(Robustness, BinaryBytesAreEscapedInMessages) {
+  write("bin.pbrt", std::string("\x01\x1b[31m\xff\xfe junk\n", 12));
+  const testing::Run r = expect("render bin.pbrt -o a.exr -q", 1, {"unknown directive '\\x01\\x1b'"});
+  for (char c : r.out) EXPECT_TRUE(c == '\n' || uint8_t(c) >= 0x20) << "raw control byte " << int(c) << " in\n" << r.out;
+}
+
+TEST_F(Robustness, LoadFailurePrintsTheWarningsSoFar) {
+  write("w.pbrt", "TransformTimes 0 1\n" + std::string(kCamera) + "Shape \"sphere\" \"float radius\" [ 1\n");
+  expect("render w.pbrt -o a.exr -q", 1, {"warning: TransformTimes ignored", "error: w.pbrt:"});
+}
+
+}  // namespace
+}  // namespace pathspace::testing
