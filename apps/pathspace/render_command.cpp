@@ -173,6 +173,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--write-every", o->write_every, "Write the outputs every S seconds while rendering (between passes)")
       ->check(checked_real("write-every", 1e-3, 1e9))
       ->group(kRunOptionsGroup);
+  cmd->add_option("--max-decompression-ratio", o->max_decompression_ratio,
+                  "A gzip scene file may decompress to at most this many times its size (at least 256 MiB; 0: no limit)")
+      ->check(checked_real("max-decompression-ratio", 0.0, 1e9))
+      ->capture_default_str()
+      ->group(kRunOptionsGroup);
   o->registry.add_to(cmd);
   return cmd;
 }
@@ -191,6 +196,7 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const RenderOptions& o) {
+  set_decompression_limit(o.max_decompression_ratio);
   PreparedScene p;
   const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
   const bool from_file = names_scene_file(scene_name);

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "pathspace/io/file_bytes.h"
 #include "registry_options.h"
 
 namespace pathspace::cli {
@@ -34,6 +35,7 @@ struct RenderOptions {
   double checkpoint_every = 0.0;  // seconds between checkpoints while rendering; 0: at the end only
   std::string resume;             // --resume FILE: continue the render saved there
   double write_every = 0.0;       // seconds between output writes while rendering; 0: at the end only
+  double max_decompression_ratio = kDefaultMaxDecompressionRatio;  // gzip scene files (io/file_bytes.h)
   std::string light_selection = "uniform";
   std::string filter = "none";  // path space filter (filters/filter_registry.h)
   // The integrators' and filters' own options, from the registry.

@@ -152,6 +152,7 @@ TEST_F(Robustness, NumbersAreCheckedWhole) {
   expect("study pclt -o st --scenes bs_c --resolution 4294967297x1 --quiet", 2, {"--resolution"});
   expect("study psf -o st --scenes bs_c --time nan --quiet", 2, {"--time 'nan'"});
   expect("study psf -o st --scenes bs_c --seed -1 --quiet", 2, {"--seed '-1'"});
+  expect("render -o a.exr -r 8x8 -s 1 -q --max-decompression-ratio -1", 2, {"--max-decompression-ratio '-1'"});
 }
 
 TEST_F(Robustness, EmptySceneNameIsAUsageError) { expect(std::string("render '' -o a.exr") + kQuick, 2, {"empty"}); }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "pathspace/io/file_bytes.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/pbrt/pbrt_tokenizer.h"
 #include "support/temp_dir.h"
@@ -181,6 +182,30 @@ TEST(PbrtParser, IncludesFromTempFolderAlsoGzip) {
     EXPECT_EQ(e.location().line, 2);
     EXPECT_NE(std::string(e.what()).find("missing.pbrt"), std::string::npos);
   }
+}
+
+// A gzip file may not decompress out of proportion to its size (io/file_bytes.h): 4 MiB of blanks
+// compress to a few KiB; with a 1 MiB floor and ratio 100 loading stops with an error naming the
+// file and the option, and with no limit the same file loads.
+TEST(PbrtParser, GzipBombStopsAtTheDecompressionLimit) {
+  const TempDir temp("pbrt");
+  const std::string gz = (temp.path / "blanks.pbrt.gz").string();
+  const std::string text = kCamera + std::string("WorldBegin\n") + std::string(size_t(4) << 20, ' ') + "Shape \"sphere\"\n";
+  gzFile f = gzopen(gz.c_str(), "wb9");
+  gzwrite(f, text.data(), unsigned(text.size()));
+  gzclose(f);
+  ASSERT_LT(fs::file_size(gz), size_t(40000)) << "the test needs a ratio above 100";
+  set_decompression_limit(100.0, uint64_t(1) << 20);
+  try {
+    load_scene(gz, {}, nullptr);
+    ADD_FAILURE() << "a 4 MiB file of blanks loaded under a 1 MiB limit";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("blanks.pbrt.gz"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--max-decompression-ratio"), std::string::npos) << e.what();
+  }
+  set_decompression_limit(0.0, uint64_t(1) << 20);
+  EXPECT_NO_THROW(load_scene(gz, {}, nullptr));
+  set_decompression_limit(kDefaultMaxDecompressionRatio);
 }
 
 TEST(PbrtParser, SyntaxErrorsCarryFileLineColumn) {
