@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include <fmt/format.h>
@@ -22,8 +23,37 @@ std::string format_duration(double seconds) {
 ProgressReporter::ProgressReporter(std::FILE* out, uint64_t pixels, bool quiet)
     : out_(out), pixels_(pixels), quiet_(quiet), tty_(::isatty(::fileno(out)) != 0) {}
 
+ProgressReporter::~ProgressReporter() { finish(); }
+
+void ProgressReporter::watch(const RenderSession& session) {
+  if (quiet_ || watcher_.joinable()) return;
+  stop_ = false;
+  watcher_ = std::thread([this, &session] { tick(session); });
+}
+
+void ProgressReporter::tick(const RenderSession& session) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!wake_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_; })) {
+    const PassProgress p = session.pass_progress();
+    if (p.running && p.seconds >= kInPassAfterSeconds) in_pass(p);
+  }
+}
+
+void ProgressReporter::in_pass(const PassProgress& p) {
+  const std::string text = fmt::format("pass {}: {:.0f}% of its work so far, {} in the pass", p.pass, 100.0 * p.fraction,
+                                       format_duration(p.seconds));
+  if (tty_) {
+    fmt::print(out_, "\r{}\x1b[K", text);
+    drew_ = true;
+  } else {
+    fmt::print(out_, "{}\n", text);
+  }
+  std::fflush(out_);
+}
+
 void ProgressReporter::update(const RenderProgress& p) {
   if (quiet_) return;
+  const std::lock_guard<std::mutex> lock(mutex_);
   const double percent = 100.0 * p.fraction;
   const double samples_per_s = p.elapsed_s > 0 ? double(p.passes_done) * double(pixels_) / p.elapsed_s : 0.0;
   const double mrays_per_s = p.elapsed_s > 0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0;
@@ -46,6 +76,14 @@ void ProgressReporter::update(const RenderProgress& p) {
 }
 
 void ProgressReporter::finish() {
+  if (watcher_.joinable()) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    watcher_.join();
+  }
   if (quiet_ || !drew_) return;
   fmt::print(out_, "\n");
   std::fflush(out_);

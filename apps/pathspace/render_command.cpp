@@ -326,6 +326,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   }
   PeriodicWriter periodic(plan, o.write_every, o.checkpoint, o.checkpoint_every, checkpoint_of);
   interrupt.watch(&session);
+  progress.watch(session);
   if (passes > 0 || o.time_s > 0.0) {
     const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
     session.run(limit, [&](const RenderProgress& p) {

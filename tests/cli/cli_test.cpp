@@ -258,6 +258,15 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   EXPECT_EQ(equal_time.back().at("label"), "PT + à-trous");
 }
 
+// A pass longer than 2 s reports from inside once a second (progress_reporter.h): one pass of BPT
+// at 1600x1600 takes several seconds on two cores, so its output has lines "pass 1: N% ...".
+TEST_F(CliTest, LongPassReportsProgressFromInside) {
+  const CliResult r = run("render cornell-box -i bpt -r 1600x1600 -s 1 -o big.exr");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("pass 1: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("% of its work so far"), std::string::npos) << r.out;
+}
+
 TEST_F(CliTest, StudyMisuseIsAUsageError) {
   expect_usage_error("study psf --vertex-set-resolution 0x3 --quiet", "--vertex-set-resolution");
   expect_usage_error("study psf --max-spp 0 --quiet", "--max-spp");

@@ -331,6 +331,39 @@ TEST(SessionCancel, BeforeRunStopsTheNextRunAtZeroPasses) {
   EXPECT_EQ(next.passes, 3u);
 }
 
+// pass_progress() from another thread: while a pass runs it names the pass and its share of the work
+// done grows from 0 to 1; between passes nothing runs.
+TEST(SessionRun, PassProgressIsVisibleFromAnotherThreadDuringAPass) {
+  auto session = make_session(threaded(make_render_config("bpt", BptSettings{}, kSeed)), 256, 256);
+  EXPECT_FALSE(session->pass_progress().running);
+  std::atomic<bool> done{false};
+  std::thread runner([&] {
+    session->run(RunLimit::for_passes(3));
+    done = true;
+  });
+  double lowest = 2.0, highest = -1.0;
+  uint32_t last_pass = 0;
+  while (!done) {
+    const PassProgress p = session->pass_progress();
+    if (p.running) {
+      EXPECT_GE(p.pass, 1u);
+      EXPECT_LE(p.pass, 3u);
+      EXPECT_GE(p.seconds, 0.0);
+      EXPECT_GE(p.fraction, 0.0);
+      EXPECT_LE(p.fraction, 1.0);
+      lowest = std::min(lowest, p.fraction);
+      highest = std::max(highest, p.fraction);
+      last_pass = std::max(last_pass, p.pass);
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  runner.join();
+  EXPECT_FALSE(session->pass_progress().running);
+  EXPECT_GE(last_pass, 2u) << "the polls must have seen several passes";
+  EXPECT_LT(lowest, 0.5);
+  EXPECT_GT(highest, 0.5);
+}
+
 TEST(SessionRun, TimeBudgetRunsWholePassesAndAtLeastOne) {
   auto session = make_session(threaded(make_render_config("pt", PtSettings{}, kSeed)));
   const RunResult r = session->run(RunLimit::for_seconds(1e-9));

@@ -79,7 +79,13 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto pass_start = std::chrono::steady_clock::now();
+      const WorkProgress work = work_progress();
+      pass_work_started_ = work.started;
+      pass_work_done_ = work.done;
+      pass_start_ns_ = std::chrono::duration_cast<std::chrono::nanoseconds>(pass_start.time_since_epoch()).count();
+      running_pass_ = passes_ + 1;
       integrator_->render_pass(passes_, film_, counters_);
+      running_pass_ = 0;
       ++passes_;
       wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - pass_start).count();
       p.session_passes = passes_;
@@ -191,6 +197,19 @@ void RenderSession::restore_state(const SessionState& state) {
   wall_s_ = wall_s;
   film_ = std::move(film);
   integrator_ = std::move(restored);
+}
+
+PassProgress RenderSession::pass_progress() const {
+  PassProgress p;
+  p.pass = running_pass_.load();
+  if (p.pass == 0) return p;
+  p.running = true;
+  const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  p.seconds = double(now - pass_start_ns_.load()) * 1e-9;
+  const WorkProgress w = work_progress();
+  const uint64_t started = w.started - pass_work_started_.load(), done = w.done - pass_work_done_.load();
+  p.fraction = started > 0 ? std::min(1.0, double(done) / double(started)) : 0.0;
+  return p;
 }
 
 }  // namespace pathspace

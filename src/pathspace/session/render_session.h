@@ -48,6 +48,14 @@ struct RenderProgress {
   uint64_t paths = 0;
 };
 
+// While a pass runs (RenderSession::pass_progress, from any thread).
+struct PassProgress {
+  bool running = false;
+  uint32_t pass = 0;      // 1-based index in the session
+  double seconds = 0.0;   // since the pass started
+  double fraction = 0.0;  // of the data-parallel work started so far in the pass (parallel/work_progress.h)
+};
+
 // The common counters of every render, plus the integrator's and filter's own statistics.
 struct RenderStats {
   std::string integrator, filter;
@@ -107,6 +115,9 @@ class RenderSession {
   void restore_state(const SessionState& state);
 
   uint32_t passes_done() const;
+  // Lock-free: how far the pass in progress is. Its fraction counts the loops that have started,
+  // so a pass made of several loops (trace, filter, resolve) can step back when the next one starts.
+  PassProgress pass_progress() const;
   const RenderConfig& config() const { return config_; }
   const Scene& scene() const { return *scene_; }
   const Accel& accel() const { return *accel_; }
@@ -141,6 +152,11 @@ class RenderSession {
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
   mutable std::atomic<int> readers_waiting_{0};
   std::atomic<bool> cancel_{false};
+  // The pass in progress (pass_progress): its 1-based index (0: none), start time and the work
+  // counters when it started.
+  std::atomic<uint32_t> running_pass_{0};
+  std::atomic<int64_t> pass_start_ns_{0};
+  std::atomic<uint64_t> pass_work_started_{0}, pass_work_done_{0};
 };
 
 }  // namespace pathspace
