@@ -5,6 +5,7 @@
 #include <fstream>
 #include <vector>
 
+#include "pathspace/io/image_io.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/ply_reader.h"
 #include "pathspace/io/scene_loader.h"
@@ -52,6 +53,21 @@ Scene load(Format format, std::string_view bytes, const std::string& folder) {
       write_file(path, bytes);
       return load_scene(path, options, &warnings);
     }
+    case Format::image: {
+      if (bytes.empty()) throw Error(FileLoc{"fuzz.img"}, "empty input");
+      static const char* const kNames[4] = {"fuzz.exr", "fuzz.pfm", "fuzz.png", "fuzz.hdr"};
+      const std::string name = kNames[uint8_t(bytes[0]) % 4];
+      try {
+        const Image image = decode_image(name, std::string(bytes.substr(1)));
+        if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height))
+          throw std::logic_error("image reader returned an inconsistent image");
+      } catch (const Error& e) {
+        // The readers name the file at the start of the message; the fuzz contract wants it as a location.
+        if (std::string_view(e.what()).substr(0, name.size()) != name) throw std::logic_error(std::string("image error without its file: ") + e.what());
+        throw Error(FileLoc{name}, e.what());
+      }
+      return Scene();
+    }
     case Format::mitsuba:
 #if PATHSPACE_HAS_MITSUBA
       return mitsuba::load_mitsuba_string(std::string(bytes), "fuzz.xml", folder, options, &w, &settings);
@@ -71,6 +87,7 @@ const char* format_name(Format f) {
     case Format::obj: return "obj";
     case Format::mitsuba: return "mitsuba";
     case Format::gltf: return "gltf";
+    case Format::image: return "image";
   }
   return "";
 }

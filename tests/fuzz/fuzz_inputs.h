@@ -13,9 +13,9 @@
 
 namespace pathspace::fuzz {
 
-enum class Format { pbrt, ply, obj, mitsuba, gltf };
+enum class Format { pbrt, ply, obj, mitsuba, gltf, image };
 
-// "pbrt", "ply", "obj", "mitsuba", "gltf": the corpus folder names (tests/fuzz/corpus/<name>/).
+// "pbrt", "ply", "obj", "mitsuba", "gltf", "image": the corpus folder names (tests/fuzz/corpus/<name>/).
 const char* format_name(Format f);
 // False for mitsuba when this build has no Mitsuba loader.
 bool format_available(Format f);
@@ -41,6 +41,9 @@ class InputFolder {
 // Loads `bytes` as a file of the given format. OBJ input is written to scene.obj in the folder;
 // glTF input to scene.gltf (JSON or GLB bytes alike: the loader looks at the content);
 // bytes after a line "#--- scene.mtl ---" become scene.mtl (so one input covers OBJ and MTL).
+// Image input (the readers of textures, environment maps and `compare`): the first byte picks the
+// name the bytes are decoded under (fuzz.exr, fuzz.pfm, fuzz.png, fuzz.hdr: the extension chooses
+// the decoder where the content does not), the rest is the file.
 Outcome load_bytes(Format format, std::string_view bytes, const InputFolder& folder);
 
 }  // namespace pathspace::fuzz

@@ -58,7 +58,7 @@ TEST_P(FuzzCorpusReplay, EveryFileLoadsOrFailsWithLocation) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, FuzzCorpusReplay, ::testing::Values(Format::pbrt, Format::ply, Format::obj, Format::mitsuba, Format::gltf),
+INSTANTIATE_TEST_SUITE_P(Formats, FuzzCorpusReplay, ::testing::Values(Format::pbrt, Format::ply, Format::obj, Format::mitsuba, Format::gltf, Format::image),
                          [](const ::testing::TestParamInfo<Format>& i) { return testing::test_name(fuzz::format_name(i.param)); });
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -75,6 +76,16 @@ namespace fs = std::filesystem;
 static_assert(sizeof(Rgb) == 3 * sizeof(float), "EXR slices and PFM rows assume packed Rgb");
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) { throw Error(path + ": " + why); }
+
+std::atomic<uint64_t>& max_image_pixels() {
+  static std::atomic<uint64_t> limit{kMaxImagePixels};
+  return limit;
+}
+
+void check_pixel_count(const std::string& path, uint64_t w, uint64_t h) {
+  const uint64_t limit = max_image_pixels().load();
+  if (w * h > limit) fail(path, fmt::format("{}x{} pixels: more than the {} an image may have (io/image_io.h)", w, h, limit));
+}
 
 std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
@@ -176,6 +187,7 @@ Image decode_exr(const std::string& path, const std::string& bytes) {
     const Imath::Box2i dw = file.header().dataWindow();
     const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
     if (w <= 0 || h <= 0 || w > INT_MAX || h > INT_MAX) fail(path, "bad EXR data window");
+    check_pixel_count(path, uint64_t(w), uint64_t(h));
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
     if (!rgb && !channels.findChannel("Y")) fail(path, "EXR has no R, G, B or Y channel");
@@ -224,6 +236,7 @@ Image decode_pfm(const std::string& path, const std::string& b) {
     return v;
   };
   const int w = parse_size("width"), h = parse_size("height");
+  check_pixel_count(path, uint64_t(w), uint64_t(h));
   const std::string_view st = token("scale");
   double scale = 0;
   const auto [end, ec] = std::from_chars(st.data(), st.data() + st.size(), scale);
@@ -270,6 +283,7 @@ Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding 
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int len = int(bytes.size());
   int w = 0, h = 0, n = 0;
+  if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
   auto check = [&](const void* px) {
     if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
   };
@@ -329,14 +343,19 @@ void write_image(const std::string& path, const Image& image) {
 
 Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file_as_stored(path), ldr); }
 
+void set_max_image_pixels(uint64_t pixels) { max_image_pixels() = pixels; }
+
 Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
   const std::string ext = lower_extension(path);
   // The content decides where it can; the extension picks the decoder whose error message fits.
   const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
   const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
-  if (exr_magic || (ext == ".exr" && !pfm_magic)) return decode_exr(path, bytes);
-  if (pfm_magic || ext == ".pfm") return decode_pfm(path, bytes);
-  return decode_stb(path, bytes, ldr);
+  Image image = exr_magic || (ext == ".exr" && !pfm_magic) ? decode_exr(path, bytes)
+                : pfm_magic || ext == ".pfm"                 ? decode_pfm(path, bytes)
+                                                             : decode_stb(path, bytes, ldr);
+  // stb accepts a Radiance header of height 0 (found by the image fuzzer): no image is empty.
+  if (image.width <= 0 || image.height <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", image.width, image.height));
+  return image;
 }
 
 }  // namespace pathspace

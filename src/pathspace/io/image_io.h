@@ -4,6 +4,7 @@
 // half-written image. Errors are pathspace::Error naming the file.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "pathspace/film/image.h"
@@ -27,6 +28,14 @@ std::string encode_image(const std::string& path, const Image& image, ImageEncod
 // How 8- and 16-bit files are turned into linear floats: sRGB-decoded (colour images), or v / max
 // (textures that hold linear data, e.g. pbrt's encoding "linear"). Float formats are always linear.
 enum class LdrEncoding { srgb, linear };
+
+// The most pixels an image read may have (2^27: 16384 x 8192, 1.5 GiB as float RGB). Checked from
+// the header before anything is allocated, so a small file (a compressed EXR or PNG) cannot ask for
+// gigabytes.
+inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
+// Lowers (or restores) that limit for this process: the image fuzzer reads at most 2^22 pixels, so
+// each input stays fast while every code path stays reachable.
+void set_max_image_pixels(uint64_t pixels);
 
 // Reads EXR, PFM, PNG (and what stb reads: JPG, HDR, TGA, BMP).
 Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb);
