@@ -114,7 +114,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
 
   Rgb beta = e.weight * (1.f / select_prob);
   const float beta0 = max_component(beta);
-  Ray ray = e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
+  Ray ray = first_light_ray(scene, e);
   // Tech. report eq. 31-33 at the emitted vertex: dVC = cos / p_emit (0 for delta lights, which no
   // camera path can hit). dVCM = p_direct / p_emit needs NEE's density of the origin, which for
   // cone-sampled spheres depends on the point that would sample it, so it is completed at the first hit.

@@ -1,8 +1,10 @@
 // The start of every light path (LT, BPT light subpaths, SPPM photons, PCLT): a light picked by the
 // scene's light selection (light_dims::kLightSelect) and an emission sampled from it (kEmitPos,
-// kEmitDir), so that all four integrators draw their light paths from the same random numbers.
+// kEmitDir), so that all four integrators draw their light paths from the same random numbers, and
+// the ray that leaves the light.
 #pragma once
 
+#include "pathspace/geometry/ray.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/scene/light_emission.h"
 #include "pathspace/sampling/sampler.h"
@@ -25,6 +27,12 @@ PS_INLINE bool start_light_path(const SceneView& scene, const Sampler& sampler, 
   const Point2 up{sampler.at(light_dims::kEmitPos), sampler.at(light_dims::kEmitPos + 1)};
   const Point2 ud{sampler.at(light_dims::kEmitDir), sampler.at(light_dims::kEmitDir + 1)};
   return sample_emission(scene, *s->light, up, ud, &s->emission);
+}
+
+// The first ray of a light path: off the surface of an area light, from the point itself for point
+// and spot lights, from the proxy disk of directional and environment lights.
+PS_INLINE Ray first_light_ray(const SceneView& scene, const EmissionSample& e) {
+  return e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
 }
 
 }  // namespace pathspace

@@ -114,7 +114,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
 
   Rgb beta = e.weight * inv_select;
   const float beta0 = max_component(beta);  // Russian roulette looks at the throughput relative to this
-  Ray ray = e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
+  Ray ray = first_light_ray(scene, e);
 
   // The vertex reached after `segments` segments; its camera connection makes segments + 1.
   for (int segments = 1; segments < max_segments; ++segments) {

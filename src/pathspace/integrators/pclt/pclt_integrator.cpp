@@ -49,8 +49,9 @@ PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const Pcl
     s_.visibility = PcltVisibility::shadow_ray;
   }
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
-  r0_ = s_.initial_radius > 0.f ? s_.initial_radius : s_.radius_fraction * view_.bounds.radius;
-  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("PCLT initial radius must be positive, not {}", r0_));
+  const float r0 = s_.initial_radius > 0.f ? s_.initial_radius : s_.radius_fraction * view_.bounds.radius;
+  if (!(r0 > 0.f && std::isfinite(r0))) throw Error(fmt::format("PCLT initial radius must be positive, not {}", r0));
+  radius_ = ProgressiveRadius(r0, s_.alpha);
   light_paths_ = s_.light_paths > 0 ? s_.light_paths : pixels;
   max_segments_ = s_.max_segments > 0 ? s_.max_segments : view_.max_path_segments;
   // At most one record per pixel, so a capacity above the pixel count would never be used.
@@ -69,19 +70,6 @@ PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const Pcl
       throw Error(fmt::format("pclt stochastic hash map slots {} must be a power of two up to 2^31", slots));
     stochastic_ = std::make_unique<StochasticHashMap>(slots);
   }
-  cached_r2_ = double(r0_) * double(r0_);
-}
-
-float PcltIntegrator::radius(uint32_t pass) {
-  if (pass < cached_pass_) {
-    cached_pass_ = 0;
-    cached_r2_ = double(r0_) * double(r0_);
-  }
-  for (; cached_pass_ < pass; ++cached_pass_) {
-    const double i = double(cached_pass_) + 1.0;
-    cached_r2_ *= (i + double(s_.alpha)) / (i + 1.0);
-  }
-  return float(std::sqrt(cached_r2_));
 }
 
 PcltMemory PcltIntegrator::memory() const {
@@ -238,7 +226,7 @@ void PcltIntegrator::statistics(Statistics& out) const {
   out.counter("pclt.eye_paths", eye_paths_);
   out.counter("pclt.light_paths", light_path_total_);
   out.counter("pclt.light_paths_per_iteration", light_paths_);
-  out.value("pclt.initial_radius", r0_, "scene units");
+  out.value("pclt.initial_radius", radius_.initial(), "scene units");
   out.value("pclt.last_radius", last_radius_, "scene units");
   out.text("pclt.visibility", visibility[int(s_.visibility)]);
   out.text("pclt.hash_map", s_.hash_map == PcltHashMap::chained ? "chained" : "stochastic");
@@ -267,8 +255,7 @@ void PcltIntegrator::statistics(Statistics& out) const {
 
 // The radius recurrence and the totals; the cache and the maps are rebuilt every iteration.
 void PcltIntegrator::save_state(StateWriter& out) const {
-  out.put("pclt.cached_pass", cached_pass_);
-  out.put("pclt.cached_r2", cached_r2_);
+  radius_.save_state(out, "pclt");
   out.put("pclt.last_radius", last_radius_);
   const uint64_t counts[] = {passes_,          eye_paths_, light_path_total_, records_total_,    candidates_total_, dropped_total_,
                              gather_queries_,  gathered_,  projections_,      visibility_tests_, grid_failures_,    splat_rejects_,
@@ -279,8 +266,7 @@ void PcltIntegrator::save_state(StateWriter& out) const {
 }
 
 void PcltIntegrator::load_state(StateReader& in) {
-  in.get("pclt.cached_pass", &cached_pass_);
-  in.get("pclt.cached_r2", &cached_r2_);
+  radius_.load_state(in, "pclt");
   in.get("pclt.last_radius", &last_radius_);
   uint64_t c[13];
   double t[4];

@@ -13,6 +13,7 @@
 #include "pathspace/film/splat_film.h"
 #include "pathspace/hashgrid/hash_grid.h"
 #include "pathspace/hashgrid/stochastic_hash_map.h"
+#include "pathspace/integrators/common/progressive_radius.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/integrators/pclt/pclt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
@@ -42,7 +43,7 @@ class PcltIntegrator final : public Integrator {
   void load_state(StateReader& in) override;
 
   // Gathering radius of iteration `pass` (0-based), the recurrence of SppmIntegrator::radius.
-  float radius(uint32_t pass);
+  float radius(uint32_t pass) { return radius_.at(pass); }
   uint64_t light_paths_per_pass() const { return light_paths_; }
   size_t capacity() const { return capacity_; }
   // The records of the last iteration (tests: at most one per pixel, ES+D only).
@@ -59,12 +60,10 @@ class PcltIntegrator final : public Integrator {
   const Accel& accel_;
   PcltSettings s_;
   uint64_t seed_;
-  float r0_ = 0.f;
+  ProgressiveRadius radius_;
   uint64_t light_paths_ = 0;
   int max_segments_ = 0;
   size_t capacity_ = 0;
-  uint32_t cached_pass_ = 0;
-  double cached_r2_ = 0.0;
 
   SplatFilm splats_;
   std::vector<PixelCacheEntry> staging_;  // per pixel eye-pass output

@@ -318,7 +318,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
 
   Rgb beta = e.weight * inv_select;  // photon power
   const float beta0 = max_component(beta);
-  Ray ray = e.delta_position || e.infinite ? Ray{e.p, e.d, 0.f, kInfinity} : spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon);
+  Ray ray = first_light_ray(scene, e);
   for (int segments = 1; segments < lv.max_segments; ++segments) {
     SurfaceHit hit;
     ++counters->rays;

@@ -19,18 +19,12 @@ constexpr uint64_t kCausticStream = 0x636175737469637aull;
 
 CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments)
     : scene_(scene),
-      settings_(settings),
       max_segments_(max_segments),
       photons_per_pass_(uint64_t(std::llround(settings.photons_per_pixel * double(scene.camera.width) * double(scene.camera.height)))) {
-  r0_ = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
-  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("caustic photon radius must be positive, not {}", r0_));
+  const float r0 = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
+  if (!(r0 > 0.f && std::isfinite(r0))) throw Error(fmt::format("caustic photon radius must be positive, not {}", r0));
   if (!(settings.alpha > 0.f && settings.alpha <= 1.f)) throw Error(fmt::format("caustic photon alpha must be in (0, 1], not {}", settings.alpha));
-}
-
-float CausticPhotonMap::radius(uint32_t pass) const {
-  double r2 = double(r0_) * double(r0_);
-  for (uint32_t i = 1; i <= pass; ++i) r2 *= (double(i) + double(settings_.alpha)) / (double(i) + 1.0);
-  return float(std::sqrt(r2));
+  radius_ = ProgressiveRadius(r0, settings.alpha);
 }
 
 void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
@@ -48,7 +42,7 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
     rays += local.rays;
   });
   counters.rays += rays.load();
-  const float r = radius(pass);
+  const float r = radius_.at(pass);
   const Vec3 nowhere(NAN, NAN, NAN);
   grid_.build(n, r, [&](size_t i) { return traced_[i].stored ? traced_[i].p : nowhere; });
   // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
@@ -71,7 +65,7 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
 void CausticPhotonMap::statistics(Statistics& out) const {
   out.counter("caustics.photons", photons_, "caustic photon paths traced (sec. 2.3)");
   out.counter("caustics.stored", stored_, "photons stored after light -> specular+ -> non-delta");
-  out.value("caustics.initial_radius", r0_, "scene units");
+  out.value("caustics.initial_radius", radius_.initial(), "scene units");
   out.value("caustics.last_radius", last_radius_, "scene units, the last pass of this run");
   out.seconds("caustics.time", seconds_);
 }

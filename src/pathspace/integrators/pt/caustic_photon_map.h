@@ -1,9 +1,8 @@
 // The caustic photon map of the path tracer (Keller, Dahm, Binder 2014, sec. 2.3; kernel in
 // caustic_photons.h): per pass, N photon paths from the lights, the caustic photons among them in a
 // hash grid with the pass's radius. The radius shrinks with the pass index as in progressive photon
-// mapping (Knaus and Zwicker 2011: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), the project's SPPM
-// recurrence), so the caustics converge as the filter's radius does; it is a function of the pass
-// index only, so a resumed render continues it without state.
+// mapping (common/progressive_radius.h, as SPPM and PCLT), so the caustics converge as the filter's
+// radius does; it is a function of the pass index only, so a resumed render continues it.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +11,7 @@
 #include "pathspace/base/state_archive.h"
 #include "pathspace/filters/caustic_settings.h"
 #include "pathspace/hashgrid/hash_grid.h"
+#include "pathspace/integrators/common/progressive_radius.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
 #include "pathspace/scene/scene_view.h"
 #include "pathspace/stats/statistics.h"
@@ -23,12 +23,10 @@ class Accel;
 class CausticPhotonMap {
  public:
   CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments);
-  uint64_t photons_per_pass() const { return photons_per_pass_; }
 
   // Traces the pass's photons and builds the map; the view stays valid until the next build.
   void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
   const CausticMapView& view() const { return view_; }
-  float radius(uint32_t pass) const;  // the pass's radius (pass 0 = first)
   void statistics(Statistics& out) const;
   // The totals behind the statistics (the radius follows from the pass index).
   void save_state(StateWriter& out) const;
@@ -36,10 +34,9 @@ class CausticPhotonMap {
 
  private:
   SceneView scene_;
-  CausticSettings settings_;
   int max_segments_;
   uint64_t photons_per_pass_;
-  float r0_;
+  ProgressiveRadius radius_;
   HashGrid grid_;
   std::vector<CausticPhoton> traced_, in_cells_;
   CausticMapView view_;

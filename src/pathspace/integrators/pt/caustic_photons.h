@@ -47,7 +47,7 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
   if (!start_light_path(scene, sampler, &start)) return;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);
-  Ray ray = is_area_light(*start.light) ? spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon) : Ray{e.p, e.d, 0.f, kInfinity};
+  Ray ray = first_light_ray(scene, e);
   // The shortest camera side is one segment, so longer light paths cannot join.
   for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;

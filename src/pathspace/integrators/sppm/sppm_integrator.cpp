@@ -41,28 +41,15 @@ SppmIntegrator::SppmIntegrator(const Scene& scene, const Accel& accel, const Spp
   const SppmSettings& s = settings;
   if (!(s.alpha > 0.f && s.alpha <= 1.f)) throw Error(fmt::format("SPPM alpha must be in (0, 1], not {}", s.alpha));
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
-  r0_ = s.initial_radius > 0.f ? s.initial_radius : s.radius_fraction * view_.bounds.radius;
-  if (!(r0_ > 0.f && std::isfinite(r0_))) throw Error(fmt::format("SPPM initial radius must be positive, not {}", r0_));
+  const float r0 = s.initial_radius > 0.f ? s.initial_radius : s.radius_fraction * view_.bounds.radius;
+  if (!(r0 > 0.f && std::isfinite(r0))) throw Error(fmt::format("SPPM initial radius must be positive, not {}", r0));
+  radius_ = ProgressiveRadius(r0, s.alpha);
   photons_ = s.photons > 0 ? s.photons : pixels;
   max_segments_ = s.max_segments > 0 ? s.max_segments : view_.max_path_segments;
   reference_power_ = max_photon_power(view_);
   points_.resize(pixels);
   direct_.resize(pixels);
   flux_.resize(3 * pixels);
-  cached_r2_ = double(r0_) * double(r0_);
-}
-
-float SppmIntegrator::radius(uint32_t pass) {
-  if (pass < cached_pass_) {
-    cached_pass_ = 0;
-    cached_r2_ = double(r0_) * double(r0_);
-  }
-  const double alpha = settings_.alpha;
-  for (; cached_pass_ < pass; ++cached_pass_) {
-    const double i = double(cached_pass_) + 1.0;
-    cached_r2_ *= (i + alpha) / (i + 1.0);
-  }
-  return float(std::sqrt(cached_r2_));
 }
 
 void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
@@ -175,7 +162,7 @@ void SppmIntegrator::statistics(Statistics& out) const {
   out.counter("sppm.eye_paths", eye_paths_);
   out.counter("sppm.photons", photon_paths_);
   out.counter("sppm.photons_per_iteration", photons_);
-  out.value("sppm.initial_radius", r0_, "scene units");
+  out.value("sppm.initial_radius", radius_.initial(), "scene units");
   out.value("sppm.last_radius", last_radius_, "scene units");
   out.ratio("sppm.visible_point_fraction", eye_paths_ ? double(visible_points_) / double(eye_paths_) : 0.0,
             "pixels with a visible point");
@@ -190,8 +177,7 @@ void SppmIntegrator::statistics(Statistics& out) const {
 
 // The radius recurrence and the totals; the per-iteration buffers are rebuilt every pass.
 void SppmIntegrator::save_state(StateWriter& out) const {
-  out.put("sppm.cached_pass", cached_pass_);
-  out.put("sppm.cached_r2", cached_r2_);
+  radius_.save_state(out, "sppm");
   out.put("sppm.last_radius", last_radius_);
   const uint64_t counts[] = {passes_, eye_paths_, photon_paths_, visible_points_, deposits_, gathered_, grid_failures_};
   const double times[] = {eye_s_, grid_s_, photon_s_, resolve_s_};
@@ -200,8 +186,7 @@ void SppmIntegrator::save_state(StateWriter& out) const {
 }
 
 void SppmIntegrator::load_state(StateReader& in) {
-  in.get("sppm.cached_pass", &cached_pass_);
-  in.get("sppm.cached_r2", &cached_r2_);
+  radius_.load_state(in, "sppm");
   in.get("sppm.last_radius", &last_radius_);
   uint64_t counts[7];
   double times[4];

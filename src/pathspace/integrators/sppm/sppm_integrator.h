@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pathspace/hashgrid/hash_grid.h"
+#include "pathspace/integrators/common/progressive_radius.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/integrators/sppm/sppm_kernel.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
@@ -30,8 +31,8 @@ class SppmIntegrator final : public Integrator {
 
   // Gathering radius of iteration `pass` (0-based): r_0 and r_{i+1} = r_i sqrt((i + alpha) / (i + 1))
   // with the 1-based iteration number i = pass + 1.
-  float radius(uint32_t pass);
-  float initial_radius() const { return r0_; }
+  float radius(uint32_t pass) { return radius_.at(pass); }
+  float initial_radius() const { return radius_.initial(); }
   uint64_t photons_per_pass() const { return photons_; }
 
  private:
@@ -39,13 +40,10 @@ class SppmIntegrator final : public Integrator {
   const Accel& accel_;
   SppmSettings settings_;
   uint64_t seed_;
-  float r0_ = 0.f;
+  ProgressiveRadius radius_;
   uint64_t photons_ = 0;
   int max_segments_ = 0;
   float reference_power_ = 0.f;
-  // Radius recurrence cache: r^2 of iteration cached_pass_.
-  uint32_t cached_pass_ = 0;
-  double cached_r2_ = 0.0;
 
   std::vector<VisiblePoint> points_;
   std::vector<Rgb> direct_;

@@ -206,10 +206,9 @@ PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const
                              PhotonCounters* photons) {
   LightPathStart start;
   if (!start_light_path(scene, sampler, &start)) return;
-  const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
-  Ray ray = is_area_light(light) ? spawn_ray(e.p, e.ng, e.d, scene.ray_epsilon) : Ray{e.p, e.d, 0.f, kInfinity};
+  Ray ray = first_light_ray(scene, e);
   // The shortest camera side is one segment, so light paths longer than max - 1 cannot join.
   for (int segments = 1; segments < gather.max_segments; ++segments) {
     SurfaceHit hit;
