@@ -103,10 +103,7 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
     // 2014 paper, sec. 3 (fig. 7): extra camera paths per pixel that only query the batch's
     // vertices, so anti-aliasing costs a primary ray, not a path.
     for (int k = 1; k <= needs_.query_paths; ++k) {
-      PathCounters query_counters;
-      trace_batch(pass, first, paths, k, &queries_, query_counters);
-      counters.rays += query_counters.rays;
-      counters.shadow_rays += query_counters.shadow_rays;
+      trace_batch(pass, first, paths, k, &queries_, counters);  // their rays count, they are not paths
       filter_->query(queries_, &queried_, &found_);
       resolve_filtered_pass(queries_, queried_, film, &counters, &found_);
     }

@@ -99,9 +99,9 @@ PS_HD void probe_visibility(const SceneView& scene, const Tracer& tracer, const 
   }
 }
 
-// Whether a path may still select a vertex after `selected` of them.
+// Whether a path may still select a vertex after `selected` of them (first and nth select one).
 PS_INLINE bool selects_more(const VertexSelection& s, int selected) {
-  return s.mode == VertexSelectionMode::all && selected < s.max_vertices && selected < kMaxSelectedVertices;
+  return s.mode == VertexSelectionMode::all && wants_vertex(s, 0, selected);
 }
 
 // Demodulates the closed vertices into records: contribution = C / albedo, throughput = T albedo.
