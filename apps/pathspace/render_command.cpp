@@ -29,7 +29,9 @@
 #include "periodic_writer.h"
 #include "progress_reporter.h"
 #include "render_outputs.h"
+#include "render_frames.h"
 #include "render_resume.h"
+#include "render_scene.h"
 #include "render_stats_json.h"
 #include "usage_error.h"
 
@@ -39,11 +41,6 @@ namespace {
 
 constexpr const char* kDefaultOutputFolder = "pathspace-out";
 
-// 512x512 when -r is not given.
-Resolution parse_resolution(const std::string& text) {
-  if (text.empty()) return Resolution{512, 512};
-  return parse_resolution_option("resolution", text, kMaxImageSide);
-}
 
 // The output files: --out as given, else pathspace-out/<scene>.exr and .png.
 std::vector<std::string> output_paths(const RenderOptions& o, const std::string& scene_name) {
@@ -53,34 +50,8 @@ std::vector<std::string> output_paths(const RenderOptions& o, const std::string&
   return {base + ".exr", base + ".png"};
 }
 
-// "x,y,z", each a finite number within the scene coordinate range (scene/scene_validation.h).
-std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
-  if (text.empty()) return std::nullopt;
-  float c[3];
-  size_t begin = 0;
-  for (int i = 0; i < 3; ++i) {
-    const size_t end = i < 2 ? text.find(',', begin) : text.size();
-    if (end == std::string::npos) throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}'", option, text));
-    try {
-      c[i] = parse_float_option(option + 2, text.substr(begin, end - begin), -kMaxSceneCoordinate, kMaxSceneCoordinate);
-    } catch (const OptionError& e) {
-      throw UsageError(fmt::format("{} expects x,y,z, e.g. 0,1,6.8, not '{}': {}", option, text, e.what()));
-    }
-    begin = end + 1;
-  }
-  return Vec3(c[0], c[1], c[2]);
-}
 
-// A positional scene argument names a file when it has a scene-file extension or names an existing
-// file that is not also a built-in scene name.
-bool names_scene_file(const std::string& scene) {
-  std::error_code ec;
-  return is_scene_file(scene) || (!find_builtin_scene(scene) && std::filesystem::is_regular_file(scene, ec));
-}
 
-void print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
-}
 
 // The integrator, filter and their options, checked against the registry (usage errors name the
 // integrators or filter an option belongs to).
@@ -178,83 +149,29 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(checked_real("max-decompression-ratio", 0.0, 1e9))
       ->capture_default_str()
       ->group(kRunOptionsGroup);
+  const char* animation = "Animation (docs/animation.md)";
+  CLI::Option* frames = cmd->add_option("--frames", o->frames, "Render frames FIRST:LAST of an animation into numbered files (-o out/frame-%04d.exr)")
+                            ->group(animation);
+  cmd->add_option("--fps", o->fps, "Frames per second of animation time")->check(checked_real("fps", 1e-3, 1e4))->capture_default_str()->needs(frames)->group(animation);
+  cmd->add_option("--orbit", o->orbit, "Turn the camera about the scene centre by this many degrees per frame")
+      ->check(checked_real("orbit", -360.0, 360.0))
+      ->needs(frames)
+      ->group(animation);
+  cmd->add_option("--camera-path", o->camera_path, "Move the camera along the keyframes of this JSON file")->needs(frames)->group(animation);
+  cmd->add_option("--video", o->video, "Also encode the frames into this video (.mp4) with ffmpeg")->needs(frames)->group(animation);
   o->registry.add_to(cmd);
   return cmd;
 }
 
 namespace {
 
-// A scene, loaded or built, with what the render needs to know about it.
-struct PreparedScene {
-  Scene scene;
-  std::string label;         // the built-in's name or the file's path
-  std::string display_name;  // the built-in's name or the file's stem
-  std::string id;            // the built-in's id or the file's path (progress line)
-  std::string key;           // "builtin:NAME" or the file's content hash (checkpoints)
-  std::string file;          // the scene file, or empty
-  int file_spp = 0;          // the file's samples per pixel, 0: none
-};
 
-PreparedScene prepare_scene(const RenderOptions& o) {
-  set_decompression_limit(o.max_decompression_ratio);
-  PreparedScene p;
-  const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
-  const bool from_file = names_scene_file(scene_name);
-  const BuiltinSceneInfo* info = from_file ? nullptr : find_builtin_scene(scene_name);
-  if (!from_file && !info) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
-  SceneLoadOptions load_options;
-  load_options.camera_position = parse_vec3(o.camera_pos, "--camera-pos");
-  load_options.camera_target = parse_vec3(o.camera_target, "--camera-target");
-  load_options.camera_up = parse_vec3(o.camera_up, "--camera-up");
-  if (o.fov > 0.f) load_options.fov_degrees = o.fov;
-  load_options.substitute_missing_textures = o.substitute_missing_textures;
-  if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
-                     o.substitute_missing_textures))
-    throw UsageError("--camera-pos, --camera-target, --camera-up, --fov and --substitute-missing-textures apply to scene files only");
-  const Resolution res = parse_resolution(o.resolution);
-  if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
-  if (from_file) {
-    p.label = p.id = p.file = scene_name;
-    p.display_name = std::filesystem::path(scene_name).stem().string();
-    p.key = scene_file_hash(scene_name);
-    std::vector<std::string> warnings;
-    SceneFileSettings file_settings;
-    try {
-      p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
-    } catch (const Error&) {
-      print_warnings(warnings);  // what was noticed before the error can explain it
-      throw;
-    }
-    print_warnings(warnings);
-    p.file_spp = file_settings.spp;
-  } else {
-    p.label = p.display_name = info->name;
-    p.id = info->id;
-    p.key = std::string("builtin:") + info->name;
-    p.scene = make_builtin_scene(info->name, res.width, res.height);
-  }
-  if (o.lens_radius >= 0.f || o.focus_distance > 0.f) {
-    const PerspectiveCamera& c = p.scene.camera;
-    const float radius = o.lens_radius >= 0.f ? o.lens_radius : c.lens_radius;
-    const float focus = o.focus_distance > 0.f ? o.focus_distance : (c.is_pinhole() ? 0.f : c.focus_distance);
-    if (radius > 0.f && !(focus > 0.f))
-      throw UsageError("--lens-radius needs --focus-distance: the scene's camera is a pinhole and has no focus distance");
-    if (!(radius > 0.f) && o.focus_distance > 0.f) throw UsageError("--focus-distance needs a thin lens: give --lens-radius too");
-    if (!set_thin_lens(&p.scene.camera, radius, focus)) throw UsageError("invalid --lens-radius or --focus-distance");
-  }
-  p.scene.light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
-  p.scene.finalize();
-  // Every scene, built-in or from any file format, with the command line's camera changes applied.
-  std::vector<std::string> warnings;
-  validate_scene(p.scene, &warnings);
-  print_warnings(warnings);
-  return p;
-}
 
 // The render itself: `resumed` is the checkpoint being continued, or null.
 int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resumed) {
   // Validate everything before the (possibly long) render.
   const RenderConfig config = render_config(o);
+  if (!o.frames.empty()) return render_frame_sequence(o, config);
   if (resumed && o.spp == 0 && o.time_s <= 0.0)
     throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
   const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;

@@ -38,6 +38,12 @@ struct RenderOptions {
   double max_decompression_ratio = kDefaultMaxDecompressionRatio;  // gzip scene files (io/file_bytes.h)
   std::string light_selection = "uniform";
   std::string filter = "none";  // path space filter (filters/filter_registry.h)
+  // Animations (render_frames.h, docs/animation.md).
+  std::string frames;       // "A:B"; empty: a still image
+  double fps = 30.0;        // frames per second of animation time
+  float orbit = 0.f;        // degrees per frame about the scene centre
+  std::string camera_path;  // keyframes file
+  std::string video;        // .mp4 encoded with ffmpeg
   // The integrators' and filters' own options, from the registry.
   RegistryOptionParser registry;
 };

@@ -27,9 +27,13 @@ std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run
   j["build_type"] = build_type();
   j["outputs"] = run.outputs;
   j["filter"] = stats.filter;
-  // The integrator's and filter's typed statistics: name -> number (text or histogram bins).
+  j["statistics"] = statistics_json(stats.details);
+  return j.dump(2) + "\n";
+}
+
+nlohmann::ordered_json statistics_json(const Statistics& statistics) {
   nlohmann::ordered_json details = nlohmann::ordered_json::object();
-  for (const Statistic& s : stats.details.all()) {
+  for (const Statistic& s : statistics.all()) {
     if (s.kind == StatKind::histogram)
       details[s.name] = s.bins;
     else if (s.kind == StatKind::text)
@@ -39,8 +43,7 @@ std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run
     else
       details[s.name] = s.number;
   }
-  j["statistics"] = details;
-  return j.dump(2) + "\n";
+  return details;
 }
 
 }  // namespace pathspace::cli

@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "pathspace/session/render_session.h"
 
 namespace pathspace::cli {
@@ -15,5 +17,7 @@ struct RenderRunInfo {
 };
 
 std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run);
+// The integrator's and filter's typed statistics: name -> number (text or histogram bins).
+nlohmann::ordered_json statistics_json(const Statistics& statistics);
 
 }  // namespace pathspace::cli

@@ -27,6 +27,9 @@ std::vector<std::unique_ptr<RenderSession>>& sessions() {
     }
     configs.push_back(with_filter(make_render_config("pt", PtSettings{}), "hashed", HashedFilterSettings{}));
     configs.push_back(with_filter(make_render_config("pt", PtSettings{}), "consistent", ConsistentFilterSettings{}));
+    HashedFilterSettings temporal;  // its state holds the table's keys and histories
+    temporal.temporal.mode = TemporalMode::integrate;
+    configs.push_back(with_filter(make_render_config("pt", PtSettings{}), "hashed", temporal));
     std::vector<std::unique_ptr<RenderSession>> out;
     for (RenderConfig& c : configs) {
       c.threads = 1;

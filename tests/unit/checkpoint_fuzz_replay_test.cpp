@@ -48,7 +48,7 @@ TEST(FuzzCorpusCheckpoint, EveryFileRestoresOrFailsWithError) {
       EXPECT_FALSE(error.empty());
     }
   }
-  EXPECT_EQ(valid, 14) << "a checkpoint and a bare state for each of the seven reference sessions";
+  EXPECT_EQ(valid, 16) << "a checkpoint and a bare state for each of the eight reference sessions";
 }
 
 }  // namespace

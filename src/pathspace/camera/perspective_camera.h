@@ -161,6 +161,14 @@ inline PerspectiveCamera make_perspective_camera(const Vec3& position, const Vec
   return c;
 }
 
+// Sets the field of view of the shorter image axis (square pixels; pbrt's convention, used for scene
+// files and camera paths).
+inline void set_shorter_axis_fov(PerspectiveCamera* c, float fov_degrees) {
+  const float t = tanf(radians(fov_degrees) * 0.5f);
+  c->tan_x = c->width >= c->height ? t * float(c->width) / float(c->height) : t;
+  c->tan_y = c->width >= c->height ? t : t * float(c->height) / float(c->width);
+}
+
 // Turns the camera into a thin lens (lens_radius > 0, focus_distance > 0; scene units), or back
 // into a pinhole with lens_radius = 0. Returns false (camera unchanged) for invalid values.
 inline bool set_thin_lens(PerspectiveCamera* c, float lens_radius, float focus_distance) {

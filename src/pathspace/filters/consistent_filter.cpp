@@ -79,6 +79,10 @@ ConsistentFilter::ConsistentFilter(const ConsistentFilterSettings& settings, con
       batch_bytes_(settings.batch_memory_mb > 0.0 ? size_t(settings.batch_memory_mb * 1048576.0) : default_batch_bytes()),
       grid_(HashGridConfig{}) {}
 
+void ConsistentFilter::begin_frame(const PerspectiveCamera& camera) {
+  r0_per_distance_ = settings_.radius_pixels * std::sqrt(camera.pixel_area() / kPi);
+}
+
 size_t ConsistentFilter::bytes_per_record() {
   // The grid's records (and their compacted copy) and slots, the slot index, each vertex's data in
   // batch order (weights' data, contribution, radius, and a copy of the radius for the median) and

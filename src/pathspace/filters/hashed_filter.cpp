@@ -59,8 +59,19 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
   // The projected size of one pixel at distance 1 (sec. 4: "s-times the projected size of a pixel").
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
   if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
+  if (settings.temporal.enabled()) {
+    if (settings.multi_level || settings.neighbour_search)
+      throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
+    table_.keep_across_frames();
+    history_ = std::make_unique<TemporalHistory>(settings.temporal, table_.cells());
+  }
   stats_.cells = table_.cells();
-  stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0);
+  stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0) + (history_ ? history_->bytes() : 0);
+}
+
+void HashedFilter::begin_frame(const PerspectiveCamera& camera) {
+  if (camera.width != width_ || camera.height != height_) throw Error("the hashed filter's frames must keep one image size");
+  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);  // the field of view may change
 }
 
 void HashedFilter::reset_stats() {
@@ -103,9 +114,14 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   filtered->resize(slots);
 
   auto t0 = std::chrono::steady_clock::now();
-  table_.clear();
+  if (history_) {
+    table_.clear_sums();  // the keys stay: they find their history (sec. 3.4)
+  } else {
+    table_.clear();
+  }
   if (coarse_table_) coarse_table_->clear();
   stats_.clear_ms += milliseconds_since(t0);
+  const uint64_t failures_before = stats_.probe_failures;
 
   t0 = std::chrono::steady_clock::now();
   accumulate(buffer, seed, pass);
@@ -114,6 +130,13 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   t0 = std::chrono::steady_clock::now();
   lookup(buffer, filtered);
   stats_.lookup_ms += milliseconds_since(t0);
+  stats_.probe_failures_last = stats_.probe_failures - failures_before;
+  if (history_) {
+    const TemporalStepStats step = history_->end_step(table_.view(), uint32_t(++stats_.steps));
+    stats_.evicted += step.evicted;
+    stats_.evicted_last = step.evicted;
+    stats_.temporal_ms += step.fold_ms;
+  }
 
   const VoxelTableOccupancy occ = table_.occupancy();
   stats_.occupied_cells_last = occ.occupied;
@@ -283,9 +306,11 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   const uint64_t min_count = uint64_t(std::max(0, settings_.min_count));
   const bool keep_counts = settings_.debug_images;
-  std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0};
+  std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0}, blended_total{0};
+  std::atomic<uint64_t> alpha_total{0};  // fixed point 2^-32: the sum does not depend on the thread count
+  const TemporalHistory* history = history_.get();
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
-    uint64_t low = 0, neighbour_lookups = 0, multi = 0;
+    uint64_t low = 0, neighbour_lookups = 0, multi = 0, blended = 0, alpha_sum = 0;
     for (size_t path = begin; path < end; ++path) {
       for (int r = 0; r < b.count[path]; ++r) {
         const size_t i = b.slot(path, r);
@@ -297,7 +322,15 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         }
         const VoxelCell& cell = view.cells[s];
         if (keep_counts) counts_[i] = uint32_t(std::min<uint64_t>(cell.count, UINT32_MAX));
-        Rgb average = from_fixed_point(cell.sum, cell.count);
+        Rgb average;
+        if (history) {  // sec. 3.4.1: this step's average blended with what earlier steps left
+          float alpha = 0.f;
+          average = history->blend(uint64_t(s), cell, &alpha);
+          ++blended;
+          alpha_sum += uint64_t(double(alpha) * 4294967296.0);
+        } else {
+          average = from_fixed_point(cell.sum, cell.count);
+        }
         if (cell.count < min_count) {
           ++low;
           if (settings_.neighbour_search) {
@@ -316,7 +349,15 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
     low_total += low;
     neighbour_total += neighbour_lookups;
     multi_total += multi;
+    blended_total += blended;
+    alpha_total += alpha_sum;
   });
+  if (history) {
+    const double alpha = double(alpha_total.load()) / 4294967296.0;
+    stats_.blended += blended_total;
+    stats_.alpha_sum += alpha;
+    stats_.mean_alpha_last = blended_total ? alpha / double(blended_total.load()) : 0.0;
+  }
   stats_.low_count += low_total;
   stats_.neighbour_lookups += neighbour_total;
   stats_.multi_level_used += multi_total;
@@ -362,6 +403,16 @@ void HashedFilter::statistics(Statistics& out) const {
   out.seconds("hashed.lookup_s_per_pass", s.lookup_ms * 1e-3 / passes);
   out.value("hashed.accumulate_ns_per_vertex", s.vertices ? s.accumulate_ms * 1e6 / vertices : 0.0);
   out.value("hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
+  out.counter("hashed.probe_limit_fallbacks_last", s.probe_failures_last, "last pass");
+  if (!history_) return;
+  out.counter("hashed.temporal.steps", s.steps, "passes whose table carried to the next (sec. 3.4)");
+  out.counter("hashed.temporal.evicted", s.evicted, "cells evicted between steps (sec. 3.4.3)");
+  out.counter("hashed.temporal.evicted_last", s.evicted_last, "last step");
+  out.value("hashed.temporal.mean_alpha", s.blended ? s.alpha_sum / double(s.blended) : 0.0,
+            "weight of the history in the vertices' estimates (sec. 3.4.1)");
+  out.value("hashed.temporal.mean_alpha_last", s.mean_alpha_last, "last step");
+  out.seconds("hashed.temporal.s_per_step", s.steps ? s.temporal_ms * 1e-3 / double(s.steps) : 0.0,
+              "folding, priorities and eviction");
 }
 
 std::vector<NamedImage> HashedFilter::aovs() const {
@@ -374,9 +425,24 @@ std::vector<NamedImage> HashedFilter::aovs() const {
           {"probes", aov(FilterAov::probes)}};
 }
 
-// The table is rebuilt every pass (sec. 3.4's reuse across frames is not implemented), so the
-// statistics are the only state a continued render needs.
-void HashedFilter::save_state(StateWriter& out) const { out.put("hashed.stats", stats_); }
-void HashedFilter::load_state(StateReader& in) { in.get("hashed.stats", &stats_); }
+// Without --temporal the table is rebuilt every pass, so the statistics are the only state a
+// continued render needs; with it, the keys with their priorities and the histories too.
+void HashedFilter::save_state(StateWriter& out) const {
+  out.put("hashed.stats", stats_);
+  if (!history_) return;
+  const VoxelHashTableView v = table_.view();
+  out.put_vector("hashed.temporal.fingerprints", std::vector<uint32_t>(v.fingerprints, v.fingerprints + table_.cells()));
+  out.put_vector("hashed.temporal.history", history_->cells());
+}
+void HashedFilter::load_state(StateReader& in) {
+  in.get("hashed.stats", &stats_);
+  if (!history_) return;
+  std::vector<uint32_t> fingerprints;
+  std::vector<VoxelHistory> history;
+  in.get_vector("hashed.temporal.fingerprints", &fingerprints, size_t(table_.cells()));
+  in.get_vector("hashed.temporal.history", &history, size_t(table_.cells()));
+  std::copy(fingerprints.begin(), fingerprints.end(), table_.view().fingerprints);
+  history_->restore(std::move(history));
+}
 
 }  // namespace pathspace

@@ -12,6 +12,7 @@
 #include "pathspace/film/image.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/filters/path_space_filter.h"
+#include "pathspace/filters/temporal_history.h"
 #include "pathspace/hashing/voxel_hash_table.h"
 
 namespace pathspace {
@@ -28,6 +29,11 @@ struct HashedFilterStats {
   double expected_fingerprint_collisions_last = 0.0;
   double clear_ms = 0, accumulate_ms = 0, lookup_ms = 0;  // summed over passes
   size_t table_bytes = 0;
+  // Sec. 3.4 (--temporal): summed over steps, and the last step's.
+  uint64_t steps = 0, evicted = 0, blended = 0;
+  double alpha_sum = 0.0, temporal_ms = 0.0;
+  uint64_t evicted_last = 0, probe_failures_last = 0;
+  double mean_alpha_last = 0.0;
 
   // Mean cells inspected per insertion (1 = found or claimed the home cell).
   double mean_probes() const { return insertions ? double(probes_total) / double(insertions) : 0.0; }
@@ -47,8 +53,10 @@ class HashedFilter final : public PathSpaceFilter {
   std::vector<NamedImage> aovs() const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
+  void begin_frame(const PerspectiveCamera& camera) override;
 
   const HashedFilterStats& stats() const { return stats_; }
+  const TemporalHistory* history() const { return history_.get(); }
   void reset_stats();
   const VoxelHashTable& table() const { return table_; }
   // AOV of the last filtered pass (width x height of the camera); needs settings.debug_images.
@@ -69,6 +77,7 @@ class HashedFilter final : public PathSpaceFilter {
   int width_, height_;
   VoxelHashTable table_;
   std::unique_ptr<VoxelHashTable> coarse_table_;  // multi-level accumulation
+  std::unique_ptr<TemporalHistory> history_;      // sec. 3.4: null unless --temporal
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;
   std::vector<int32_t> slots_, coarse_slots_;  // table cell per record slot; < 0: not in the table

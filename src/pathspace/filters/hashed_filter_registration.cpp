@@ -25,16 +25,37 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.flag("psf-neighbours", &S::neighbour_search, true, "Low-count voxels add their 26 neighbours", "sec. 3.3.1");
   t.flag("psf-multi-level", &S::multi_level, true, "Low-count voxels use a voxel one level coarser", "sec. 3.3.2");
   t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
+  t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
+           std::vector<std::pair<std::string, TemporalMode>>{
+               {"off", TemporalMode::off}, {"integrate", TemporalMode::integrate}, {"ema", TemporalMode::ema}},
+           "Keep the table across passes and frames: integrate (alpha = N_old / (N_old + N_new)) or an exponential moving average",
+           "sec. 3.4.1");
+  t.number("temporal-alpha", [](S& s) -> float& { return s.temporal.alpha; }, 0.0, 1.0,
+           "--temporal ema: weight of the old average", "sec. 3.4.1");
+  t.number("temporal-max-frames", [](S& s) -> int& { return s.temporal.max_frames; }, 0, 1 << 24,
+           "History cap: a voxel keeps at most this many steps' worth of vertices (0: no cap)", "sec. 3.4.1");
+  t.choice("temporal-eviction", [](S& s) -> EvictionPolicy& { return s.temporal.eviction; },
+           std::vector<std::pair<std::string, EvictionPolicy>>{
+               {"priority", EvictionPolicy::priority}, {"lru", EvictionPolicy::lru}, {"stale", EvictionPolicy::stale}},
+           "Which cells leave the table between steps: priority bits in the fingerprint, least recently used, or unused for "
+           "--temporal-stale-frames steps",
+           "sec. 3.4.3");
+  t.number("temporal-occupancy", [](S& s) -> float& { return s.temporal.occupancy; }, 0.0625, 1.0,
+           "Eviction (priority, lru) keeps each probe window at most this full", "sec. 3.4.3");
+  t.number("temporal-stale-frames", [](S& s) -> int& { return s.temporal.stale_frames; }, 1, 1 << 24,
+           "--temporal-eviction stale: steps without use before a cell is evicted", "sec. 3.4.3");
   t.check([](const S& s) {
     if (s.neighbour_search && s.multi_level)
       throw OptionError("--psf-neighbours and --psf-multi-level are alternatives; pick one");
+    if (s.temporal.enabled() && (s.neighbour_search || s.multi_level))
+      throw OptionError("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
   });
   return t;
 }
 
 const FilterRegistrar kRegistrar{make_filter_entry<HashedFilterSettings>(
     "hashed", "hashed path space filtering: jittered voxel averages in a hash table, per pass",
-    "Binder, Fricke, Keller 2021, sec. 3.1-3.3", hashed_options(),
+    "Binder, Fricke, Keller 2021, sec. 3.1-3.4", hashed_options(),
     [](const FilterContext& ctx, const HashedFilterSettings& s) -> std::unique_ptr<PathSpaceFilter> {
       return std::make_unique<HashedFilter>(s, ctx.camera, ctx.pixels);
     })};

@@ -1,6 +1,7 @@
 // Options of the hashed path space filter (Binder, Fricke, Keller 2021) and their defaults.
 #pragma once
 
+#include "pathspace/filters/temporal_settings.h"
 #include "pathspace/hashing/voxel_key.h"
 
 namespace pathspace {
@@ -14,6 +15,7 @@ struct HashedFilterSettings {
   bool multi_level = false;       // sec. 3.3.2: also accumulate one level coarser, use it when low-count
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
   bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
+  TemporalSettings temporal;      // sec. 3.4: the table kept across passes and frames
 };
 
 }  // namespace pathspace

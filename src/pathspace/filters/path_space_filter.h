@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pathspace/base/state_archive.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "pathspace/filters/caustic_settings.h"
 #include "pathspace/film/film.h"
 #include "pathspace/film/image.h"
@@ -49,6 +50,9 @@ class PathSpaceFilter {
   virtual void statistics(Statistics&) const {}
   // Debug images of the last pass, when the filter's options asked for them.
   virtual std::vector<NamedImage> aovs() const { return {}; }
+  // A new frame of an animation begins with this camera (same image size; 2021 paper sec. 3.4): the
+  // filter was carried over from the previous frame's integrator with everything it holds.
+  virtual void begin_frame(const PerspectiveCamera& /*camera*/) {}
   // What the next pass needs besides the options (RenderSession::save_state).
   virtual void save_state(StateWriter&) const {}
   virtual void load_state(StateReader&) {}

@@ -1,5 +1,6 @@
 #include "pathspace/hashing/voxel_hash_table.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -53,6 +54,13 @@ void VoxelHashTable::clear() {
   });
 }
 
+void VoxelHashTable::clear_sums() {
+  constexpr size_t kChunk = 1 << 16;
+  parallel_for(size_t(cells()), kChunk, [&](size_t begin, size_t end) {
+    std::memset(static_cast<void*>(view_.cells + begin), 0, (end - begin) * sizeof(VoxelCell));
+  });
+}
+
 VoxelTableOccupancy VoxelHashTable::occupancy() const {
   VoxelTableOccupancy o;
   o.cells = cells();
@@ -64,7 +72,8 @@ VoxelTableOccupancy VoxelHashTable::occupancy() const {
     o.occupied += n;
     pairs += 0.5 * double(n) * double(n > 0 ? n - 1 : 0);
   }
-  o.expected_fingerprint_collisions = pairs / 4294967295.0;
+  const int bits = view_.kept_across_frames() ? kPriorityShift : 32;
+  o.expected_fingerprint_collisions = pairs / (std::ldexp(1.0, bits) - 1.0);
   return o;
 }
 

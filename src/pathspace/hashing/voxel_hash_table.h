@@ -27,6 +27,10 @@ class VoxelHashTable {
   uint64_t cells() const { return view_.mask + 1; }
   size_t bytes() const { return size_t(cells()) * (sizeof(uint32_t) + sizeof(VoxelCell)); }
   void clear();  // parallel
+  // Zeroes the sums and counts only, keeping the keys (a table kept across frames).
+  void clear_sums();  // parallel
+  // Fingerprints of kPriorityShift bits, with room for a priority above them (sec. 3.4.3).
+  void keep_across_frames() { view_.key_mask = kKeyBitsMask; }
   VoxelTableOccupancy occupancy() const;
 
  private:

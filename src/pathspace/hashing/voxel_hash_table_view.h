@@ -45,11 +45,27 @@ PS_INLINE Rgb from_fixed_point(const uint64_t sum[3], uint64_t count) {
   return {float(double(sum[0]) * scale), float(double(sum[1]) * scale), float(double(sum[2]) * scale)};
 }
 
+// A table kept across frames (2021 paper sec. 3.4.3) stores a priority in the top bits of each
+// fingerprint word, so keys are compared on the bits below kPriorityShift only.
+inline constexpr int kPriorityShift = 24;
+inline constexpr uint32_t kKeyBitsMask = (uint32_t(1) << kPriorityShift) - 1;
+
 struct VoxelHashTableView {
   uint32_t* fingerprints = nullptr;
   VoxelCell* cells = nullptr;
   uint64_t mask = 0;   // cells - 1 (a power of two, at least kFingerprintsPerLine)
   int max_probes = kFingerprintsPerLine;
+  // ~0: the whole word is the fingerprint (a table cleared every pass). kKeyBitsMask: a table kept
+  // across frames, whose words carry priorities and whose evictions leave empty cells inside probe
+  // sequences, so a key is looked for in the whole window before an empty cell is claimed.
+  uint32_t key_mask = ~uint32_t(0);
+
+  // The word a key's cell holds (without priority): never the empty sentinel.
+  PS_HD uint32_t stored_fingerprint(const VoxelHash& h) const {
+    const uint32_t f = h.fingerprint & key_mask;
+    return f == kEmptyFingerprint ? 1u : f;
+  }
+  PS_HD bool kept_across_frames() const { return key_mask != ~uint32_t(0); }
 
   // The j-th cell of the probe sequence: wraps inside the home cache line when the limit fits in it.
   PS_HD uint64_t probe_slot(uint64_t home, int j) const {
@@ -61,13 +77,24 @@ struct VoxelHashTableView {
   // Finds the cell of h or claims an empty one.
   PS_HD ProbeResult find_or_insert(const VoxelHash& h) const {
     const uint64_t home = h.index & mask;
+    const uint32_t fp = stored_fingerprint(h);
     ProbeResult r;
+    if (kept_across_frames()) {  // an earlier frame may have left the key behind an evicted (empty) cell
+      for (int j = 0; j < max_probes; ++j) {
+        const uint64_t slot = probe_slot(home, j);
+        if ((atomic_load_relaxed(&fingerprints[slot]) & key_mask) == fp) {
+          r.slot = int64_t(slot);
+          r.probes = j + 1;
+          return r;
+        }
+      }
+    }
     for (int j = 0; j < max_probes; ++j) {
       const uint64_t slot = probe_slot(home, j);
       r.probes = j + 1;
       uint32_t seen = atomic_load_relaxed(&fingerprints[slot]);
-      if (seen == kEmptyFingerprint) seen = atomic_cas(&fingerprints[slot], kEmptyFingerprint, h.fingerprint);
-      if (seen == kEmptyFingerprint || seen == h.fingerprint) {
+      if (seen == kEmptyFingerprint) seen = atomic_cas(&fingerprints[slot], kEmptyFingerprint, fp);
+      if (seen == kEmptyFingerprint || (seen & key_mask) == fp) {
         r.slot = int64_t(slot);
         return r;
       }
@@ -78,16 +105,17 @@ struct VoxelHashTableView {
   // Read-only lookup (after accumulation has finished).
   PS_HD ProbeResult find(const VoxelHash& h) const {
     const uint64_t home = h.index & mask;
+    const uint32_t fp = stored_fingerprint(h);
     ProbeResult r;
     for (int j = 0; j < max_probes; ++j) {
       const uint64_t slot = probe_slot(home, j);
       r.probes = j + 1;
       const uint32_t seen = fingerprints[slot];
-      if (seen == h.fingerprint) {
+      if ((seen & key_mask) == fp) {
         r.slot = int64_t(slot);
         return r;
       }
-      if (seen == kEmptyFingerprint) return r;
+      if (seen == kEmptyFingerprint && !kept_across_frames()) return r;
     }
     return r;
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "pathspace/base/state_archive.h"
@@ -14,6 +15,8 @@
 #include "pathspace/stats/statistics.h"
 
 namespace pathspace {
+
+class PathSpaceFilter;
 
 class Integrator {
  public:
@@ -30,6 +33,10 @@ class Integrator {
   // per-strategy sums), so that a restored render continues bit for bit.
   virtual void save_state(StateWriter&) const {}
   virtual void load_state(StateReader&) {}
+  // What carries from one frame of an animation to the next (2021 paper sec. 3.4): the path space
+  // filter with its table, handed to the next frame's integrator (IntegratorContext::carried_filter).
+  // Null: the next frame starts afresh.
+  virtual std::shared_ptr<PathSpaceFilter> carried_filter() const { return nullptr; }
 };
 
 }  // namespace pathspace

@@ -26,6 +26,8 @@ struct IntegratorContext {
   const Accel& accel;
   uint64_t seed;
   const FilterChoice& filter;  // FilterChoice::kNone unless the entry composes with filters
+  // The previous frame's filter (Integrator::carried_filter), taken over instead of a new one.
+  std::shared_ptr<PathSpaceFilter> carried_filter = nullptr;
 };
 
 struct IntegratorEntry {

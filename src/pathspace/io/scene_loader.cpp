@@ -49,11 +49,9 @@ PerspectiveCamera make_file_camera(const Vec3& position, const Vec3& forward, co
   c.forward = normalize(forward);
   c.right = normalize(right);
   c.up = normalize(up);
-  const float t = std::tan(radians(fov_degrees) * 0.5f);
-  c.tan_x = width >= height ? t * float(width) / float(height) : t;
-  c.tan_y = width >= height ? t : t * float(height) / float(width);
   c.width = width;
   c.height = height;
+  set_shorter_axis_fov(&c, fov_degrees);
   return c;
 }
 

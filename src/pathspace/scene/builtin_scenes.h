@@ -16,6 +16,8 @@ struct BuiltinSceneInfo {
   unsigned mask;            // LoadCornellBox bit mask
   std::string description;
   Scene (*build)(int width, int height) = nullptr;  // set for scenes that are not Cornell variants
+  // Animated scenes: the scene at `seconds` into the animation (build is the scene at 0).
+  Scene (*animate)(int width, int height, double seconds) = nullptr;
 };
 
 inline constexpr const char* kDefaultSceneName = "cornell-box";
@@ -25,6 +27,8 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes();
 const BuiltinSceneInfo* find_builtin_scene(const std::string& name_or_id);
 // Builds a finalised scene; throws pathspace::Error for an unknown name.
 Scene make_builtin_scene(const std::string& name_or_id, int width = 512, int height = 512);
+// The scene `seconds` into its animation; a scene that is not animated is the same at every time.
+Scene make_builtin_scene_at(const std::string& name_or_id, int width, int height, double seconds);
 
 // SmallVCM's LoadCornellBox(resolution, mask) bits (docs/scenes.md §1).
 enum CornellMask : unsigned {
@@ -38,6 +42,7 @@ enum CornellMask : unsigned {
   kSmallGlassSphere = 128,
   kGlossyFloor = 256,
 };
-Scene make_cornell_box(unsigned mask, int width, int height);
+// light_offset moves the light box (the animated scenes of scene/animated_scenes.h).
+Scene make_cornell_box(unsigned mask, int width, int height, const Vec3& light_offset = Vec3());
 
 }  // namespace pathspace

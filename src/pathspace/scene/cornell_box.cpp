@@ -2,6 +2,7 @@
 // geometry §3, materials §4, lights §5, camera §2, 10-segment path limit and 1e-3 ray offsets §6.
 #include "pathspace/base/error.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/animated_scenes.h"
 #include "pathspace/scene/filter_scenes.h"
 
 namespace pathspace {
@@ -18,6 +19,10 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
       {"cornell-glossy-sun", "gbs_s", 450, "glossy floor, blue back wall, small spheres, directional sun"},
       {"filter-leak", "f_l", 0, "room split by a thin wall, point light on one side (light a filter leaks)", make_wall_leak_scene},
       {"filter-fence", "f_f", 0, "room with a fence of pixel-thin bars, ceiling light (anti-aliasing)", make_fence_scene},
+      {"cornell-moving-light", "ml_c", 0, "animated: empty Cornell box, its ceiling light sweeping left and right (2021 paper fig. 9)",
+       make_moving_light_frame0, make_moving_light_scene},
+      {"cornell-moving-sphere", "ms_c", 0, "animated: Cornell box with a diffuse sphere circling on the floor", make_moving_sphere_frame0,
+       make_moving_sphere_scene},
   };
   return scenes;
 }
@@ -36,7 +41,15 @@ Scene make_builtin_scene(const std::string& name_or_id, int width, int height) {
   return scene;
 }
 
-Scene make_cornell_box(unsigned mask, int width, int height) {
+Scene make_builtin_scene_at(const std::string& name_or_id, int width, int height, double seconds) {
+  const BuiltinSceneInfo* info = find_builtin_scene(name_or_id);
+  if (!info || !info->animate) return make_builtin_scene(name_or_id, width, height);
+  Scene scene = info->animate(width, height, seconds);
+  scene.name = info->name;
+  return scene;
+}
+
+Scene make_cornell_box(unsigned mask, int width, int height, const Vec3& light_offset) {
   Scene scene;
   // §2: camera. SmallVCM uses the same tan for x and y (square_pixels = false).
   scene.camera = make_perspective_camera(Vec3(-0.0439815f, -4.12529f, 0.222539f), Vec3(0.00688625f, 0.998505f, -0.0542161f),
@@ -87,9 +100,10 @@ Scene make_cornell_box(unsigned mask, int width, int height) {
 
   // §3.4: the light box, absent in point-light scenes; its bottom emits only with kLightCeiling.
   if (!(mask & kLightPoint)) {
-    const Vec3 lb[8] = {{-0.25f, 0.25f, 1.26002f}, {0.25f, 0.25f, 1.26002f},   {0.25f, 0.25f, 1.28002f},
-                        {-0.25f, 0.25f, 1.28002f}, {-0.25f, -0.25f, 1.26002f}, {0.25f, -0.25f, 1.26002f},
-                        {0.25f, -0.25f, 1.28002f}, {-0.25f, -0.25f, 1.28002f}};
+    Vec3 lb[8] = {{-0.25f, 0.25f, 1.26002f}, {0.25f, 0.25f, 1.26002f},   {0.25f, 0.25f, 1.28002f},
+                  {-0.25f, 0.25f, 1.28002f}, {-0.25f, -0.25f, 1.26002f}, {0.25f, -0.25f, 1.26002f},
+                  {0.25f, -0.25f, 1.28002f}, {-0.25f, -0.25f, 1.28002f}};
+    for (Vec3& p : lb) p = p + light_offset;  // animated scenes move it (animated_scenes.h)
     scene.add_triangle(lb[0], lb[2], lb[1], white_m);
     scene.add_triangle(lb[2], lb[0], lb[3], white_m);
     scene.add_triangle(lb[3], lb[4], lb[7], white_m);

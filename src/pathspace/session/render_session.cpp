@@ -10,6 +10,7 @@
 #include "pathspace/base/state_archive.h"
 #include "pathspace/integrators/integrator.h"
 #include "pathspace/parallel/parallel_for.h"
+#include "pathspace/sampling/hash.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
@@ -35,13 +36,16 @@ std::string scene_fingerprint(const Scene& scene) {
          std::to_string(b.radius);
 }
 
-std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config) {
+std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config,
+                                              std::shared_ptr<PathSpaceFilter> carried = nullptr) {
   check_composition(config.integrator, config.filter.name);
-  const IntegratorContext context{scene, accel, config.seed, config.filter};
+  const IntegratorContext context{scene, accel, config.seed, config.filter, std::move(carried)};
   return integrator_registry().at(config.integrator).create(context, config.settings);
 }
 
 }  // namespace
+
+uint64_t frame_seed(uint64_t seed, uint64_t frame) { return frame == 0 ? seed : hash_combine(mix64(seed ^ 0x6672616d65ull), frame); }
 
 RenderSession::RenderSession(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, RenderConfig config)
     : scene_(std::move(scene)),
@@ -109,6 +113,31 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
 
 void RenderSession::cancel() { cancel_.store(true); }
 
+void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (scene->camera.width != int(film_.width()) || scene->camera.height != int(film_.height()))
+    throw Error("frame " + std::to_string(frame) + " is " + std::to_string(scene->camera.width) + "x" + std::to_string(scene->camera.height) +
+                ", the animation's first frame " + std::to_string(film_.width()) + "x" + std::to_string(film_.height()));
+  std::shared_ptr<const Accel> next_accel = accel ? std::move(accel) : std::make_shared<const Accel>(*scene);
+  RenderConfig frame_config = config_;
+  frame_config.seed = frame_seed(config_.seed, frame);
+  // The new integrator takes the filter over before the old one (and its scene) goes.
+  integrator_ = create_integrator(*scene, *next_accel, frame_config, integrator_->carried_filter());
+  scene_ = std::move(scene);
+  accel_ = std::move(next_accel);
+  film_ = Film(film_.width(), film_.height());
+  counters_ = PathCounters{};
+  passes_ = 0;
+  wall_s_ = 0.0;
+  frame_ = frame;
+  in_sequence_ = true;
+}
+
+uint64_t RenderSession::frame() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frame_;
+}
+
 uint32_t RenderSession::passes_done() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return passes_;
@@ -126,6 +155,7 @@ RenderStats RenderSession::stats_locked() const {
   s.dropped_samples = counters_.dropped;
   s.threads = threads_ > 0 ? threads_ : ThreadLimit::active();
   s.seed = config_.seed;
+  s.frame = frame_;
   integrator_->statistics(s.details);
   return s;
 }
@@ -147,6 +177,7 @@ RenderSnapshot RenderSession::snapshot() const {
 
 SessionState RenderSession::save_state() const {
   const ReaderLock lock(*this);
+  if (in_sequence_) throw Error("the state of an animation's frame cannot be saved (its filter's table spans frames)");
   StateWriter out;
   // The film's sums, squares and counts are nearly all of it (plus a splat film for LT, BPT, PCLT).
   out.reserve(film_.pixel_count() * (2 * 3 * sizeof(double) + sizeof(uint32_t)) * 2 + (size_t(1) << 16));

@@ -66,7 +66,8 @@ struct RenderStats {
   uint64_t paths = 0;
   uint64_t dropped_samples = 0;  // NaN/Inf samples replaced by 0
   int threads = 0;
-  uint64_t seed = 0;
+  uint64_t seed = 0;   // the session's (a frame's passes use frame_seed(seed, frame))
+  uint64_t frame = 0;  // of an animation (begin_frame); 0 for a still render
   Statistics details;  // "<integrator or filter>.<what>" (Integrator::statistics)
   double mrays_per_s() const { return wall_s > 0 ? double(rays) / wall_s * 1e-6 : 0.0; }
   double paths_per_s() const { return wall_s > 0 ? double(paths) / wall_s : 0.0; }
@@ -89,6 +90,10 @@ struct RunResult {
 struct SessionState {
   std::vector<uint8_t> bytes;
 };
+
+// The seed of frame `frame`'s passes: the session's own for frame 0, so that frame 0 of an animation
+// is the still render of its scene; a hash of both for the others.
+uint64_t frame_seed(uint64_t seed, uint64_t frame);
 
 class RenderSession {
  public:
@@ -113,6 +118,13 @@ class RenderSession {
   // Before or between runs. Throws pathspace::Error when the state belongs to another integrator,
   // filter, option values, seed, scene or image size, or is damaged; the session is then unchanged.
   void restore_state(const SessionState& state);
+
+  // Starts frame `frame` of an animation with this scene (same image size): a new film and pass
+  // count, a new integrator seeded with frame_seed(seed, frame), and the path space filter carried
+  // over with its table (Integrator::carried_filter; 2021 paper sec. 3.4). A null accel is built.
+  // Between runs. A session that began a frame cannot save its state (checkpoints hold one frame).
+  void begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame);
+  uint64_t frame() const;
 
   uint32_t passes_done() const;
   // Lock-free: how far the pass in progress is. Its fraction counts the loops that have started,
@@ -148,6 +160,8 @@ class RenderSession {
   PathCounters counters_;
   uint32_t passes_ = 0;
   double wall_s_ = 0.0;
+  uint64_t frame_ = 0;
+  bool in_sequence_ = false;  // begin_frame was called
   int threads_ = 0;
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
   mutable std::atomic<int> readers_waiting_{0};

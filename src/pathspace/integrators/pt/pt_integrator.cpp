@@ -37,10 +37,15 @@ struct SharedCounters {
 }  // namespace
 
 PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSettings& settings, uint64_t seed,
-                           const FilterChoice& filter)
+                           const FilterChoice& filter, std::shared_ptr<PathSpaceFilter> carried)
     : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed) {
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
-  filter_ = make_filter(filter, FilterContext{scene.camera, pixels});
+  if (carried && filter.active() && filter.name == carried->name()) {
+    filter_ = std::move(carried);
+    filter_->begin_frame(scene.camera);
+  } else {
+    filter_ = make_filter(filter, FilterContext{scene.camera, pixels});
+  }
   if (filter_) needs_ = filter_->needs();
   if (needs_.visibility) {
     // The visibility weight's probes (2014 paper, sec. 2.1): the first 32 delta lights, and the

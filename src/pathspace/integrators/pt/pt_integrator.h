@@ -20,9 +20,10 @@ class Scene;
 
 class PtIntegrator final : public Integrator {
  public:
-  // `filter`: the path space filter of the selected vertices (FilterChoice::kNone: plain PT).
+  // `filter`: the path space filter of the selected vertices (FilterChoice::kNone: plain PT);
+  // `carried`: the previous frame's filter of that kind, taken over (begin_frame) instead of a new one.
   PtIntegrator(const Scene& scene, const Accel& accel, const PtSettings& settings, uint64_t seed,
-               const FilterChoice& filter = {});
+               const FilterChoice& filter = {}, std::shared_ptr<PathSpaceFilter> carried = nullptr);
   ~PtIntegrator() override;
   const char* name() const override { return "pt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
@@ -30,6 +31,7 @@ class PtIntegrator final : public Integrator {
   std::vector<NamedImage> aovs() const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
+  std::shared_ptr<PathSpaceFilter> carried_filter() const override { return filter_; }
 
   const VertexBuffer& vertex_buffer() const { return buffer_; }
   const PathSpaceFilter* filter() const { return filter_.get(); }
@@ -43,7 +45,7 @@ class PtIntegrator final : public Integrator {
   const Accel& accel_;
   PtSettings settings_;
   uint64_t seed_;
-  std::unique_ptr<PathSpaceFilter> filter_;  // null: plain path tracing
+  std::shared_ptr<PathSpaceFilter> filter_;  // null: plain path tracing
   FilterNeeds needs_;
   std::vector<uint32_t> probe_lights_;  // the delta lights of the visibility weight
   VisibilityProbes probes_;             // none unless the filter needs visibility

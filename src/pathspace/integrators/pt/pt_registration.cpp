@@ -38,7 +38,7 @@ const IntegratorRegistrar kRegistrar{make_integrator_entry<PtSettings>(
     "Veach 1997 (MIS); path split for filtering: Binder, Fricke, Keller 2021, sec. 3", pt_options(),
     {IntegratorEntry::kAllFilters},
     [](const IntegratorContext& ctx, const PtSettings& s) -> std::unique_ptr<Integrator> {
-      return std::make_unique<PtIntegrator>(ctx.scene, ctx.accel, s, ctx.seed, ctx.filter);
+      return std::make_unique<PtIntegrator>(ctx.scene, ctx.accel, s, ctx.seed, ctx.filter, ctx.carried_filter);
     })};
 
 }  // namespace

@@ -1,0 +1,192 @@
+#include "render_frames.h"
+
+#include <csignal>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "pathspace/io/atomic_file.h"
+#include "pathspace/io/camera_path_file.h"
+#include "pathspace/io/image_io.h"
+#include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/session/frame_sequence.h"
+#include "distinct_files.h"
+#include "frame_pattern.h"
+#include "interrupt_handler.h"
+#include "render_outputs.h"
+#include "render_scene.h"
+#include "render_stats_json.h"
+#include "usage_error.h"
+#include "video_encoder.h"
+
+namespace pathspace::cli {
+
+namespace {
+
+FrameRange parse_frames(const std::string& text) {
+  const size_t colon = text.find(':');
+  const auto number = [&](const std::string& part) {
+    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos)
+      throw UsageError(fmt::format("--frames expects FIRST:LAST, two frame numbers below 10^9, not '{}'", text), "e.g. --frames 0:63");
+    return uint64_t(std::stoull(part));
+  };
+  if (colon == std::string::npos) throw UsageError(fmt::format("--frames expects FIRST:LAST, not '{}'", text), "e.g. --frames 0:63");
+  const FrameRange r{number(text.substr(0, colon)), number(text.substr(colon + 1))};
+  if (r.last < r.first) throw UsageError(fmt::format("--frames {}: the last frame comes before the first", text));
+  return r;
+}
+
+// What a still render has that a sequence does not (yet).
+void check_sequence_options(const RenderOptions& o) {
+  const std::pair<bool, const char*> unsupported[] = {
+      {!o.checkpoint.empty(), "--checkpoint"}, {!o.resume.empty(), "--resume"},   {o.write_every > 0.0, "--write-every"},
+      {o.time_s > 0.0, "--time"},              {o.checkpoint_every > 0.0, "--checkpoint-every"}};
+  for (const auto& [given, name] : unsupported)
+    if (given) throw UsageError(std::string(name) + " does not apply to --frames (a frame's table spans the frames before it)");
+}
+
+std::vector<std::string> frame_outputs(const RenderOptions& o, const std::string& scene_name) {
+  if (!o.outputs.empty()) return o.outputs;
+  std::filesystem::create_directories("pathspace-out");
+  const std::string base = "pathspace-out/" + scene_name + "-%04d";
+  return {base + ".exr", base + ".png"};
+}
+
+nlohmann::ordered_json frame_entry(const FrameResult& f, const Animation& animation) {
+  nlohmann::ordered_json j;
+  j["frame"] = f.frame;
+  j["time_s"] = animation.seconds_of(f.frame);
+  j["scene_build_s"] = f.scene_seconds;
+  j["render_s"] = f.render_seconds;
+  j["spp"] = f.snapshot.stats.spp;
+  j["rays"] = f.snapshot.stats.rays;
+  j["seed"] = frame_seed(f.snapshot.stats.seed, f.frame);
+  j["statistics"] = statistics_json(f.snapshot.stats.details);
+  return j;
+}
+
+// The per-frame line: what the table did in the frame's last pass (hashed filter), when it ran.
+std::string frame_summary(const Statistics& s) {
+  std::string line;
+  if (const Statistic* occupancy = s.find("hashed.occupancy")) line += fmt::format(", occupancy {:.3f}", occupancy->number);
+  if (const Statistic* evicted = s.find("hashed.temporal.evicted_last")) line += fmt::format(", evicted {}", uint64_t(evicted->number));
+  if (const Statistic* failed = s.find("hashed.probe_limit_fallbacks_last")) line += fmt::format(", failed inserts {}", uint64_t(failed->number));
+  if (const Statistic* alpha = s.find("hashed.temporal.mean_alpha_last")) line += fmt::format(", mean alpha {:.3f}", alpha->number);
+  return line;
+}
+
+}  // namespace
+
+int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
+  check_sequence_options(o);
+  const FrameRange range = parse_frames(o.frames);
+  const uint32_t spp = o.spp > 0 ? o.spp : 1;
+  std::string ffmpeg;
+  if (!o.video.empty()) {
+    ffmpeg = find_ffmpeg();
+    if (ffmpeg.empty()) throw Error("--video needs the ffmpeg program, which is not on PATH (scripts/install-deps installs it)");
+    check_output_writable(o.video);
+  }
+
+  PreparedScene prepared = prepare_scene(o);
+  const BuiltinSceneInfo* builtin = prepared.file.empty() ? find_builtin_scene(prepared.label) : nullptr;
+  std::vector<std::string> images = frame_outputs(o, prepared.display_name);
+  std::vector<NamedFile> files;
+  for (const std::string& pattern : images) {
+    check_frame_pattern("-o", pattern);
+    files.push_back({"-o", frame_path(pattern, range.first)});
+    try {
+      image_format_from_path(pattern);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    check_output_writable(files.back().path);
+  }
+  if (!o.variance_path.empty()) {
+    check_frame_pattern("--variance-out", o.variance_path);
+    files.push_back({"--variance-out", frame_path(o.variance_path, range.first)});
+  }
+  if (!o.stats_path.empty()) files.push_back({"--stats", o.stats_path}), check_output_writable(o.stats_path);
+  if (!o.video.empty()) files.push_back({"--video", o.video});
+  std::vector<NamedFile> inputs;
+  if (!prepared.file.empty()) inputs.push_back({"the scene file", prepared.file});
+  if (!o.camera_path.empty()) inputs.push_back({"--camera-path", o.camera_path});
+  check_distinct_files(files, inputs);
+
+  Animation animation;
+  animation.fps = o.fps;
+  animation.orbit_degrees_per_frame = o.orbit;
+  if (!o.camera_path.empty()) animation.camera_path = read_camera_path(o.camera_path);
+  const int width = prepared.scene.camera.width, height = prepared.scene.camera.height;
+  if (builtin && builtin->animate) {
+    animation.scene_at = [&o, builtin, width, height](double seconds) {
+      Scene s = builtin->animate(width, height, seconds);
+      s.name = builtin->name;
+      apply_scene_options(o, &s);
+      return s;
+    };
+  } else {
+    animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene file stands still
+  }
+
+  // PNG frames for the video: the -o PNG sequence, else a temporary folder beside the video.
+  std::string png_pattern, temporary_pngs;
+  if (!o.video.empty()) {
+    for (const std::string& p : images)
+      if (std::filesystem::path(p).extension() == ".png") png_pattern = p;
+    if (png_pattern.empty()) {
+      temporary_pngs = (std::filesystem::path(o.video).parent_path() / ("." + std::filesystem::path(o.video).stem().string() + ".frames")).string();
+      std::filesystem::create_directories(temporary_pngs);
+      png_pattern = temporary_pngs + "/%06d.png";
+    }
+  }
+
+  if (!o.quiet)
+    fmt::print("pathspace: {} ({}), {}x{}, {}, frames {} to {} at {} spp\n", prepared.display_name, prepared.id, width, height,
+               o.integrator, range.first, range.last, spp);
+  InterruptHandler interrupt;
+  RenderRunInfo run{prepared.display_name, width, height, 0, ""};
+  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  const uint64_t rendered = render_frames(
+      animation, config, range, spp,
+      [&](const FrameResult& f) {
+        if (interrupt.signal() != 0 && f.snapshot.stats.spp < spp) return false;  // an unfinished frame is not written
+        OutputPlan plan;
+        for (const std::string& p : images) plan.images.push_back(frame_path(p, f.frame));
+        if (!temporary_pngs.empty()) plan.images.push_back(frame_path(png_pattern, f.frame));
+        if (!o.variance_path.empty()) plan.variance = frame_path(o.variance_path, f.frame);
+        plan.run = run;
+        write_outputs(plan, f.snapshot, OutputKind::final);
+        frames.push_back(frame_entry(f, animation));
+        if (!o.quiet) fmt::print("frame {}: {:.3f} s{}\n", f.frame, f.render_seconds, frame_summary(f.snapshot.stats.details));
+        return interrupt.signal() == 0;
+      },
+      [&](RenderSession& session) { interrupt.watch(&session); });
+  interrupt.watch(nullptr);
+
+  if (!o.stats_path.empty()) {
+    nlohmann::ordered_json j;
+    j["scene"] = prepared.display_name;
+    j["integrator"] = config.integrator;
+    j["filter"] = config.filter.name;
+    j["width"] = width;
+    j["height"] = height;
+    j["fps"] = o.fps;
+    j["spp_per_frame"] = spp;
+    j["seed"] = config.seed;
+    j["frames"] = frames;
+    write_text_file(o.stats_path, j.dump(2) + "\n");
+  }
+  std::error_code ec;
+  if (!o.video.empty() && frames.size() > 0) encode_video(ffmpeg, png_pattern, range.first, o.fps, o.video);
+  if (!temporary_pngs.empty()) std::filesystem::remove_all(temporary_pngs, ec);
+  if (interrupt.signal() != 0) {
+    fmt::print(stderr, "pathspace render: interrupted after {} of {} frames\n", frames.size(), range.count());
+    return interrupt.exit_code();
+  }
+  if (!o.quiet) fmt::print("{} frames written\n", rendered);
+  return 0;
+}
+
+}  // namespace pathspace::cli

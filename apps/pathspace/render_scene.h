@@ -1,0 +1,38 @@
+// The scene of `pathspace render`: a built-in scene or a scene file, with the command line's camera,
+// lens and light-selection options applied and validated (shared by still renders and --frames).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pathspace/scene/scene.h"
+#include "number_options.h"
+#include "render_command.h"
+
+namespace pathspace::cli {
+
+// A scene, loaded or built, with what the render needs to know about it.
+struct PreparedScene {
+  Scene scene;
+  std::string label;         // the built-in's name or the file's path
+  std::string display_name;  // the built-in's name or the file's stem
+  std::string id;            // the built-in's id or the file's path (progress line)
+  std::string key;           // "builtin:NAME" or the file's content hash (checkpoints)
+  std::string file;          // the scene file, or empty
+  int file_spp = 0;          // the file's samples per pixel, 0: none
+};
+
+// -r as given, 512x512 when it is empty.
+Resolution parse_resolution(const std::string& text);
+// "x,y,z" of --camera-pos and its kind; nullopt for an empty text.
+std::optional<Vec3> parse_vec3(const std::string& text, const char* option);
+// Whether the positional scene names a file rather than a built-in scene.
+bool names_scene_file(const std::string& scene);
+void print_warnings(const std::vector<std::string>& warnings);
+// Loads or builds the scene of `o` and applies its options (below); validation warnings are printed.
+PreparedScene prepare_scene(const RenderOptions& o);
+// The lens and light-selection options of `o`, then finalize() (every frame of an animation gets them).
+void apply_scene_options(const RenderOptions& o, Scene* scene);
+
+}  // namespace pathspace::cli

@@ -1,0 +1,63 @@
+// What a voxel of the hashed filter's table keeps from earlier steps (2021 paper sec. 3.4), beside
+// the table's per-step sums. A step is one pass: one frame of an animation rendered at 1 spp.
+//  * Blending (3.4.1): a vertex looks up its voxel's history combined with this step's average,
+//    by temporal integration (alpha = N_old / (N_old + N_new)) or an exponential moving average.
+//  * Folding: after the step's lookups, every voxel used in the step stores that combination as its
+//    new history, its weight capped at max_frames steps' worth of vertices.
+//  * Eviction (3.4.3): the top kPriorityShift.. bits of each fingerprint word hold a priority
+//    (recency in the high nibble, log2 of the weight in the low one), so the window's smallest word
+//    is the cell to evict and pseudo-random low bits spread evictions uniformly over the scene. The
+//    paper decides this with one atomicMin while inserting; here it is decided between steps, one
+//    probe window at a time, which keeps every frame independent of thread timing (bit-identical
+//    images for any thread count).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/filters/temporal_settings.h"
+#include "pathspace/hashing/voxel_hash_table.h"
+#include "pathspace/math/rgb.h"
+
+namespace pathspace {
+
+struct VoxelHistory {
+  float mean[3] = {0.f, 0.f, 0.f};
+  float weight = 0.f;      // N_old: vertices behind the mean (0: no history)
+  uint32_t last_step = 0;  // the step that last used the cell
+  uint32_t pad = 0;
+};
+
+struct TemporalStepStats {
+  uint64_t evicted = 0;       // cells evicted after the step
+  uint64_t occupied = 0;      // cells holding a key after eviction
+  uint64_t folded = 0;        // cells used in the step
+  double fold_ms = 0.0;       // folding, priorities and eviction
+};
+
+class TemporalHistory {
+ public:
+  TemporalHistory(const TemporalSettings& settings, uint64_t cells);
+
+  const TemporalSettings& settings() const { return settings_; }
+  size_t bytes() const { return history_.size() * sizeof(VoxelHistory); }
+  const VoxelHistory& at(uint64_t slot) const { return history_[slot]; }
+  const std::vector<VoxelHistory>& cells() const { return history_; }
+  void restore(std::vector<VoxelHistory> cells) { history_ = std::move(cells); }
+
+  // The estimate of a cell for this step from its history and this step's sum and count (count > 0);
+  // *alpha receives the weight of the history (0: none).
+  Rgb blend(uint64_t slot, const VoxelCell& current, float* alpha) const;
+  // After the step's lookups: folds each used cell into its history, writes the priorities into the
+  // fingerprint words and evicts (see above). `step` counts from 1.
+  TemporalStepStats end_step(const VoxelHashTableView& table, uint32_t step);
+
+  // The priority byte of a cell: recency (15 - steps since use, at least 0) above min(15, log2 weight).
+  static uint32_t priority(const VoxelHistory& h, uint32_t step);
+
+ private:
+  TemporalSettings settings_;
+  std::vector<VoxelHistory> history_;
+};
+
+}  // namespace pathspace

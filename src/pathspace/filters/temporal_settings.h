@@ -1,0 +1,34 @@
+// Options of the hashed filter's reuse of its table across passes and frames (2021 paper sec. 3.4).
+#pragma once
+
+#include <cstdint>
+
+namespace pathspace {
+
+// Sec. 3.4.1: how a voxel's earlier average c_old (over N_old vertices) and this step's c_new (over
+// N_new) combine.
+enum class TemporalMode : uint8_t {
+  off,        // every pass starts from an empty table
+  integrate,  // alpha = N_old / (N_old + N_new): true temporal integration of static content
+  ema,        // c = alpha c_old + (1 - alpha) c_new with a fixed alpha (--temporal-alpha)
+};
+
+// Sec. 3.4.3: which cells leave the table between steps.
+enum class EvictionPolicy : uint8_t {
+  priority,  // the lowest fingerprint word, whose top bits hold a priority (recency, then count)
+  lru,       // the least recently used
+  stale,     // SHaRC's rule: every cell unused for --temporal-stale-frames steps, however full the table
+};
+
+struct TemporalSettings {
+  TemporalMode mode = TemporalMode::off;
+  float alpha = 0.8f;        // ema: weight of the old average
+  int max_frames = 0;        // history cap: N_old <= max_frames * N_new (0: no cap)
+  EvictionPolicy eviction = EvictionPolicy::priority;
+  float occupancy = 0.75f;   // priority, lru: each probe window is evicted down to this fill
+  int stale_frames = 32;     // stale: steps without use before a cell goes
+
+  bool enabled() const { return mode != TemporalMode::off; }
+};
+
+}  // namespace pathspace

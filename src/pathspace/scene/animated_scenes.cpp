@@ -1,0 +1,32 @@
+#include "pathspace/scene/animated_scenes.h"
+
+#include <cmath>
+
+#include "pathspace/scene/builtin_scenes.h"
+
+namespace pathspace {
+
+namespace {
+double phase(double seconds) { return 2.0 * double(kPi) * seconds / kMovingScenePeriod; }
+}  // namespace
+
+Scene make_moving_light_scene(int width, int height, double seconds) {
+  const float x = kMovingLightAmplitude * float(std::sin(phase(seconds)));
+  return make_cornell_box(kLightCeiling, width, height, Vec3(x, 0.f, 0.f));
+}
+
+Scene make_moving_light_frame0(int width, int height) { return make_moving_light_scene(width, height, 0.0); }
+
+Scene make_moving_sphere_scene(int width, int height, double seconds) {
+  Scene scene = make_cornell_box(kLightCeiling, width, height);
+  const float radius = 0.4f, floor_z = -1.28002f, orbit = 0.6f;
+  const double a = phase(seconds);
+  const Vec3 centre(0.00972998f + orbit * float(std::cos(a)), 0.02453005f + orbit * float(std::sin(a)), floor_z + radius);
+  scene.add_sphere(centre, radius, scene.add_material(make_diffuse(Rgb(0.75f, 0.7f, 0.6f))));
+  scene.finalize();
+  return scene;
+}
+
+Scene make_moving_sphere_frame0(int width, int height) { return make_moving_sphere_scene(width, height, 0.0); }
+
+}  // namespace pathspace

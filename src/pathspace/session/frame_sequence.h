@@ -1,0 +1,34 @@
+// Renders the frames of an animation in order with one RenderSession, so that the path space filter
+// and its table carry from frame to frame (2021 paper sec. 3.4; --temporal of the hashed filter).
+// The CLI's `render --frames`, the temporal study and the tests all render sequences through it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "pathspace/scene/animation.h"
+#include "pathspace/session/render_session.h"
+
+namespace pathspace {
+
+struct FrameRange {
+  uint64_t first = 0, last = 0;  // inclusive
+  uint64_t count() const { return last - first + 1; }
+};
+
+struct FrameResult {
+  uint64_t frame = 0;
+  RenderSnapshot snapshot;     // the frame's image, variance and statistics (the filter's over all frames so far)
+  double scene_seconds = 0.0;  // building the frame's scene and its acceleration structure
+  double render_seconds = 0.0;
+};
+
+// Renders `range` with `passes` passes (samples per pixel) per frame. on_frame gets each frame as it
+// is done and returns false to stop the sequence; cancel() of the session it gets likewise stops it
+// after the current pass (that frame is then still reported, with fewer passes).
+// Returns the number of frames rendered.
+uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
+                       const std::function<bool(const FrameResult&)>& on_frame,
+                       const std::function<void(RenderSession&)>& on_session = {});
+
+}  // namespace pathspace

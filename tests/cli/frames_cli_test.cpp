@@ -1,0 +1,93 @@
+// `pathspace render --frames`: numbered outputs, per-frame statistics, the animation options' usage
+// errors, and --video with and without ffmpeg (docs/animation.md).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pathspace::testing::read_all;
+using pathspace::testing::run_pathspace;
+
+class FramesCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pathspace-frames-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(FramesCli, WritesOneFilePerFrameAndOneStatsEntryPerFrame) {
+  const auto r = run_pathspace("render cornell-moving-light -r 24x24 --frames 2:5 --filter hashed --temporal integrate -q -o " +
+                               path("f-%03d.exr") + " --stats " + path("s.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  for (int f = 2; f <= 5; ++f) EXPECT_TRUE(fs::exists(path("f-00" + std::to_string(f) + ".exr"))) << f;
+  EXPECT_FALSE(fs::exists(path("f-001.exr")));
+  const nlohmann::json j = nlohmann::json::parse(read_all(path("s.json")));
+  ASSERT_EQ(j["frames"].size(), 4u);
+  EXPECT_EQ(j["frames"][0]["frame"], 2);
+  EXPECT_EQ(j["frames"][3]["statistics"]["hashed.temporal.steps"], 4);
+  EXPECT_GT(j["frames"][3]["statistics"]["hashed.temporal.mean_alpha_last"].get<double>(), 0.5);
+}
+
+TEST_F(FramesCli, CameraPathAndOrbitMoveTheCamera) {
+  std::ofstream(path("cam.json")) << R"({"keyframes": [
+    {"time": 0, "position": [0, -4, 0.2], "target": [0, 0, 0], "up": [0, 0, 1], "fov": 40},
+    {"time": 1, "position": [1, -4, 0.2], "target": [0, 0, 0], "up": [0, 0, 1]}]})";
+  auto r = run_pathspace("render cornell-box -r 16x16 --frames 0:1 -q --camera-path " + path("cam.json") + " -o " + path("c-%d.png"));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(path("c-1.png")));
+  r = run_pathspace("render cornell-box -r 16x16 --frames 0:1 -q --orbit 10 -o " + path("o-%d.png"));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(read_all(path("o-0.png")), read_all(path("o-1.png")));
+}
+
+TEST_F(FramesCli, BadCameraPathNamesFileLineAndColumn) {
+  std::ofstream(path("bad.json")) << "{\"keyframes\": [\n  {\"time\": 0,, }]}";
+  const auto r = run_pathspace("render cornell-box -r 16x16 --frames 0:1 -q --camera-path " + path("bad.json") + " -o " + path("b-%d.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find(path("bad.json") + ":2:"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("b-0.png")));
+}
+
+TEST_F(FramesCli, MisuseIsAUsageError) {
+  for (const std::string& args :
+       {"--frames 0:1 -o " + path("no-number.exr"), "--frames 3:1 -o " + path("a-%d.exr"), "--frames x -o " + path("a-%d.exr"),
+        "--orbit 5 -o " + path("a.exr"), "--frames 0:1 --checkpoint " + path("c.ckpt") + " -o " + path("a-%d.exr"),
+        "--frames 0:1 -o " + path("a-%d-%d.exr")}) {
+    const auto r = run_pathspace("render cornell-box -r 8x8 -q " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
+  }
+}
+
+TEST_F(FramesCli, VideoWithoutFfmpegNamesIt) {
+  // Without ffmpeg on PATH (an empty PATH keeps the shell's builtins only).
+  const std::string cmd = "PATH= '" PATHSPACE_BINARY "' render cornell-box -r 8x8 -q --frames 0:1 -o " + path("w-%d.png") +
+                          " --video " + path("w.mp4") + " > " + path("log") + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_NE(read_all(path("log")).find("ffmpeg"), std::string::npos) << read_all(path("log"));
+  EXPECT_FALSE(fs::exists(path("w-0.png")));
+}
+
+TEST_F(FramesCli, VideoIsEncodedWithFfmpeg) {
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg is not installed (scripts/install-deps installs it)";
+  const auto r = run_pathspace("render cornell-moving-sphere -r 33x17 -q --frames 0:4 -o " + path("v-%04d.exr") + " --video " + path("v.mp4"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_GT(fs::file_size(path("v.mp4")), 100u);
+  EXPECT_FALSE(fs::exists(path(".v.frames")));  // the temporary PNG frames are gone
+}
+
+}  // namespace
