@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for_each.h>
@@ -51,7 +52,8 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
     : settings_(settings),
       width_(camera.width),
       height_(camera.height),
-      table_(uint64_t(std::max(1.0, double(settings.table_factor) * double(pixels))), settings.max_probes) {
+      table_(uint64_t(std::max(1.0, double(settings.table_factor) * double(pixels))), settings.max_probes),
+      camera_(camera) {
   if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
   if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
       settings.key.direction_bins > kMaxKeyBins)
@@ -72,6 +74,65 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
 void HashedFilter::begin_frame(const PerspectiveCamera& camera) {
   if (camera.width != width_ || camera.height != height_) throw Error("the hashed filter's frames must keep one image size");
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);  // the field of view may change
+  // Hybrid: the previous frame's pass 0 recorded the paths to re-trace now, with its camera.
+  has_probe_request_ = !next_request_.pixels.empty();
+  if (has_probe_request_) {
+    probe_request_ = std::move(next_request_);
+    probe_request_.camera = camera_;
+    probe_originals_ = std::move(next_originals_);
+    next_request_ = ProbeRequest{};
+    next_originals_.clear();
+  }
+  if (frame_started_) ++frame_;
+  frame_started_ = true;
+  camera_ = camera;
+}
+
+const ProbeRequest* HashedFilter::probe_request(uint32_t pass) const {
+  return has_probe_request_ && pass == probe_request_.pass ? &probe_request_ : nullptr;
+}
+
+void HashedFilter::temporal_probes(const VertexBuffer& probes) { pending_probes_ = &probes; }
+
+namespace {
+// The pixels re-traced in frame f: a pseudo-random 1 / period of them, another share each frame, so
+// every pixel takes its turn once in `period` frames (the cost amortised over frames, sec. 3.4.1).
+bool probed_in_frame(uint32_t pixel, uint64_t frame, uint64_t period) { return mix64(uint64_t(pixel) ^ 0x7072626eull) % period == frame % period; }
+}  // namespace
+
+void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) {
+  const VoxelHashTableView view = table_.view();
+  double change = 0.0;
+  uint64_t found = 0, traced = 0;
+  // Serial, in probe order: the sums do not depend on the thread count.
+  for (size_t k = 0; k < probes.paths() && k < probe_originals_.size(); ++k) {
+    if (probes.count[k] == 0 || std::isnan(probe_originals_[k])) continue;
+    ++traced;
+    const size_t i = probes.slot(k, 0);
+    const ProbeResult r = view.find(hash_voxel_key(key_for_pass(probes, i, pass_hash), settings_.key.normal));
+    if (r.slot < 0) continue;
+    const float before = probe_originals_[k], now = luminance(probes.contribution[i]);
+    if (!std::isfinite(now)) continue;
+    history_->add_change(uint64_t(r.slot), before, now);
+    ++found;
+    change += std::fabs(now - before) / std::max(1e-30f, std::max(std::fabs(now), std::fabs(before)));
+  }
+  stats_.probes += traced;
+  stats_.probes_found += found;
+  stats_.change_sum += change;
+}
+
+void HashedFilter::record_probe_originals(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
+  const uint64_t period = uint64_t(std::max(1.0, std::round(1.0 / double(settings_.temporal.probe_fraction))));
+  next_request_ = ProbeRequest{};
+  next_request_.seed = seed;
+  next_request_.pass = pass;
+  next_originals_.clear();
+  for (size_t path = 0; path < b.paths(); ++path) {
+    if (!probed_in_frame(b.pixel[path], frame_ + 1, period)) continue;
+    next_request_.pixels.push_back(b.pixel[path]);
+    next_originals_.push_back(b.count[path] > 0 ? luminance(b.contribution[b.slot(path, 0)]) : std::nanf(""));
+  }
 }
 
 void HashedFilter::reset_stats() {
@@ -126,6 +187,13 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   t0 = std::chrono::steady_clock::now();
   accumulate(buffer, seed, pass);
   stats_.accumulate_ms += milliseconds_since(t0);
+
+  if (history_ && settings_.temporal.mode == TemporalMode::hybrid && pass == 0) {
+    if (pending_probes_ && has_probe_request_) apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
+    pending_probes_ = nullptr;
+    has_probe_request_ = false;
+    record_probe_originals(buffer, seed, pass);
+  }
 
   t0 = std::chrono::steady_clock::now();
   lookup(buffer, filtered);
@@ -413,6 +481,11 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.temporal.mean_alpha_last", s.mean_alpha_last, "last step");
   out.seconds("hashed.temporal.s_per_step", s.steps ? s.temporal_ms * 1e-3 / double(s.steps) : 0.0,
               "folding, priorities and eviction");
+  if (settings_.temporal.mode != TemporalMode::hybrid) return;
+  out.counter("hashed.temporal.probes", s.probes, "previous-frame paths traced again (hybrid)");
+  out.counter("hashed.temporal.probes_in_table", s.probes_found, "of those, in a voxel of the table");
+  out.value("hashed.temporal.mean_change", s.probes_found ? s.change_sum / double(s.probes_found) : 0.0,
+            "relative change of a re-traced path's contribution");
 }
 
 std::vector<NamedImage> HashedFilter::aovs() const {

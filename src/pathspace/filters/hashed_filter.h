@@ -34,6 +34,8 @@ struct HashedFilterStats {
   double alpha_sum = 0.0, temporal_ms = 0.0;
   uint64_t evicted_last = 0, probe_failures_last = 0;
   double mean_alpha_last = 0.0;
+  uint64_t probes = 0, probes_found = 0;  // hybrid: re-traced paths, and those whose voxel was in the table
+  double change_sum = 0.0;                // their relative changes |now - before| / max
 
   // Mean cells inspected per insertion (1 = found or claimed the home cell).
   double mean_probes() const { return insertions ? double(probes_total) / double(insertions) : 0.0; }
@@ -54,6 +56,8 @@ class HashedFilter final : public PathSpaceFilter {
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
   void begin_frame(const PerspectiveCamera& camera) override;
+  const ProbeRequest* probe_request(uint32_t pass) const override;
+  void temporal_probes(const VertexBuffer& probes) override;
 
   const HashedFilterStats& stats() const { return stats_; }
   const TemporalHistory* history() const { return history_.get(); }
@@ -72,6 +76,10 @@ class HashedFilter final : public PathSpaceFilter {
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
   Rgb neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const;
+  // Hybrid (sec. 3.4.1): the re-traced paths' changes into their cells, and this frame's values of
+  // the paths the next frame re-traces.
+  void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);
+  void record_probe_originals(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
 
   HashedFilterSettings settings_;
   int width_, height_;
@@ -85,6 +93,16 @@ class HashedFilter final : public PathSpaceFilter {
   std::vector<uint32_t> counts_;
   std::vector<uint32_t> first_slot_of_pixel_;
   HashedFilterStats stats_;
+  // Frames and temporal finite differences (--temporal hybrid).
+  PerspectiveCamera camera_;       // of the current frame
+  uint64_t frame_ = 0;             // frames begun before this one
+  bool frame_started_ = false;
+  ProbeRequest probe_request_;     // this frame's re-traced paths (pass 0), while has_probe_request_
+  bool has_probe_request_ = false;
+  std::vector<float> probe_originals_;  // their luminance in the previous frame (NaN: no vertex)
+  const VertexBuffer* pending_probes_ = nullptr;
+  ProbeRequest next_request_;      // recorded in this frame's pass 0 for the next frame
+  std::vector<float> next_originals_;
 };
 
 }  // namespace pathspace

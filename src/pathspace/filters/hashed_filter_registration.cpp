@@ -27,9 +27,16 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
   t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
            std::vector<std::pair<std::string, TemporalMode>>{
-               {"off", TemporalMode::off}, {"integrate", TemporalMode::integrate}, {"ema", TemporalMode::ema}},
-           "Keep the table across passes and frames: integrate (alpha = N_old / (N_old + N_new)) or an exponential moving average",
+               {"off", TemporalMode::off}, {"integrate", TemporalMode::integrate}, {"ema", TemporalMode::ema},
+               {"hybrid", TemporalMode::hybrid}},
+           "Keep the table across passes and frames: integrate (alpha = N_old / (N_old + N_new)), an exponential moving "
+           "average, or hybrid (integrate, less where re-traced paths show change)",
            "sec. 3.4.1");
+  t.number("temporal-probe-fraction", [](S& s) -> float& { return s.temporal.probe_fraction; }, 1e-4, 1.0,
+           "--temporal hybrid: share of the previous frame's paths traced again each frame (pixels take turns)", "sec. 3.4.1");
+  t.number("temporal-change-threshold", [](S& s) -> float& { return s.temporal.change_threshold; }, 1e-4, 1e4,
+           "--temporal hybrid: relative change of a voxel's re-traced paths at which the history's weight reaches 0",
+           "sec. 3.4.1, fig. 9");
   t.number("temporal-alpha", [](S& s) -> float& { return s.temporal.alpha; }, 0.0, 1.0,
            "--temporal ema: weight of the old average", "sec. 3.4.1");
   t.number("temporal-max-frames", [](S& s) -> int& { return s.temporal.max_frames; }, 0, 1 << 24,

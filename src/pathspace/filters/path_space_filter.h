@@ -27,6 +27,15 @@ struct FilterNeeds {
   CausticSettings caustics; // photon-mapped caustics at the first selected vertex, not filtered
 };
 
+// Temporal finite differences (the hashed filter's --temporal hybrid, 2021 paper sec. 3.4.1): paths
+// of the previous frame to trace again in this frame's scene with the same random numbers and camera.
+struct ProbeRequest {
+  uint64_t seed = 0;   // the previous frame's pass seed
+  uint32_t pass = 0;   // and pass index
+  PerspectiveCamera camera;  // the previous frame's camera: an unchanged scene gives the same path
+  std::vector<uint32_t> pixels;
+};
+
 class PathSpaceFilter {
  public:
   virtual ~PathSpaceFilter() = default;
@@ -50,6 +59,10 @@ class PathSpaceFilter {
   virtual void statistics(Statistics&) const {}
   // Debug images of the last pass, when the filter's options asked for them.
   virtual std::vector<NamedImage> aovs() const { return {}; }
+  // The paths to re-trace before pass `pass`'s filter() (null: none), and their vertices (path k is
+  // pixels[k]), given before filter() of the same pass.
+  virtual const ProbeRequest* probe_request(uint32_t /*pass*/) const { return nullptr; }
+  virtual void temporal_probes(const VertexBuffer& /*probes*/) {}
   // A new frame of an animation begins with this camera (same image size; 2021 paper sec. 3.4): the
   // filter was carried over from the previous frame's integrator with everything it holds.
   virtual void begin_frame(const PerspectiveCamera& /*camera*/) {}

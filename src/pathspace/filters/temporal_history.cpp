@@ -16,7 +16,24 @@ constexpr uint64_t kWindow = kFingerprintsPerLine;  // eviction works one cache 
 
 }  // namespace
 
-TemporalHistory::TemporalHistory(const TemporalSettings& settings, uint64_t cells) : settings_(settings), history_(cells) {}
+TemporalHistory::TemporalHistory(const TemporalSettings& settings, uint64_t cells)
+    : settings_(settings), history_(cells), change_(settings.mode == TemporalMode::hybrid ? cells : 0) {}
+
+void TemporalHistory::add_change(uint64_t slot, float before, float now) {
+  VoxelChange& c = change_[slot];
+  if (c.magnitude == 0.f && c.difference == 0.f) changed_cells_.push_back(slot);
+  c.difference += std::fabs(now - before);
+  c.magnitude += std::max(std::fabs(now), std::fabs(before));
+  if (c.magnitude == 0.f && c.difference == 0.f) c.magnitude = 1e-30f;  // black both times: probed, no change
+}
+
+float TemporalHistory::change(uint64_t slot) const {
+  if (!change_.empty()) {
+    const VoxelChange& c = change_[slot];
+    if (c.magnitude > 0.f) return c.difference / c.magnitude;
+  }
+  return history_[slot].change;
+}
 
 Rgb TemporalHistory::blend(uint64_t slot, const VoxelCell& current, float* alpha) const {
   const Rgb fresh = from_fixed_point(current.sum, current.count);
@@ -25,8 +42,10 @@ Rgb TemporalHistory::blend(uint64_t slot, const VoxelCell& current, float* alpha
     *alpha = 0.f;
     return fresh;
   }
-  const double a = settings_.mode == TemporalMode::ema ? double(settings_.alpha)
-                                                       : double(h.weight) / (double(h.weight) + double(current.count));
+  double a = settings_.mode == TemporalMode::ema ? double(settings_.alpha)
+                                                 : double(h.weight) / (double(h.weight) + double(current.count));
+  if (settings_.mode == TemporalMode::hybrid)  // fig. 9c: from integration (no change) to 0 (changed)
+    a *= std::max(0.0, 1.0 - double(change(slot)) / double(settings_.change_threshold));
   *alpha = float(a);
   return {float(a * double(h.mean[0]) + (1.0 - a) * double(fresh.r)), float(a * double(h.mean[1]) + (1.0 - a) * double(fresh.g)),
           float(a * double(h.mean[2]) + (1.0 - a) * double(fresh.b))};
@@ -59,10 +78,14 @@ TemporalStepStats TemporalHistory::end_step(const VoxelHashTableView& table, uin
           float alpha = 0.f;
           const Rgb mean = blend(c, cell, &alpha);
           h.mean[0] = mean.r, h.mean[1] = mean.g, h.mean[2] = mean.b;
-          double weight = double(h.weight) + double(cell.count);
+          // Hybrid: the history weight behind the alpha used, N' = alpha n / (1 - alpha), so that
+          // an unchanged voxel integrates and a changed one starts again from this step.
+          double weight = settings_.mode == TemporalMode::hybrid && alpha < 1.f ? double(cell.count) / (1.0 - double(alpha))
+                                                                               : double(h.weight) + double(cell.count);
           if (settings_.max_frames > 0) weight = std::min(weight, double(settings_.max_frames) * double(cell.count));
           h.weight = float(weight);
           h.last_step = step;
+          h.change = change(c);
           ++folded;
         }
         const bool stale = settings_.eviction == EvictionPolicy::stale && step - h.last_step > uint32_t(settings_.stale_frames);
@@ -101,6 +124,8 @@ TemporalStepStats TemporalHistory::end_step(const VoxelHashTableView& table, uin
     occupied_total += occupied;
     folded_total += folded;
   });
+  for (const uint64_t c : changed_cells_) change_[c] = VoxelChange{};
+  changed_cells_.clear();
   TemporalStepStats s;
   s.evicted = evicted_total;
   s.occupied = occupied_total;

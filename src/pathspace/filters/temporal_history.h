@@ -1,7 +1,9 @@
 // What a voxel of the hashed filter's table keeps from earlier steps (2021 paper sec. 3.4), beside
 // the table's per-step sums. A step is one pass: one frame of an animation rendered at 1 spp.
 //  * Blending (3.4.1): a vertex looks up its voxel's history combined with this step's average,
-//    by temporal integration (alpha = N_old / (N_old + N_new)) or an exponential moving average.
+//    by temporal integration (alpha = N_old / (N_old + N_new)), an exponential moving average, or
+//    the hybrid of fig. 9c: integration scaled down to 0 as the voxel's measured change (temporal
+//    finite differences of re-traced paths, HashedFilter::temporal_probes) reaches a threshold.
 //  * Folding: after the step's lookups, every voxel used in the step stores that combination as its
 //    new history, its weight capped at max_frames steps' worth of vertices.
 //  * Eviction (3.4.3): the top kPriorityShift.. bits of each fingerprint word hold a priority
@@ -25,7 +27,13 @@ struct VoxelHistory {
   float mean[3] = {0.f, 0.f, 0.f};
   float weight = 0.f;      // N_old: vertices behind the mean (0: no history)
   uint32_t last_step = 0;  // the step that last used the cell
-  uint32_t pad = 0;
+  float change = 0.f;      // hybrid: the last relative change measured by re-traced paths
+};
+
+// Hybrid blending: what the re-traced paths of one step found in a cell.
+struct VoxelChange {
+  float difference = 0.f;  // sum of |luminance now - luminance in the previous frame|
+  float magnitude = 0.f;   // sum of the larger of the two
 };
 
 struct TemporalStepStats {
@@ -48,6 +56,11 @@ class TemporalHistory {
   // The estimate of a cell for this step from its history and this step's sum and count (count > 0);
   // *alpha receives the weight of the history (0: none).
   Rgb blend(uint64_t slot, const VoxelCell& current, float* alpha) const;
+  // Hybrid: a re-traced path in cell `slot` whose contribution's luminance was `before` in the
+  // previous frame and is `now` (serial; before the step's lookups).
+  void add_change(uint64_t slot, float before, float now);
+  // The relative change of a cell: this step's probes', else the last one measured.
+  float change(uint64_t slot) const;
   // After the step's lookups: folds each used cell into its history, writes the priorities into the
   // fingerprint words and evicts (see above). `step` counts from 1.
   TemporalStepStats end_step(const VoxelHashTableView& table, uint32_t step);
@@ -58,6 +71,8 @@ class TemporalHistory {
  private:
   TemporalSettings settings_;
   std::vector<VoxelHistory> history_;
+  std::vector<VoxelChange> change_;     // hybrid: this step's probes per cell (cleared by end_step)
+  std::vector<uint64_t> changed_cells_;  // the cells with probes in this step
 };
 
 }  // namespace pathspace

@@ -11,6 +11,7 @@ enum class TemporalMode : uint8_t {
   off,        // every pass starts from an empty table
   integrate,  // alpha = N_old / (N_old + N_new): true temporal integration of static content
   ema,        // c = alpha c_old + (1 - alpha) c_new with a fixed alpha (--temporal-alpha)
+  hybrid,     // integrate where re-traced paths show no change, down to alpha = 0 where they do (fig. 9c)
 };
 
 // Sec. 3.4.3: which cells leave the table between steps.
@@ -27,6 +28,11 @@ struct TemporalSettings {
   EvictionPolicy eviction = EvictionPolicy::priority;
   float occupancy = 0.75f;   // priority, lru: each probe window is evicted down to this fill
   int stale_frames = 32;     // stale: steps without use before a cell goes
+  // hybrid: the share of pixels whose previous-frame path is re-traced each frame (the pixels take
+  // turns, so every pixel is probed once in 1 / probe_fraction frames), and the relative change of a
+  // voxel's probed contributions at which alpha reaches 0.
+  float probe_fraction = 0.125f;
+  float change_threshold = 0.25f;
 
   bool enabled() const { return mode != TemporalMode::off; }
 };

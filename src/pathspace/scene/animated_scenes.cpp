@@ -12,7 +12,11 @@ double phase(double seconds) { return 2.0 * double(kPi) * seconds / kMovingScene
 
 Scene make_moving_light_scene(int width, int height, double seconds) {
   const float x = kMovingLightAmplitude * float(std::sin(phase(seconds)));
-  return make_cornell_box(kLightCeiling, width, height, Vec3(x, 0.f, 0.f));
+  Scene scene = make_cornell_box(kLightCeiling, width, height, Vec3(x, 0.f, 0.f));
+  // A diffuse sphere standing still on the floor: its shadow moves with the light (fig. 9).
+  scene.add_sphere(Vec3(0.00972998f, 0.02453005f, -1.28002f + 0.5f), 0.5f, scene.add_material(make_diffuse(Rgb(0.75f, 0.7f, 0.6f))));
+  scene.finalize();
+  return scene;
 }
 
 Scene make_moving_light_frame0(int width, int height) { return make_moving_light_scene(width, height, 0.0); }

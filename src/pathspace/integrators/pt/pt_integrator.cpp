@@ -100,6 +100,10 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
   const size_t batch = filter_->batch_paths(per_path);
   const size_t step = batch == 0 ? n : std::min(n, batch);
   if (caustics_) caustics_->build(accel_, seed_, pass, counters);  // 2014 paper, sec. 2.3
+  if (const ProbeRequest* request = filter_->probe_request(pass)) {  // 2021 paper, sec. 3.4.1 (hybrid)
+    trace_probes(*request, &probes_buffer_, counters);
+    filter_->temporal_probes(probes_buffer_);
+  }
   for (size_t first = 0; first < n; first += step) {
     const size_t paths = std::min(step, n - first);
     trace_batch(pass, first, paths, 0, &buffer_, counters);
@@ -137,6 +141,28 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
     shared.add(local);
   });
   shared.flush(counters, stream == 0 ? paths : 0);
+}
+
+// The previous frame's paths of request.pixels, with its seed, pass and camera, in this frame's scene:
+// where nothing changed they are the same paths. Their rays count; they are not paths of the pass.
+void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffer, PathCounters& counters) {
+  const int per_path = records_per_path(settings_.selection);
+  const size_t paths = request.pixels.size();
+  if (buffer->paths() != paths || buffer->records_per_path() != per_path) buffer->resize(paths, per_path);
+  SharedCounters shared;
+  parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
+    PathCounters local;
+    PathSample sample;
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t pixel = request.pixels[k];
+      const Sampler sampler(request.seed, pixel, request.pass);
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(request.camera, sampler, pixel), settings_, &local, &sample, probes_,
+                    false, caustics_ ? &caustics_->view() : nullptr);
+      buffer->store(k, pixel, sample);
+    }
+    shared.add(local);
+  });
+  shared.flush(counters, 0);
 }
 
 void PtIntegrator::statistics(Statistics& out) const {

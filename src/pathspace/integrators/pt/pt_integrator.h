@@ -40,6 +40,7 @@ class PtIntegrator final : public Integrator {
   void render_plain(uint32_t pass, Film& film, PathCounters& counters);
   void render_filtered(uint32_t pass, Film& film, PathCounters& counters);
   void trace_batch(uint32_t pass, size_t first, size_t paths, int stream, VertexBuffer* buffer, PathCounters& counters);
+  void trace_probes(const ProbeRequest& request, VertexBuffer* buffer, PathCounters& counters);
 
   SceneView view_;
   const Accel& accel_;
@@ -55,6 +56,7 @@ class PtIntegrator final : public Integrator {
   VertexBuffer queries_;                // one batch of query-only paths
   std::vector<Rgb> queried_;
   std::vector<uint8_t> found_;
+  VertexBuffer probes_buffer_;          // the previous frame's paths traced again (--temporal hybrid)
 };
 
 }  // namespace pathspace
