@@ -291,5 +291,40 @@ TEST(HashedTemporal, HybridFollowsAMovingLightBetterThanIntegration) {
   EXPECT_LT(hybrid, integrate);
 }
 
+// Sec. 3.4.2: a camera moving away from the box (voxels get coarser) and towards it (finer): new
+// voxels start from the history of their finer or coarser voxels, which lowers the error of the last
+// frame against its own reference compared with starting empty.
+TEST(HashedTemporal, LevelTransferHelpsAMovingCamera) {
+  constexpr int kSide = 48, kFrames = 16;
+  for (const bool away : {true, false}) {
+    Animation animation;
+    animation.scene_at = [](double) { return make_builtin_scene("cornell-empty-area", kSide, kSide); };
+    const PerspectiveCamera c = make_builtin_scene("cornell-empty-area", kSide, kSide).camera;
+    const Vec3 near = c.position + c.forward * 2.f;
+    for (int k = 0; k < 2; ++k) {
+      CameraKeyframe key;
+      key.time = k * double(kFrames - 1) / animation.fps;
+      key.position = (k == 0) == away ? near : c.position;
+      key.target = key.position + c.forward;
+      key.up = c.up;
+      animation.camera_path.keys.push_back(key);
+    }
+    const Scene last = animation.at_frame(kFrames - 1);
+    const testing::FilteredRender reference = testing::render_with(last, testing::pt_config(40), 1024);
+    HashedFilterSettings s = integrate_settings(2.f);
+    Statistics stats;
+    const double with = image_error(frames_of(animation, testing::hashed_config(8, s), kFrames, 0, &stats).back(), reference.mean,
+                                    &reference.variance).rel_mse;
+    const double transferred = stats.number(away ? "hashed.temporal.from_finer" : "hashed.temporal.from_coarser");
+    s.temporal.level_transfer = false;
+    const double without = image_error(frames_of(animation, testing::hashed_config(8, s), kFrames).back(), reference.mean,
+                                       &reference.variance).rel_mse;
+    std::printf("camera moving %s: %g cells transferred; relMSE of the last frame %.4g with transfer, %.4g without\n",
+                away ? "away (coarser)" : "closer (finer)", transferred, with, without);
+    EXPECT_GT(transferred, 0.0);
+    EXPECT_LT(with, without);
+  }
+}
+
 }  // namespace
 }  // namespace pathspace

@@ -122,6 +122,70 @@ void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) 
   stats_.change_sum += change;
 }
 
+bool HashedFilter::history_of(const VoxelKey& key, VoxelHistory* out) const {
+  const ProbeResult r = table_.view().find(hash_voxel_key(key, settings_.key.normal));
+  if (r.slot < 0) return false;
+  *out = history_->at(uint64_t(r.slot));
+  return out->weight > 0.f;
+}
+
+void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
+  const size_t cells = size_t(table_.cells());
+  if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
+  std::atomic<uint64_t> finer_total{0}, coarser_total{0};
+  // Phase 1: the first vertex of each new cell computes its transfer from the histories as they were
+  // (every vertex of a cell has the same key, so which one does it does not change the result).
+  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+    uint64_t finer = 0, coarser = 0;
+    for (size_t path = begin; path < end; ++path)
+      for (int r = 0; r < b.count[path]; ++r) {
+        const size_t i = b.slot(path, r);
+        const int32_t s = slots_[i];
+        if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
+        uint8_t unclaimed = 0;
+        if (!std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).compare_exchange_strong(unclaimed, 1)) continue;
+        const VoxelKey key = key_for_pass(b, i, pass_hash);
+        // Going coarser: the eight finer voxels' sums and counts add up exactly.
+        double sum[3] = {0.0, 0.0, 0.0}, weight = 0.0;
+        for (int child = 0; child < 8; ++child) {
+          VoxelKey k = key;
+          k.level = int16_t(key.level - 1);
+          for (int a = 0; a < 3; ++a) k.cell[a] = key.cell[a] * 2 + ((child >> a) & 1);
+          VoxelHistory h;
+          if (!history_of(k, &h)) continue;
+          for (int c = 0; c < 3; ++c) sum[c] += double(h.mean[c]) * double(h.weight);
+          weight += double(h.weight);
+        }
+        VoxelHistory out;
+        if (weight > 0.0) {
+          for (int c = 0; c < 3; ++c) out.mean[c] = float(sum[c] / weight);
+          out.weight = float(weight);
+          ++finer;
+        } else if (settings_.temporal.finer_weight > 0.f && history_of(coarser_key(key), &out)) {
+          // Going finer: the coarse average, with a share of its weight (docs/animation.md).
+          out.weight *= settings_.temporal.finer_weight;
+          ++coarser;
+        } else {
+          continue;  // claimed, nothing to transfer
+        }
+        out.last_step = uint32_t(stats_.steps);
+        transferred_[size_t(s)] = out;
+        std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).store(2);
+      }
+    finer_total += finer;
+    coarser_total += coarser;
+  });
+  // Phase 2: the transfers take effect; the claims are cleared for the next step.
+  parallel_for(cells, 1 << 14, [&](size_t begin, size_t end) {
+    for (size_t s = begin; s < end; ++s) {
+      if (transfer_claimed_[s] == 2) history_->transfer(s, transferred_[s]);
+      transfer_claimed_[s] = 0;
+    }
+  });
+  stats_.from_finer += finer_total;
+  stats_.from_coarser += coarser_total;
+}
+
 void HashedFilter::record_probe_originals(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
   const uint64_t period = uint64_t(std::max(1.0, std::round(1.0 / double(settings_.temporal.probe_fraction))));
   next_request_ = ProbeRequest{};
@@ -188,6 +252,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   accumulate(buffer, seed, pass);
   stats_.accumulate_ms += milliseconds_since(t0);
 
+  if (history_ && settings_.temporal.level_transfer) transfer_levels(buffer, pass_jitter_hash(seed, pass));
   if (history_ && settings_.temporal.mode == TemporalMode::hybrid && pass == 0) {
     if (pending_probes_ && has_probe_request_) apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
     pending_probes_ = nullptr;
@@ -481,6 +546,8 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.temporal.mean_alpha_last", s.mean_alpha_last, "last step");
   out.seconds("hashed.temporal.s_per_step", s.steps ? s.temporal_ms * 1e-3 / double(s.steps) : 0.0,
               "folding, priorities and eviction");
+  out.counter("hashed.temporal.from_finer", s.from_finer, "new cells that took their finer voxels' sums (sec. 3.4.2)");
+  out.counter("hashed.temporal.from_coarser", s.from_coarser, "new cells that took their coarser voxel's average (sec. 3.4.2)");
   if (settings_.temporal.mode != TemporalMode::hybrid) return;
   out.counter("hashed.temporal.probes", s.probes, "previous-frame paths traced again (hybrid)");
   out.counter("hashed.temporal.probes_in_table", s.probes_found, "of those, in a voxel of the table");

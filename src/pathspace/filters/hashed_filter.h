@@ -35,6 +35,7 @@ struct HashedFilterStats {
   uint64_t evicted_last = 0, probe_failures_last = 0;
   double mean_alpha_last = 0.0;
   uint64_t probes = 0, probes_found = 0;  // hybrid: re-traced paths, and those whose voxel was in the table
+  uint64_t from_finer = 0, from_coarser = 0;  // sec. 3.4.2: new cells that took another level's history
   double change_sum = 0.0;                // their relative changes |now - before| / max
 
   // Mean cells inspected per insertion (1 = found or claimed the home cell).
@@ -80,6 +81,9 @@ class HashedFilter final : public PathSpaceFilter {
   // the paths the next frame re-traces.
   void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);
   void record_probe_originals(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
+  // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
+  void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
+  bool history_of(const VoxelKey& key, VoxelHistory* out) const;
 
   HashedFilterSettings settings_;
   int width_, height_;
@@ -103,6 +107,8 @@ class HashedFilter final : public PathSpaceFilter {
   const VertexBuffer* pending_probes_ = nullptr;
   ProbeRequest next_request_;      // recorded in this frame's pass 0 for the next frame
   std::vector<float> next_originals_;
+  std::vector<uint8_t> transfer_claimed_;  // sec. 3.4.2: per cell, this step's transfer is decided
+  std::vector<VoxelHistory> transferred_;
 };
 
 }  // namespace pathspace

@@ -34,6 +34,10 @@ OptionTable<HashedFilterSettings> hashed_options() {
            "sec. 3.4.1");
   t.number("temporal-probe-fraction", [](S& s) -> float& { return s.temporal.probe_fraction; }, 1e-4, 1.0,
            "--temporal hybrid: share of the previous frame's paths traced again each frame (pixels take turns)", "sec. 3.4.1");
+  t.flag("temporal-no-transfer", [](S& s) -> bool& { return s.temporal.level_transfer; }, false,
+         "New voxels start empty instead of from the history of their finer or coarser voxels", "sec. 3.4.2");
+  t.number("temporal-finer-weight", [](S& s) -> float& { return s.temporal.finer_weight; }, 0.0, 1.0,
+           "A new voxel taking its coarser voxel's average keeps this share of its weight (0: none)", "sec. 3.4.2");
   t.number("temporal-change-threshold", [](S& s) -> float& { return s.temporal.change_threshold; }, 1e-4, 1e4,
            "--temporal hybrid: relative change of a voxel's re-traced paths at which the history's weight reaches 0",
            "sec. 3.4.1, fig. 9");

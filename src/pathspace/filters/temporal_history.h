@@ -51,6 +51,9 @@ class TemporalHistory {
   size_t bytes() const { return history_.size() * sizeof(VoxelHistory); }
   const VoxelHistory& at(uint64_t slot) const { return history_[slot]; }
   const std::vector<VoxelHistory>& cells() const { return history_; }
+  // Sec. 3.4.2: gives the new cell `slot` (no history) the history `from` (serial per cell; before
+  // the step's lookups).
+  void transfer(uint64_t slot, const VoxelHistory& from) { history_[slot] = from; }
   void restore(std::vector<VoxelHistory> cells) { history_ = std::move(cells); }
 
   // The estimate of a cell for this step from its history and this step's sum and count (count > 0);

@@ -33,6 +33,11 @@ struct TemporalSettings {
   // voxel's probed contributions at which alpha reaches 0.
   float probe_fraction = 0.125f;
   float change_threshold = 0.25f;
+  // Sec. 3.4.2: a voxel new to the table whose point had history at another level of detail (the
+  // camera moved) starts from it: the sums of its finer voxels as they are, or its coarser voxel's
+  // average with finer_weight times that voxel's weight (a compromise: less noise, some blur).
+  bool level_transfer = true;
+  float finer_weight = 0.125f;
 
   bool enabled() const { return mode != TemporalMode::off; }
 };
