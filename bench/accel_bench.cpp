@@ -99,6 +99,53 @@ BENCHMARK(BM_IncoherentStream)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->U
 BENCHMARK(BM_CameraIntersect1)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CameraStreamCoherent)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// An animation frame (docs/animation.md): the moving-sphere Cornell box with a static floor grid of
+// 2^arg triangles. Full: every frame builds everything; Reuse: the frame's Accel takes the previous
+// frame's static part and builds only the moving sphere and the two-instance top level.
+Scene animated_frame(int log2_triangles, double seconds) {
+  Scene s = make_builtin_scene_at("cornell-moving-sphere", 64, 64, seconds);
+  const int side = 1 << (log2_triangles / 2);
+  const uint32_t material = s.triangles.front().material;
+  Scene grid = s;  // the grid's triangles go before the box's (all static); the sphere stays the moving part
+  grid.triangles.clear();
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side / 2; ++i) {
+      const float x0 = -1.2f + 2.4f * float(2 * i) / float(side), x1 = -1.2f + 2.4f * float(2 * i + 2) / float(side);
+      const float y0 = -1.2f + 2.4f * float(j) / float(side), y1 = -1.2f + 2.4f * float(j + 1) / float(side);
+      grid.add_quad(Vec3(x0, y0, -1.27f), Vec3(x1, y0, -1.27f), Vec3(x1, y1, -1.27f), Vec3(x0, y1, -1.27f), material);
+    }
+  for (const Triangle& t : s.triangles) grid.triangles.push_back(t);
+  grid.finalize();
+  return grid;
+}
+
+void BM_AnimatedFrameFullRebuild(benchmark::State& state) {
+  const Scene a = animated_frame(int(state.range(0)), 0.0), b = animated_frame(int(state.range(0)), 0.5);
+  int frame = 0;
+  for (auto _ : state) {
+    Scene flat = (++frame & 1) ? a : b;
+    flat.first_moving_sphere = Scene::kNothingMoves;
+    state.PauseTiming();
+    state.ResumeTiming();
+    const Accel accel(flat);
+    benchmark::DoNotOptimize(&accel);
+  }
+}
+
+void BM_AnimatedFrameReuse(benchmark::State& state) {
+  const Scene a = animated_frame(int(state.range(0)), 0.0), b = animated_frame(int(state.range(0)), 0.5);
+  auto previous = std::make_unique<Accel>(a);
+  int frame = 0;
+  for (auto _ : state) {
+    auto next = std::make_unique<Accel>((++frame & 1) ? b : a, previous.get());
+    if (!next->reused_static_part()) state.SkipWithError("the static part was rebuilt");
+    previous = std::move(next);
+  }
+}
+
+BENCHMARK(BM_AnimatedFrameFullRebuild)->Arg(16)->Arg(20)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AnimatedFrameReuse)->Arg(16)->Arg(20)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 }  // namespace pathspace
 

@@ -58,6 +58,7 @@ nlohmann::ordered_json frame_entry(const FrameResult& f, const Animation& animat
   j["frame"] = f.frame;
   j["time_s"] = animation.seconds_of(f.frame);
   j["scene_build_s"] = f.scene_seconds;
+  j["static_geometry_reused"] = f.static_geometry_reused;
   j["render_s"] = f.render_seconds;
   j["spp"] = f.snapshot.stats.spp;
   j["rays"] = f.snapshot.stats.rays;

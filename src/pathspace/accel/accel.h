@@ -15,7 +15,11 @@ class Scene;
 
 class Accel {
  public:
-  explicit Accel(const Scene& scene);
+  // `previous`: the Accel of the previous frame of an animation; the part of the scene that does not
+  // move (Scene::first_moving_triangle, first_moving_sphere) is reused from it when unchanged.
+  explicit Accel(const Scene& scene, const Accel* previous = nullptr);
+  // Whether the static part was taken from `previous` (animations; statistics and tests).
+  bool reused_static_part() const;
   ~Accel();
   Accel(const Accel&) = delete;
   Accel& operator=(const Accel&) = delete;

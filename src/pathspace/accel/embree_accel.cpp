@@ -1,10 +1,16 @@
 // Embree 3 backend of Accel: one triangle geometry for all triangles and one user geometry for all
 // analytic spheres (exact quadratic intersection in geometry/shapes.h, not Embree's tessellation-free
 // "sphere points", so glass spheres are hit identically from inside and outside).
+// A scene with moving parts (Scene::first_moving_triangle / first_moving_sphere: an animation's
+// frame) is built in two levels: the static part and the moving part are two instanced Embree
+// scenes, and the next frame's Accel reuses the static part when it is unchanged, so a frame
+// rebuilds only the moving part and the two-instance top level (docs/animation.md).
 #include <embree3/rtcore.h>
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <vector>
 
 #include "pathspace/accel/accel.h"
@@ -48,7 +54,7 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     RTCHitN_v(hit, args->N, i) = 0.f;
     RTCHitN_primID(hit, args->N, i) = args->primID;
     RTCHitN_geomID(hit, args->N, i) = args->geomID;
-    RTCHitN_instID(hit, args->N, i, 0) = RTC_INVALID_GEOMETRY_ID;
+    RTCHitN_instID(hit, args->N, i, 0) = args->context->instID[0];  // the instance being traversed, if any
   }
 }
 
@@ -83,6 +89,111 @@ inline void fill_ray(const Ray& r, RTCRay* out) {
   out->id = 0;
   out->flags = 0;
 }
+
+// Embree objects shared between the Accels of consecutive frames (instancing needs one device).
+struct SharedDevice {
+  RTCDevice device = nullptr;
+  ~SharedDevice() {
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+// The geometry that does not move: its Embree scene and its own copy of the spheres it references
+// (the user geometry keeps a pointer; the frame's Scene that was copied from goes away).
+struct StaticPart {
+  std::shared_ptr<SharedDevice> device;
+  RTCScene scene = nullptr;
+  std::vector<Sphere> spheres;
+  uint32_t triangles = 0;
+  uint64_t hash = 0;  // of the static triangles' vertices and indices and of the static spheres
+  ~StaticPart() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+std::shared_ptr<SharedDevice> new_device() {
+  auto d = std::make_shared<SharedDevice>();
+  d->device = rtcNewDevice(nullptr);
+  if (!d->device) throw Error(fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
+  rtcSetDeviceErrorFunction(d->device, error_callback, nullptr);
+  return d;
+}
+
+// The vertices of triangles [begin, end): [first, last] (first > last: none).
+struct VertexRange {
+  uint32_t first = 0, last = 0;
+  size_t count() const { return last >= first ? size_t(last - first) + 1 : 0; }
+};
+VertexRange vertex_range(const Scene& scene, uint32_t begin, uint32_t end) {
+  if (begin >= end) return {1, 0};
+  VertexRange r{UINT32_MAX, 0};
+  for (uint32_t i = begin; i < end; ++i)
+    for (uint32_t v : scene.triangles[i].v) r.first = std::min(r.first, v), r.last = std::max(r.last, v);
+  return r;
+}
+
+// A fast hash of raw words (multiply and rotate): whether the static part changed between frames.
+uint64_t hash_bytes(const void* data, size_t bytes, uint64_t h) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  size_t i = 0;
+  for (; i + 8 <= bytes; i += 8) {
+    uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    h = std::rotl((h ^ w) * 0x9e3779b97f4a7c15ull, 29);
+  }
+  for (; i < bytes; ++i) h = std::rotl((h ^ p[i]) * 0x9e3779b97f4a7c15ull, 29);
+  return h;
+}
+
+// An Embree scene of triangles [tri_begin, tri_end) of `scene` (geomID 0; their primIDs count from
+// tri_begin) and `sphere_count` spheres (geomID 1). Empty geometries keep the ids fixed.
+RTCScene build_part(RTCDevice device, const Scene& scene, uint32_t tri_begin, uint32_t tri_end, const Sphere* spheres,
+                    uint32_t sphere_count, RTCBuildQuality quality) {
+  RTCScene part = rtcNewScene(device);
+  rtcSetSceneBuildQuality(part, quality);
+  RTCGeometry tri_geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Only the vertices the part's triangles use (a moving part is usually a short range at the end).
+  const VertexRange range = vertex_range(scene, tri_begin, tri_end);
+  // Copies, not shared buffers: Embree reads vertices with 16-byte loads past the last element,
+  // which a std::vector<Vec3> does not guarantee to be padded for.
+  auto* vertices = static_cast<Vec3*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              sizeof(Vec3), range.count()));
+  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(uint32_t), tri_end - tri_begin));
+  std::copy(scene.positions.begin() + range.first, scene.positions.begin() + range.first + range.count(), vertices);
+  for (uint32_t i = tri_begin; i < tri_end; ++i)
+    for (int k = 0; k < 3; ++k) indices[3 * (i - tri_begin) + k] = scene.triangles[i].v[k] - range.first;
+  rtcCommitGeometry(tri_geom);
+  rtcAttachGeometryByID(part, tri_geom, kTriangleGeometry);
+  rtcReleaseGeometry(tri_geom);
+
+  RTCGeometry sph_geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(sph_geom, sphere_count);
+  rtcSetGeometryUserData(sph_geom, const_cast<Sphere*>(spheres));
+  rtcSetGeometryBoundsFunction(sph_geom, sphere_bounds, nullptr);
+  rtcSetGeometryIntersectFunction(sph_geom, sphere_intersect);
+  rtcSetGeometryOccludedFunction(sph_geom, sphere_occluded);
+  rtcCommitGeometry(sph_geom);
+  rtcAttachGeometryByID(part, sph_geom, kSphereGeometry);
+  rtcReleaseGeometry(sph_geom);
+  rtcCommitScene(part);
+  return part;
+}
+
+// The static part as Embree sees it: its triangles' vertex indices, the vertices they use, and the
+// spheres' centres and radii (field by field: padding bytes are not part of a value).
+uint64_t static_hash(const Scene& scene, uint32_t triangles, uint32_t spheres) {
+  uint64_t h = 0x243f6a8885a308d3ull;
+  h = hash_bytes(scene.triangles.data(), triangles * sizeof(Triangle), h);  // no padding: five 32-bit fields
+  const VertexRange range = vertex_range(scene, 0, triangles);
+  if (range.count() > 0) h = hash_bytes(&scene.positions[range.first], range.count() * sizeof(Vec3), h);
+  for (uint32_t i = 0; i < spheres; ++i) {
+    const Sphere& s = scene.spheres[i];
+    h = hash_bytes(&s.center, sizeof s.center, h);
+    h = hash_bytes(&s.radius, sizeof s.radius, h);
+  }
+  return h;
+}
 }  // namespace
 
 struct Accel::Impl {
@@ -90,20 +201,26 @@ struct Accel::Impl {
   const Point2* uvs = nullptr;   // per vertex, or nullptr
   const Vec3* normals = nullptr; // per vertex, or nullptr
   bool textured = false;         // uvs are only computed for scenes with textures (atan2/acos on spheres)
-  RTCDevice device = nullptr;
-  RTCScene rtc_scene = nullptr;
+  std::shared_ptr<SharedDevice> device;
+  RTCScene rtc_scene = nullptr;  // the whole scene, or the top level of the two parts
+  // Two levels (moving parts): instance 0 is the static part, instance 1 the moving part, whose
+  // primIDs start at these offsets in the scene's arrays.
+  std::shared_ptr<StaticPart> static_part;
+  uint32_t moving_triangle_offset = 0, moving_sphere_offset = 0;
+  bool reused = false;
 
   ~Impl() {
     if (rtc_scene) rtcReleaseScene(rtc_scene);
-    if (device) rtcReleaseDevice(device);
   }
 
   bool fill_hit(const Ray& ray, const RTCRayHit& rh, SurfaceHit* hit) const {
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const bool moving = rh.hit.instID[0] == 1;
+    const uint32_t prim = rh.hit.primID + (moving ? (rh.hit.geomID == kTriangleGeometry ? moving_triangle_offset : moving_sphere_offset) : 0);
     hit->t = rh.ray.tfar;
-    hit->prim = rh.hit.primID;
+    hit->prim = prim;
     if (rh.hit.geomID == kTriangleGeometry) {
-      const Triangle& tri = scene->triangles[rh.hit.primID];
+      const Triangle& tri = scene->triangles[prim];
       const Vec3 &p0 = scene->positions[tri.v[0]], &p1 = scene->positions[tri.v[1]], &p2 = scene->positions[tri.v[2]];
       const float u = rh.hit.u, v = rh.hit.v;
       hit->p = p0 * (1.f - u - v) + p1 * u + p2 * v;  // barycentric: more precise than o + t d
@@ -116,7 +233,7 @@ struct Accel::Impl {
       hit->material = tri.material;
       hit->light = tri.light;
     } else {
-      const Sphere& s = scene->spheres[rh.hit.primID];
+      const Sphere& s = scene->spheres[prim];
       const Vec3 p = ray.at(rh.ray.tfar);
       const Vec3 radial = normalize(p - s.center);
       hit->p = s.center + radial * s.radius;  // re-project onto the surface
@@ -132,49 +249,61 @@ struct Accel::Impl {
   }
 };
 
-Accel::Accel(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique<Impl>()) {
   impl_->scene = &scene;
   // Scene::finalize pads the vertex attributes to one per position; only then are they used.
   if (!scene.uvs.empty() && scene.uvs.size() == scene.positions.size()) impl_->uvs = scene.uvs.data();
   if (!scene.normals.empty() && scene.normals.size() == scene.positions.size()) impl_->normals = scene.normals.data();
   impl_->textured = !scene.textures.empty();
-  impl_->device = rtcNewDevice(nullptr);
-  if (!impl_->device) throw Error(fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
-  rtcSetDeviceErrorFunction(impl_->device, error_callback, nullptr);
-  impl_->rtc_scene = rtcNewScene(impl_->device);
-  rtcSetSceneBuildQuality(impl_->rtc_scene, RTC_BUILD_QUALITY_HIGH);
-
-  // geomID 0: all triangles (an empty placeholder keeps the ids fixed).
-  RTCGeometry tri_geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  // Copies, not shared buffers: Embree reads vertices with 16-byte loads past the last element,
-  // which a std::vector<Vec3> does not guarantee to be padded for.
-  auto* vertices = static_cast<Vec3*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                              sizeof(Vec3), scene.positions.size()));
-  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(uint32_t), scene.triangles.size()));
-  std::copy(scene.positions.begin(), scene.positions.end(), vertices);
-  for (size_t i = 0; i < scene.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) indices[3 * i + k] = scene.triangles[i].v[k];
-  rtcCommitGeometry(tri_geom);
-  rtcAttachGeometryByID(impl_->rtc_scene, tri_geom, kTriangleGeometry);
-  rtcReleaseGeometry(tri_geom);
-
-  RTCGeometry sph_geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(sph_geom, unsigned(scene.spheres.size()));
-  rtcSetGeometryUserData(sph_geom, const_cast<Sphere*>(scene.spheres.data()));
-  rtcSetGeometryBoundsFunction(sph_geom, sphere_bounds, nullptr);
-  rtcSetGeometryIntersectFunction(sph_geom, sphere_intersect);
-  rtcSetGeometryOccludedFunction(sph_geom, sphere_occluded);
-  rtcCommitGeometry(sph_geom);
-  rtcAttachGeometryByID(impl_->rtc_scene, sph_geom, kSphereGeometry);
-  rtcReleaseGeometry(sph_geom);
-
-  rtcCommitScene(impl_->rtc_scene);
-  const RTCError err = rtcGetDeviceError(impl_->device);
+  const uint32_t triangles = uint32_t(scene.triangles.size()), spheres = uint32_t(scene.spheres.size());
+  const bool two_level = scene.first_moving_triangle < triangles || scene.first_moving_sphere < spheres;
+  const Impl* before = previous ? previous->impl_.get() : nullptr;
+  impl_->device = before && before->static_part ? before->device : new_device();
+  const RTCDevice device = impl_->device->device;
+  if (!two_level) {
+    // geomID 0: all triangles, 1: all spheres.
+    impl_->rtc_scene = build_part(device, scene, 0, triangles, scene.spheres.data(), spheres, RTC_BUILD_QUALITY_HIGH);
+  } else {
+    const uint32_t static_triangles = std::min(scene.first_moving_triangle, triangles);
+    const uint32_t static_spheres = std::min(scene.first_moving_sphere, spheres);
+    const uint64_t hash = static_hash(scene, static_triangles, static_spheres);
+    const std::shared_ptr<StaticPart>& old = before ? before->static_part : nullptr;
+    if (old && old->triangles == static_triangles && old->spheres.size() == static_spheres && old->hash == hash) {
+      impl_->static_part = old;  // unchanged: reused as it is
+      impl_->reused = true;
+    } else {
+      auto part = std::make_shared<StaticPart>();
+      part->device = impl_->device;
+      part->spheres.assign(scene.spheres.begin(), scene.spheres.begin() + static_spheres);
+      part->triangles = static_triangles;
+      part->hash = hash;
+      part->scene = build_part(device, scene, 0, static_triangles, part->spheres.data(), static_spheres, RTC_BUILD_QUALITY_HIGH);
+      impl_->static_part = std::move(part);
+    }
+    impl_->moving_triangle_offset = static_triangles;
+    impl_->moving_sphere_offset = static_spheres;
+    RTCScene moving = build_part(device, scene, static_triangles, triangles, scene.spheres.data() + static_spheres,
+                                 spheres - static_spheres, RTC_BUILD_QUALITY_MEDIUM);
+    impl_->rtc_scene = rtcNewScene(device);
+    const float identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};  // 3x4, column major
+    for (const auto& [id, part] : {std::pair{0u, impl_->static_part->scene}, std::pair{1u, moving}}) {
+      RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(instance, part);
+      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, identity);
+      rtcCommitGeometry(instance);
+      rtcAttachGeometryByID(impl_->rtc_scene, instance, id);
+      rtcReleaseGeometry(instance);
+    }
+    rtcReleaseScene(moving);  // the instance holds it
+    rtcCommitScene(impl_->rtc_scene);
+  }
+  const RTCError err = rtcGetDeviceError(device);
   if (err != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed to build the scene (error {})", int(err)));
 }
 
 Accel::~Accel() = default;
+
+bool Accel::reused_static_part() const { return impl_->reused; }
 
 bool Accel::intersect(const Ray& ray, SurfaceHit* hit) const {
   RTCIntersectContext ctx;

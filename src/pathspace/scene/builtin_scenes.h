@@ -42,7 +42,9 @@ enum CornellMask : unsigned {
   kSmallGlassSphere = 128,
   kGlossyFloor = 256,
 };
-// light_offset moves the light box (the animated scenes of scene/animated_scenes.h).
+// light_offset moves the light box (the animated scenes of scene/animated_scenes.h), whose
+// kLightBoxTriangles triangles are the last ones added.
+inline constexpr uint32_t kLightBoxTriangles = 10;
 Scene make_cornell_box(unsigned mask, int width, int height, const Vec3& light_offset = Vec3());
 
 }  // namespace pathspace

@@ -3,6 +3,7 @@
 // which derives bounds and the light-selection distribution. Kernels see only view().
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,12 @@ class Scene {
   std::vector<Light> lights;
   EnvironmentImage environment_image;  // the environment light's image, or empty (constant)
   PerspectiveCamera camera;
+  // Animations (docs/animation.md): triangles and spheres from these indices on may move from frame
+  // to frame; those before them are the same in every frame, so the acceleration structure of one
+  // frame can reuse the previous frame's for them (accel/accel.h). kNothingMoves: all static.
+  static constexpr uint32_t kNothingMoves = UINT32_MAX;
+  uint32_t first_moving_triangle = kNothingMoves;
+  uint32_t first_moving_sphere = kNothingMoves;
   float ray_epsilon = 1e-4f;
   int max_path_segments = 10;
   LightSelection light_selection = LightSelection::uniform;

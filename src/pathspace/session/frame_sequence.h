@@ -20,6 +20,7 @@ struct FrameResult {
   uint64_t frame = 0;
   RenderSnapshot snapshot;     // the frame's image, variance and statistics (the filter's over all frames so far)
   double scene_seconds = 0.0;  // building the frame's scene and its acceleration structure
+  bool static_geometry_reused = false;  // the acceleration structure of what does not move came from the previous frame
   double render_seconds = 0.0;
 };
 
