@@ -2,6 +2,8 @@
 
 #include <csignal>
 #include <filesystem>
+#include <memory>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -9,7 +11,9 @@
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/camera_path_file.h"
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/scene_validation.h"
 #include "pathspace/session/frame_sequence.h"
 #include "distinct_files.h"
 #include "frame_pattern.h"
@@ -77,6 +81,34 @@ std::string frame_summary(const Statistics& s) {
   return line;
 }
 
+// The animation of a scene file (glTF node channels), or an empty function. prepare_scene loaded
+// the same file with the same options and printed its warnings, so this load's are dropped.
+std::function<Scene(double)> file_animation(const PreparedScene& prepared) {
+  if (prepared.file.empty()) return {};
+  std::vector<std::string> printed;
+  return load_scene_animation(prepared.file, prepared.load_options, &printed);
+}
+
+// Every frame of an animated file is validated as prepare_scene validates the still scene; a warning
+// is printed the first time it appears (prepare_scene printed those of frame 0's scene).
+class FrameChecks {
+ public:
+  explicit FrameChecks(const Scene& initial) {
+    std::vector<std::string> w;
+    validate_scene(initial, &w);
+    printed_.insert(w.begin(), w.end());
+  }
+  void validate(const Scene& s) {
+    std::vector<std::string> w;
+    validate_scene(s, &w);
+    for (const std::string& line : w)
+      if (printed_.insert(line).second) print_warnings({line});
+  }
+
+ private:
+  std::set<std::string> printed_;
+};
+
 }  // namespace
 
 int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
@@ -127,8 +159,19 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
       apply_scene_options(o, &s);
       return s;
     };
+  } else if (auto file_scene_at = file_animation(prepared)) {
+    animation.scene_at = [&o, file_scene_at, checks = std::make_shared<FrameChecks>(prepared.scene)](double seconds) {
+      try {
+        Scene s = file_scene_at(seconds);
+        apply_scene_options(o, &s);
+        checks->validate(s);
+        return s;
+      } catch (const Error& e) {  // say when: the scene at 0 s was fine
+        throw Error(fmt::format("the scene at {} s: {}", seconds, e.what()));
+      }
+    };
   } else {
-    animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene file stands still
+    animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene file without animation stands still
   }
 
   // PNG frames for the video: the -o PNG sequence, else a temporary folder beside the video.

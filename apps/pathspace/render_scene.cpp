@@ -71,6 +71,7 @@ PreparedScene prepare_scene(const RenderOptions& o) {
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   if (from_file) {
     p.label = p.id = p.file = scene_name;
+    p.load_options = load_options;
     p.display_name = std::filesystem::path(scene_name).stem().string();
     p.key = scene_file_hash(scene_name);
     std::vector<std::string> warnings;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/scene.h"
 #include "number_options.h"
 #include "render_command.h"
@@ -20,6 +21,7 @@ struct PreparedScene {
   std::string id;            // the built-in's id or the file's path (progress line)
   std::string key;           // "builtin:NAME" or the file's content hash (checkpoints)
   std::string file;          // the scene file, or empty
+  SceneLoadOptions load_options;  // what the file was loaded with (the command line's camera and -r)
   int file_spp = 0;          // the file's samples per pixel, 0: none
 };
 

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_process.h"
+#include "pathspace/io/image_io.h"
+#include "support/gltf_test_files.h"
 
 namespace {
 
@@ -70,6 +72,27 @@ TEST_F(FramesCli, MisuseIsAUsageError) {
     const auto r = run_pathspace("render cornell-box -r 8x8 -q " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
   }
+}
+
+// A glTF file whose triangle slides out of the camera's view in its first second (docs/animation.md).
+TEST_F(FramesCli, GltfAnimationMovesTheScene) {
+  pathspace::testing::GltfBuilder b;
+  const int pos = b.floats({-1, -1, 0, 1, -1, 0, 0, 1, 0}, "VEC3");
+  const int times = b.floats({0, 1}, "SCALAR"), moves = b.floats({0, 0, 0, 50, 0, 0}, "VEC3");
+  std::ofstream(path("slide.gltf")) << b.gltf(
+      R"("scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},{"camera":0,"translation":[0,0,3]}],)"
+      R"("cameras":[{"type":"perspective","perspective":{"yfov":0.8,"znear":0.1}}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(pos) + R"(},"material":0}]}],)"
+      R"("materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.2,0.2,0.2,1],"metallicFactor":0}}],)"
+      R"("animations":[{"channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}],)"
+      R"("samplers":[{"input":)" + std::to_string(times) + R"(,"output":)" + std::to_string(moves) + "}]}]");
+  const auto r = run_pathspace("render " + path("slide.gltf") + " -r 16x16 --frames 0:1 --fps 1 -q -o " + path("g-%d.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const pathspace::Image f0 = pathspace::read_image(path("g-0.exr")), f1 = pathspace::read_image(path("g-1.exr"));
+  // The centre pixel sees the dark triangle under the white environment in frame 0 and the
+  // environment itself (radiance 1) in frame 1.
+  EXPECT_LT(f0.at(8, 8).g, 0.6f);
+  EXPECT_NEAR(f1.at(8, 8).g, 1.f, 1e-3f);
 }
 
 TEST_F(FramesCli, VideoWithoutFfmpegNamesIt) {

@@ -51,7 +51,11 @@ Scene load(Format format, std::string_view bytes, const std::string& folder) {
     case Format::gltf: {
       const std::string path = folder + "/scene.gltf";
       write_file(path, bytes);
-      return load_scene(path, options, &warnings);
+      Scene scene = load_scene(path, options, &warnings);
+      // An animated file is also sampled between and after its keys (the still scene is at 0 s).
+      if (const auto scene_at = load_scene_animation(path, options, &warnings))
+        for (const double seconds : {0.37, 1e6}) scene_at(seconds);
+      return scene;
     }
     case Format::image: {
       if (bytes.empty()) throw Error(FileLoc{"fuzz.img"}, "empty input");

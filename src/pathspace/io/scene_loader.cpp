@@ -4,8 +4,10 @@
 #include "pathspace/io/scene_loader.h"
 
 #include <cmath>
+#include <memory>
 
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/io/gltf/gltf_animation.h"
 #include "pathspace/io/gltf/gltf_loader.h"
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
@@ -107,6 +109,16 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::
   scene.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
   scene.finalize();
   return scene;
+}
+
+std::function<Scene(double seconds)> load_scene_animation(const std::string& path, const SceneLoadOptions& options,
+                                                          std::vector<std::string>* warnings) {
+  const std::string ext = scene_file_extension(path);
+  if (ext != ".gltf" && ext != ".glb") return {};
+  LoadWarnings w(warnings);
+  auto animation = std::make_shared<gltf::GltfAnimation>(path, options, &w);  // shared: std::function copies its target
+  if (!animation->animated()) return {};
+  return [animation](double seconds) { return animation->scene_at(seconds); };
 }
 
 }  // namespace pathspace

@@ -3,6 +3,7 @@
 // with file:line (collected in *warnings for the CLI to print); malformed input is a pathspace::Error.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,12 @@ bool is_scene_file(const std::string& path);
 
 Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
                  SceneFileSettings* settings = nullptr);
+
+// The finalised scene of an animated file at any time in seconds (glTF node animations,
+// docs/animation.md); at 0 s it is load_scene's. An empty function for a file that stands still
+// (other formats, glTF files without node animation).
+std::function<Scene(double seconds)> load_scene_animation(const std::string& path, const SceneLoadOptions& options,
+                                                          std::vector<std::string>* warnings);
 
 // A camera looking from `position` along `forward`, raster right = `right`, up = `up` (unit vectors
 // not required to form a right-handed frame: pbrt cameras are left-handed), with `fov_degrees`

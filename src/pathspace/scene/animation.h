@@ -1,6 +1,6 @@
-// An animation: the scene at a time (animated built-ins move their lights and objects; a scene file
-// is the same at every time) and how the camera moves, sampled at frames of 1 / fps seconds. Frame f
-// is a pure function of f (docs/animation.md).
+// An animation: the scene at a time (animated built-ins move their lights and objects, glTF files
+// their animated nodes; other scene files are the same at every time) and how the camera moves,
+// sampled at frames of 1 / fps seconds. Frame f is a pure function of f (docs/animation.md).
 #pragma once
 
 #include <cstdint>

@@ -13,7 +13,7 @@
 namespace pathspace::gltf {
 
 // Loads and finalises the scene of a .gltf or .glb file (the format follows the content: GLB files
-// start with "glTF").
+// start with "glTF"): with animations, the scene at 0 s of the first (gltf_animation.h).
 Scene load_gltf_file(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings);
 
 }  // namespace pathspace::gltf

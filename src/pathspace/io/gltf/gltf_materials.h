@@ -11,6 +11,7 @@
 #pragma once
 
 #include <map>
+#include <utility>
 
 #include "pathspace/io/gltf/gltf_context.h"
 #include "pathspace/io/gltf/gltf_textures.h"
@@ -27,8 +28,12 @@ struct Surface {
 class Materials {
  public:
   Materials(const Context& c, Scene* scene) : c_(c), scene_(scene), textures_(c, scene) {}
+  // For a scene that starts with the materials and textures of the scene `built` was made for (an
+  // animation's later frames): those materials are not built (and their images not decoded) again.
+  Materials(const Context& c, Scene* scene, std::map<int, Surface> built) : c_(c), scene_(scene), textures_(c, scene), built_(std::move(built)) {}
   // glTF material `index` (-1: glTF's default material), built on first use.
   const Surface& get(int index, const std::string& what);
+  const std::map<int, Surface>& built() const { return built_; }
 
  private:
   Surface build(int index);

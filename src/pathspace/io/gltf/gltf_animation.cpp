@@ -1,0 +1,102 @@
+// glTF scenes over time (see gltf_animation.h).
+#include "pathspace/io/gltf/gltf_animation.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "pathspace/io/gltf/gltf_channels.h"
+#include "pathspace/io/gltf/gltf_interpolation.h"
+#include "pathspace/io/gltf/gltf_model.h"
+#include "pathspace/io/gltf/gltf_scene_walk.h"
+
+namespace pathspace::gltf {
+
+struct GltfAnimation::State {
+  tinygltf::Model model;
+  std::string path, folder;
+  SceneLoadOptions options;
+  std::vector<Channel> channels;
+  Scene initial;                     // at 0 s
+  std::map<int, Surface> surfaces;   // the materials built into `initial`
+  bool camera_moves = false;         // the file's camera, placed by its node
+  bool white_environment = false;    // no emitters at 0 s
+
+  Context context(LoadWarnings* warnings) const { return Context{model, path, folder, warnings}; }
+
+  // The local transforms of the animated nodes at `seconds`: their own T, R, S with the animated ones replaced.
+  NodePose pose_at(const Context& c, double seconds) const {
+    NodePose pose;
+    if (channels.empty()) return pose;
+    std::vector<std::optional<Trs>> trs(model.nodes.size());
+    for (const Channel& ch : channels) {
+      std::optional<Trs>& t = trs[size_t(ch.node)];
+      if (!t) t = node_trs(c, model.nodes[size_t(ch.node)], element("nodes", size_t(ch.node)));
+      const std::array<double, 4> v = sample(ch, seconds);
+      double* target = ch.property == AnimatedProperty::translation ? t->t : ch.property == AnimatedProperty::rotation ? t->q : t->s;
+      std::copy_n(v.begin(), ch.components(), target);
+    }
+    pose.resize(trs.size());
+    for (size_t i = 0; i < trs.size(); ++i)
+      if (trs[i]) pose[i] = trs_affine(*trs[i]);
+    return pose;
+  }
+};
+
+GltfAnimation::GltfAnimation(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.path = path;
+  s.folder = std::filesystem::path(path).parent_path().string();
+  s.options = options;
+  read_model(path, &s.model, warnings);
+  const Context c = s.context(warnings);
+  if (!s.model.animations.empty()) {
+    s.channels = read_channels(c, 0);
+    if (s.model.animations.size() > 1)
+      c.warn("only animations[0] is played; the other " + std::to_string(s.model.animations.size() - 1) + " animations are ignored");
+  }
+  Scene& scene = s.initial;
+  scene.name = path;
+  Materials materials(c, &scene);
+  const CameraNode camera = add_scene_nodes(c, s.pose_at(c, 0.0), &materials, &scene);
+  if (scene.triangles.empty()) c.fail("the scene holds no triangles");
+  if (scene.lights.empty()) {
+    c.warn("no emitters in the file: lit by a uniform white environment (radiance 1)");
+    scene.add_environment_light(Rgb(1.f));
+    s.white_environment = true;
+  }
+  s.camera_moves = set_camera(c, camera, options, &scene);
+  const Bounds3 b = scene.geometry_bounds();
+  scene.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
+  scene.finalize();
+  s.surfaces = materials.built();
+}
+
+GltfAnimation::~GltfAnimation() = default;
+
+bool GltfAnimation::animated() const { return !state_->channels.empty(); }
+Scene GltfAnimation::initial_scene() && { return std::move(state_->initial); }
+
+Scene GltfAnimation::scene_at(double seconds) const {
+  const State& s = *state_;
+  LoadWarnings quiet(nullptr);  // the scene at 0 s reported every warning the walk can give
+  const Context c = s.context(&quiet);
+  Scene scene;
+  scene.name = s.path;
+  scene.materials = s.initial.materials;
+  scene.textures = s.initial.textures;
+  Materials materials(c, &scene, s.surfaces);
+  const CameraNode camera = add_scene_nodes(c, s.pose_at(c, seconds), &materials, &scene);
+  // Decided at 0 s for every frame, so the lighting does not switch when an emitter shrinks to nothing.
+  if (s.white_environment) scene.add_environment_light(Rgb(1.f));
+  if (s.camera_moves) set_camera(c, camera, s.options, &scene);
+  else scene.camera = s.initial.camera;
+  scene.ray_epsilon = s.initial.ray_epsilon;
+  scene.finalize();
+  return scene;
+}
+
+}  // namespace pathspace::gltf
