@@ -250,6 +250,9 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
 
   t0 = std::chrono::steady_clock::now();
   accumulate(buffer, seed, pass);
+  // Fallbacks that do not depend on timing (one cache line per window: the default probe limit).
+  if (stats_.probe_failures > failures_before && settings_.max_probes <= kFingerprintsPerLine)
+    settle_overflows(buffer, pass_jitter_hash(seed, pass));
   stats_.accumulate_ms += milliseconds_since(t0);
 
   if (history_ && settings_.temporal.level_transfer) transfer_levels(buffer, pass_jitter_hash(seed, pass));
@@ -537,6 +540,7 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.accumulate_ns_per_vertex", s.vertices ? s.accumulate_ms * 1e6 / vertices : 0.0);
   out.value("hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
   out.counter("hashed.probe_limit_fallbacks_last", s.probe_failures_last, "last pass");
+  out.counter("hashed.overflow_settled_passes", s.settled_windows, "passes whose full probe windows were settled by fingerprint");
   if (!history_) return;
   out.counter("hashed.temporal.steps", s.steps, "passes whose table carried to the next (sec. 3.4)");
   out.counter("hashed.temporal.evicted", s.evicted, "cells evicted between steps (sec. 3.4.3)");

@@ -20,6 +20,7 @@ namespace pathspace {
 struct HashedFilterStats {
   uint64_t passes = 0, vertices = 0;
   uint64_t probe_failures = 0;   // table window full: vertex kept its own contribution
+  uint64_t settled_windows = 0;  // passes in which overflowing windows were settled (deterministic fallbacks)
   uint64_t not_accumulated = 0;  // NaN/Inf/negative/huge contribution: kept its own contribution
   uint64_t insertions = 0;       // table probes started (vertices not combined locally)
   uint64_t probes_total = 0, probes_max = 0;  // cells inspected by those insertions
@@ -81,6 +82,9 @@ class HashedFilter final : public PathSpaceFilter {
   // the paths the next frame re-traces.
   void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);
   void record_probe_originals(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
+  // After accumulation, when probe windows overflowed: which keys get the window's new cells is
+  // decided by their fingerprints, not by thread timing (hashed_filter_overflow.cpp).
+  void settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
   // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
   void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
   bool history_of(const VoxelKey& key, VoxelHistory* out) const;
