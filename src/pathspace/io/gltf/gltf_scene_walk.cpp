@@ -14,12 +14,16 @@ namespace {
 constexpr int kDefaultHeight = 512;
 constexpr int kMaxDepth = 1000;  // recursion bound: real hierarchies are far shallower
 
+// Which meshes a walk adds: all of them, or (for an animation, whose frames reuse the acceleration
+// structure of what does not move) first those of nodes that do not move, then those that do.
+enum class Part { all, still, moving };
+
 class SceneWalk {
  public:
-  SceneWalk(const Context& c, const NodePose& pose, Materials* materials, Scene* scene)
-      : c_(c), pose_(pose), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false) {}
+  SceneWalk(const Context& c, const NodePose& pose, Materials* materials, Scene* scene, Part part = Part::all)
+      : c_(c), pose_(pose), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false), part_(part) {}
 
-  void node(int index, const Affine& parent, const std::string& referrer, int depth = 0) {
+  void node(int index, const Affine& parent, const std::string& referrer, int depth = 0, bool parent_moves = false) {
     const tinygltf::Model& m = c_.model;
     check_index(c_, index, m.nodes.size(), referrer);
     if (depth > kMaxDepth) c_.fail(referrer + ": node hierarchy deeper than " + std::to_string(kMaxDepth) + " levels");
@@ -29,11 +33,16 @@ class SceneWalk {
     const std::string name = element("nodes", size_t(index));
     const tinygltf::Node& n = m.nodes[size_t(index)];
     const bool posed = size_t(index) < pose_.size() && pose_[size_t(index)].has_value();
+    const bool moves = parent_moves || posed;  // an animated node, or below one
     const Affine world = parent * (posed ? *pose_[size_t(index)] : local_transform(c_, n, name));
-    if (n.skin >= 0) c_.warn(name + ".skin ignored; the mesh is drawn as stored (bind pose)");
-    if (n.mesh >= 0) {
+    if (n.skin >= 0 && part_ != Part::moving) c_.warn(name + ".skin ignored; the mesh is drawn as stored (bind pose)");
+    if (n.mesh >= 0 && (part_ == Part::all || (part_ == Part::moving) == moves)) {
       check_index(c_, n.mesh, m.meshes.size(), name + ".mesh");
       add_mesh(c_, n.mesh, world, materials_, scene_);
+    }
+    if (part_ == Part::moving) {  // lights and the camera were placed by the walk of the still part
+      for (size_t i = 0; i < n.children.size(); ++i) node(n.children[i], world, name + "." + element("children", i), depth + 1, moves);
+      return;
     }
     if (n.camera >= 0) {
       check_index(c_, n.camera, m.cameras.size(), name + ".camera");
@@ -43,7 +52,7 @@ class SceneWalk {
       }
     }
     if (const auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end()) light(it->second, world, name);
-    for (size_t i = 0; i < n.children.size(); ++i) node(n.children[i], world, name + "." + element("children", i), depth + 1);
+    for (size_t i = 0; i < n.children.size(); ++i) node(n.children[i], world, name + "." + element("children", i), depth + 1, moves);
   }
 
   CameraNode camera() const { return {camera_node_, camera_world_}; }
@@ -93,16 +102,15 @@ class SceneWalk {
   std::vector<bool> visited_;
   int camera_node_ = -1;
   Affine camera_world_;
+  Part part_;
 };
 
-}  // namespace
-
-CameraNode add_scene_nodes(const Context& c, const NodePose& pose, Materials* materials, Scene* scene) {
-  SceneWalk walk(c, pose, materials, scene);
+// Walks the roots of the default scene (or every root node) with `walk`.
+void walk_roots(const Context& c, SceneWalk& walk, bool report) {
   if (!c.model.scenes.empty()) {
     const int s = c.model.defaultScene >= 0 ? c.model.defaultScene : 0;
     check_index(c, s, c.model.scenes.size(), "scene");
-    if (c.model.scenes.size() > 1) c.warn("only " + element("scenes", size_t(s)) + " of " + std::to_string(c.model.scenes.size()) + " scenes is loaded");
+    if (report && c.model.scenes.size() > 1) c.warn("only " + element("scenes", size_t(s)) + " of " + std::to_string(c.model.scenes.size()) + " scenes is loaded");
     const std::vector<int>& roots = c.model.scenes[size_t(s)].nodes;
     for (size_t i = 0; i < roots.size(); ++i) walk.node(roots[i], Affine(), element("scenes", size_t(s)) + "." + element("nodes", i));
   } else {  // no scene: every node that is nobody's child is a root
@@ -110,11 +118,28 @@ CameraNode add_scene_nodes(const Context& c, const NodePose& pose, Materials* ma
     for (const tinygltf::Node& n : c.model.nodes)
       for (int k : n.children)
         if (k >= 0 && size_t(k) < child.size()) child[size_t(k)] = true;
-    if (!c.model.nodes.empty()) c.warn("no scenes defined; every root node is loaded");
+    if (report && !c.model.nodes.empty()) c.warn("no scenes defined; every root node is loaded");
     for (size_t i = 0; i < c.model.nodes.size(); ++i)
       if (!child[i]) walk.node(int(i), Affine(), element("nodes", i));
   }
-  return walk.camera();
+}
+
+}  // namespace
+
+CameraNode add_scene_nodes(const Context& c, const NodePose& pose, Materials* materials, Scene* scene) {
+  const bool animated = std::any_of(pose.begin(), pose.end(), [](const std::optional<Affine>& p) { return p.has_value(); });
+  if (!animated) {  // a still file: one walk, in the file's order
+    SceneWalk walk(c, pose, materials, scene);
+    walk_roots(c, walk, true);
+    return walk.camera();
+  }
+  // The meshes of nodes that do not move first, those that do after them (Scene::first_moving_triangle).
+  SceneWalk still(c, pose, materials, scene, Part::still);
+  walk_roots(c, still, true);
+  scene->first_moving_triangle = uint32_t(scene->triangles.size());
+  SceneWalk moving(c, pose, materials, scene, Part::moving);
+  walk_roots(c, moving, false);
+  return still.camera();
 }
 
 // The first camera met in the walk (depth first, children in order), looking down its node's -z with
