@@ -279,8 +279,8 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   const auto& eviction = figures.at("2021-sec3.4.3").at("data").at("temporal_eviction_summary").at("rows");
   ASSERT_EQ(eviction.size(), 3u);
   for (const auto& row : eviction) {
-    EXPECT_LE(row.at("max_occupancy").get<double>(), 1.0);
-    EXPECT_GT(row.at("rss_mib_last").get<double>(), 0.0);
+    EXPECT_LE(row.at("max occupancy").get<double>(), 1.0);
+    EXPECT_GT(row.at("RSS last (MiB)").get<double>(), 0.0);
   }
   EXPECT_EQ(eviction.at(2).at("policy"), "stale");
   EXPECT_NE(html.find("<caption>"), std::string::npos);
