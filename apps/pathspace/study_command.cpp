@@ -177,6 +177,17 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
   psf->add_option("--vertex-set-resolution", o->psf_only.vertex_set_resolution,
                   "Image size WxH of the vertex sets of the hash table figures (2019 figs. 7, 8)")
       ->capture_default_str();
+  psf->add_option("--temporal-frames", o->psf_only.temporal_frames,
+                  "Frames of the orbit measurements of the hashed filter across frames (2021 sec. 3.4.1; fig. 9 uses up to 32); 0: skip")
+      ->check(checked_integer("temporal-frames", 0, 100000))
+      ->capture_default_str();
+  psf->add_option("--eviction-frames", o->psf_only.eviction_frames,
+                  "Frames of the eviction flight through textured-room, per eviction policy (2021 sec. 3.4.3); 0: skip")
+      ->check(checked_integer("eviction-frames", 0, 10000000))
+      ->capture_default_str();
+  psf->add_option("--room-scene", o->psf_only.room_scene,
+                  "The textured-room scene file of the temporal figures (relative: to the working folder, else to the repository of the binary)")
+      ->capture_default_str();
   psf->callback([o] { o->study = "psf"; });
   return study;
 }

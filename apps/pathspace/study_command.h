@@ -29,6 +29,10 @@ struct StudyOptions {
 struct PsfStudyOptions {
   uint32_t max_spp = 64;                         // last checkpoint of the 2014 paper's fig. 3
   std::string vertex_set_resolution = "1920x1080";  // the hash table figures' vertex sets (2019 figs. 7, 8)
+  // The hashed filter across frames (2021 sec. 3.4, study_psf_temporal.cpp); 0 skips that part.
+  uint32_t temporal_frames = 64;     // orbit frames of sec. 3.4.1 (fig. 9 uses min(32, this))
+  uint32_t eviction_frames = 10000;  // frames of the eviction flight (sec. 3.4.3)
+  std::string room_scene = "scenes/textured-room/scene.pbrt";  // relative: to the working folder, else to the repository of the binary
 };
 
 struct StudyCommandOptions {

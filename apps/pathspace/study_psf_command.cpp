@@ -1,5 +1,6 @@
 // `pathspace study psf` (study_psf_figures.h): checks the options, runs every figure on each scene in
-// page order (each scene's reference first), the hash table figures once, and writes the page.
+// page order (each scene's reference first), the hash table figures and the temporal figures once,
+// and writes the page.
 #include <fmt/format.h>
 
 #include "study_psf_figures.h"
@@ -10,6 +11,7 @@ namespace pathspace::cli {
 int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
   int vertex_width = 0, vertex_height = 0;
   parse_resolution(psf.vertex_set_resolution, "--vertex-set-resolution", &vertex_width, &vertex_height);
+  const std::string room_scene = psf.temporal_frames > 0 || psf.eviction_frames > 0 ? resolve_room_scene(psf.room_scene) : psf.room_scene;
   const StudySetup setup = prepare_study(o);
   // The equal-time comparison filters the PT image after the render, so images are kept until each
   // scene is done.
@@ -21,6 +23,8 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
       "Path space filtering: the papers' figures on pathspace scenes");
   doc.settings["max_spp"] = psf.max_spp;
   doc.settings["vertex_set_resolution"] = psf.vertex_set_resolution;
+  doc.settings["temporal_frames"] = psf.temporal_frames;
+  doc.settings["eviction_frames"] = psf.eviction_frames;
   doc.figures = make_psf_figures();
   const PsfStudyParams params{o.time_s, o.seed, psf.max_spp};
   for (const std::string& name : setup.scene_names) {
@@ -42,6 +46,11 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
     doc.scenes.push_back(fence.summary);
   }
   run_hash_table_figures(vertex_width, vertex_height, o.threads, o.quiet, &doc.figures);
+  // The hashed filter across frames (2021 sec. 3.4): its own scenes and frames, once.
+  run_temporal_figures(runner,
+                       TemporalStudyParams{setup.width, setup.height, o.seed, setup.reference_time_s, psf.temporal_frames,
+                                           psf.eviction_frames, room_scene},
+                       &doc.figures, &doc.scenes);
   write_study(o, doc);
   return 0;
 }

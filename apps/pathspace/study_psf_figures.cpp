@@ -76,6 +76,36 @@ std::vector<study::Figure> make_psf_figures() {
                      "reduces the variance of indirect illumination while direct illumination stays sharp.",
                      "PT, PT + hashed filter at the first vertex, and PT + hashed filter at the second (--psf-select nth "
                      "--psf-nth 2), all at 16 paths per pixel."));
+  // 2021 sec. 3.4: the table across frames (study_psf_temporal.cpp), once per study.
+  f.push_back(figure("2021-sec3.4.1", "2021 sec. 3.4.1 - temporal integration of a static scene, orbiting camera",
+                     "Keeping the hash table across frames and blending each voxel's earlier average with the new one "
+                     "(alpha = N_old / (N_old + N_new)) is true temporal integration of static content: the error falls "
+                     "frame after frame although each frame traces one path per pixel.",
+                     "cornell-box (the camera orbiting 0.25 degrees per frame, so that it stays in front of the box) and "
+                     "scenes/textured-room/scene.pbrt (1 degree per frame) at the study's resolution, 1 spp per frame for "
+                     "--temporal-frames frames, PT + hashed filter with --temporal integrate and with off; relMSE of the frames "
+                     "1, 2, 4, ... and the last against a PT reference of that frame (an eighth of --reference-time each; "
+                     "debiased: minus the reference's own noise). The image tables show the first and the last frame beside "
+                     "that frame's reference."));
+  f.push_back(figure("2021-fig9", "2021 fig. 9 - a moving light: ema, integration and hybrid blending",
+                     "Integration keeps the old lighting where a light moved (ghosting of the shadow), an exponential moving "
+                     "average follows it but stays noisy; the hybrid blend integrates where nothing changed and restarts "
+                     "where re-traced paths show a change.",
+                     "cornell-moving-light without jitter (--psf-no-jitter), 1 spp per frame, frames 0 to 32 (fewer when "
+                     "--temporal-frames is smaller), --temporal ema, integrate and hybrid; frame 32 against its PT reference, "
+                     "over the whole image and in the band of pixels whose reference changed by more than 20% between frames "
+                     "24 and 32 (the moving shadow's boundary). Plots: the luminance along the image row with the most band "
+                     "pixels, and the mean alpha of each frame's step."));
+  f.push_back(figure("2021-sec3.4.3", "2021 sec. 3.4.3 - eviction: a flight through a scene the table cannot hold",
+                     "A table kept across frames fills up; evicting by a priority of recency and sample count keeps the "
+                     "occupancy bounded, inserts succeeding and the memory constant however long the animation runs.",
+                     "textured-room at 160x90, the camera flying through eight views of the room (corners, centre, floor, "
+                     "ceiling; keyframes every 2 s) for --eviction-frames frames, PT + hashed filter with --temporal integrate, "
+                     "voxels of 3 projected pixels and --psf-table-factor 0.25 (4096 cells; the room needs more), for each "
+                     "--temporal-eviction policy (priority and lru evict down to --temporal-occupancy 0.75, stale after 32 "
+                     "unused steps): occupancy after each step, evictions, failed inserts (probe limit) per vertex, the "
+                     "process's resident memory (VmRSS), the time per frame and the temporal bookkeeping's share of the "
+                     "filter's time (hashed.temporal.s_per_step against clear + accumulate + lookup per pass)."));
   // Ours.
   f.push_back(figure("equal-time", "Equal time: path space filters against a screen-space filter",
                      "Neither paper compares at equal time. The 2021 paper calls screen-space noise filters complementary "

@@ -46,6 +46,25 @@ void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params,
 // Once per study: 2019 figs. 7 and 8 on cornell-box vertex sets of width x height.
 void run_hash_table_figures(int width, int height, int threads, bool quiet, std::vector<study::Figure>* figures);
 
+// Once per study: the hashed filter's table across frames (2021 sec. 3.4; study_psf_temporal.cpp):
+// the orbit on a static scene (3.4.1), the moving light of fig. 9, the eviction flight (3.4.3).
+// Each adds its figure's runs, plots and tables; the frames' references become scene entries of
+// their own (ids "<scene>-orbit-f<N>", "ml_c-f<N>"), so that the page shows each frame's renders
+// beside that frame's reference.
+struct TemporalStudyParams {
+  int width = 128, height = 128;
+  uint64_t seed = 0;
+  double reference_s = 60.0;  // the study's per-scene reference time, shared by the frames' references
+  uint32_t frames = 64;       // 0: skip the orbit and fig. 9
+  uint32_t eviction_frames = 10000;  // 0: skip the eviction flight
+  std::string room_scene;     // resolved path of scenes/textured-room/scene.pbrt
+};
+// The textured-room file: `given` when it exists, else relative to the folders above the binary
+// (build/apps/pathspace/ in the repository); throws UsageError naming --room-scene when neither.
+std::string resolve_room_scene(const std::string& given);
+void run_temporal_figures(const study::ExperimentRunner& runner, const TemporalStudyParams& params,
+                          std::vector<study::Figure>* figures, std::vector<study::SceneSummary>* scenes);
+
 // Shared by the figure files: a PT configuration with a filter and options given by name, as the CLI
 // takes them ({"psf-iterations", "2"}; a flag has an empty value).
 study::Configuration pt_with(const std::string& label, const std::string& filter,

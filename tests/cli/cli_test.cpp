@@ -232,7 +232,7 @@ TEST_F(CliTest, StudyPcltWritesJsonHtmlAndEveryImage) {
 // fence, the hash table figures carry their data, and the page has the SVG plots.
 TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   const CliResult r = run("study psf --scenes bs_c --resolution 16x12 --time 0.05 --reference-time 0.2 --max-spp 4 "
-                          "--vertex-set-resolution 32x24 --no-exr --quiet -o sp");
+                          "--vertex-set-resolution 32x24 --temporal-frames 4 --eviction-frames 6 --no-exr --quiet -o sp");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(read_all(dir_ / "sp/study.json"));
   EXPECT_EQ(json.at("study"), "psf");
@@ -253,7 +253,37 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   EXPECT_FALSE(json.at("figures").at("2019-fig8").at("data").at("psf_fig8").at("rows").empty());
   size_t svgs = 0;
   for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, 7u);  // 2014 fig. 3, 2021 fig. 4, 2019 fig. 7 (4), 2019 fig. 8
+  // 2014 fig. 3, 2021 fig. 4, 2019 fig. 7 (4), 2019 fig. 8, sec. 3.4.1 (one per scene), fig. 9 (2), sec. 3.4.3 (3)
+  EXPECT_EQ(svgs, 14u);
+  // The temporal figures (2021 sec. 3.4): runs of the first and last orbit frame per scene and mode
+  // against that frame's reference, fig. 9's three modes at its last frame, the eviction flight's
+  // table per policy; each shown as an HTML table.
+  const auto& figures = json.at("figures");
+  for (const char* fig : {"2021-sec3.4.1", "2021-fig9", "2021-sec3.4.3"}) {
+    SCOPED_TRACE(fig);
+    EXPECT_TRUE(figures.at(fig).at("reproduced").get<bool>());
+    EXPECT_NE(html.find("id=\"" + std::string(fig) + "\""), std::string::npos);
+    EXPECT_FALSE(figures.at(fig).at("findings").at("").get<std::string>().empty());
+    for (const auto& run : figures.at(fig).at("runs"))
+      for (const char* key : {"image_png", "error_png"}) EXPECT_TRUE(fs::exists(dir_ / "sp" / run.at(key).get<std::string>())) << run.at(key);
+  }
+  EXPECT_EQ(figures.at("2021-sec3.4.1").at("runs").size(), 8u);  // 2 scenes x 2 modes x frames 1 and 4
+  const auto& orbit = figures.at("2021-sec3.4.1").at("data").at("temporal_orbit").at("rows");
+  EXPECT_EQ(orbit.size(), 12u);  // 2 scenes x 2 modes x frames 1, 2, 4
+  EXPECT_EQ(orbit.at(0).at("frame"), 1);
+  EXPECT_EQ(json.at("scenes").at("bs_c-orbit-f4").at("integrator"), "pt");
+  const auto& fig9 = figures.at("2021-fig9").at("runs");
+  ASSERT_EQ(fig9.size(), 3u);
+  EXPECT_EQ(fig9.at(2).at("scene"), "ml_c-f4");
+  EXPECT_TRUE(fig9.at(2).at("metrics").contains("band_rel_mse"));
+  const auto& eviction = figures.at("2021-sec3.4.3").at("data").at("temporal_eviction_summary").at("rows");
+  ASSERT_EQ(eviction.size(), 3u);
+  for (const auto& row : eviction) {
+    EXPECT_LE(row.at("max occupancy").get<double>(), 1.0);
+    EXPECT_GT(row.at("RSS last (MiB)").get<double>(), 0.0);
+  }
+  EXPECT_EQ(eviction.at(2).at("policy"), "stale");
+  EXPECT_NE(html.find("<caption>"), std::string::npos);
   const auto& equal_time = json.at("figures").at("equal-time").at("runs");
   EXPECT_EQ(equal_time.back().at("label"), "PT + à-trous");
 }
@@ -270,6 +300,7 @@ TEST_F(CliTest, LongPassReportsProgressFromInside) {
 TEST_F(CliTest, StudyMisuseIsAUsageError) {
   expect_usage_error("study psf --vertex-set-resolution 0x3 --quiet", "--vertex-set-resolution");
   expect_usage_error("study psf --max-spp 0 --quiet", "--max-spp");
+  expect_usage_error("study psf --room-scene nowhere.pbrt --quiet", "--room-scene");
   expect_usage_error("study psf --scenes nope --quiet", "nope");
   expect_usage_error("study pclt --resolution 16 --quiet", "--resolution");
   expect_usage_error("study pclt --scenes nope --quiet", "nope");

@@ -48,6 +48,7 @@ ReportSection report_section(const Figure& f) {
   s.measurements = f.runs;
   s.findings = f.findings;
   s.plots = f.plots;
+  s.tables = f.shown_tables;
   return s;
 }
 

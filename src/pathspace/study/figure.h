@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,9 @@ struct Figure {
   std::map<std::string, std::string> findings;  // scene id -> sentence from the numbers
   std::vector<std::string> plots;        // SVG elements shown above the image tables
   std::map<std::string, Table> data;     // measurements without images (study.json "data": name -> table)
+  // Tables also shown in study.html, after the plots (title, table); they are not in study.json
+  // unless also in `data`.
+  std::vector<std::pair<std::string, Table>> shown_tables;
 };
 
 // The figure with this id; throws pathspace::Error when there is none.

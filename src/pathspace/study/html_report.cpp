@@ -74,7 +74,7 @@ std::string settings_text(const nlohmann::ordered_json& settings) {
 
 constexpr const char* kStyle = R"(body{font-family:system-ui,sans-serif;margin:1.5em;color:#222;background:#fafafa;max-width:1400px}
 h1{font-size:1.5em}h2{font-size:1.25em;margin-top:2em;border-bottom:1px solid #ccc}h3{font-size:1.05em;margin-bottom:.3em}
-table{border-collapse:collapse;margin:.4em 0 .8em 0;font-size:.85em}td,th{border:1px solid #ddd;padding:3px 6px;text-align:center;vertical-align:middle}
+table{border-collapse:collapse;margin:.4em 0 .8em 0;font-size:.85em}caption{text-align:left;font-weight:600;padding:.2em 0}td,th{border:1px solid #ddd;padding:3px 6px;text-align:center;vertical-align:middle}
 th{background:#eee}td.k{text-align:left;background:#f3f3f3;font-weight:600;white-space:nowrap}td.s{font-size:.8em;color:#555;max-width:170px}
 .im{width:160px;background-size:100% 100%;image-rendering:pixelated;margin:auto}.best{font-weight:700;color:#0a6}
 .paper,.method{max-width:70em}.paper{font-style:italic}.finding{background:#fff7d6;padding:.4em .6em;border-left:4px solid #e0b000;max-width:70em}
@@ -136,6 +136,24 @@ void section_table(std::string& html, const ReportSection& section, const SceneS
     html += "<p class=finding>" + escape(it->second) + "</p>\n";
 }
 
+void data_table(std::string& html, const std::string& title, const Table& table) {
+  const std::vector<Column> columns = table.effective_columns();
+  html += "<table>\n";
+  if (!title.empty()) html += "<caption>" + escape(title) + "</caption>\n";
+  html += "<tr>";
+  for (const Column& c : columns) html += "<th>" + escape(c.name) + "</th>";
+  html += "</tr>\n";
+  for (const Record& r : table.rows) {
+    html += "<tr>";
+    for (const Column& c : columns) {
+      const Value* v = r.find(c.source());
+      html += "<td>" + (v ? escape(cell_text(*v, c.format)) : std::string("&ndash;")) + "</td>";
+    }
+    html += "</tr>\n";
+  }
+  html += "</table>\n";
+}
+
 std::string scene_text(const SceneSummary& s) {
   const nlohmann::ordered_json ref = to_json(s.reference);
   const std::string reference = ref.contains("image_file")
@@ -171,6 +189,7 @@ std::string html_report(const std::string& out_dir, const ReportPage& page) {
       for (const std::string& svg : s.plots) body += svg;
       body += "</div>\n";
     }
+    for (const auto& [title, table] : s.tables) data_table(body, title, table);
     if (const auto it = s.findings.find(""); it != s.findings.end()) body += "<p class=finding>" + escape(it->second) + "</p>\n";
     for (const SceneSummary& scene : page.scenes) section_table(body, s, scene, sheet);
   }

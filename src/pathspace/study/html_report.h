@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "pathspace/study/experiment.h"
 #include "pathspace/study/measurement.h"
 #include "pathspace/study/prepared_scene.h"
+#include "pathspace/study/table.h"
 
 namespace pathspace::study {
 
@@ -32,6 +34,9 @@ struct ReportSection {
   std::vector<Measurement> measurements;      // every scene, in order
   std::map<std::string, std::string> findings;  // scene id -> a sentence from the numbers ("": about the whole section)
   std::vector<std::string> plots;  // inline <svg> elements (svg_plot.h), shown before the scene tables
+  // Data tables shown as HTML tables after the plots (title, table; cells formatted by their
+  // column's format, table.h).
+  std::vector<std::pair<std::string, Table>> tables;
 };
 
 struct ReportPage {
