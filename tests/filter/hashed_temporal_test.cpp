@@ -281,9 +281,11 @@ double band_rel_mse(const Image& img, const Image& reference, const std::vector<
 
 // With the light moving, integration averages the old lighting into the new frame; hybrid detects
 // the change and follows it. Measured where the lighting moved (the band of pixels whose reference
-// changed by more than 20% over the last 8 frames): hybrid's error there is lower than integration's.
+// changed by more than 20% over the last 8 frames, the light box's own pixels left out): hybrid's
+// error there is lower than integration's (measured 0.081 against 0.405; the moving average's, 0.075,
+// is close to hybrid's at this size, so it is printed, not tested).
 TEST(HashedTemporal, HybridFollowsAMovingLightBetterThanIntegration) {
-  constexpr int kSide = 48, kFrames = 24;
+  constexpr int kSide = 48, kFrames = 33;  // frame 32: the light moves fastest
   Animation animation;
   animation.scene_at = [](double t) { return make_builtin_scene_at("cornell-moving-light", kSide, kSide, t); };
   const Image reference = testing::render_with(animation.at_frame(kFrames - 1), testing::pt_config(70), 1024).mean;
@@ -292,7 +294,7 @@ TEST(HashedTemporal, HybridFollowsAMovingLightBetterThanIntegration) {
   size_t in_band = 0;
   for (size_t p = 0; p < band.size(); ++p) {
     const float a = luminance(reference.pixels[p]), b = luminance(before.pixels[p]);
-    band[p] = std::fabs(a - b) > 0.2f * std::max(a, b);
+    band[p] = std::fabs(a - b) > 0.2f * std::max(a, b) && std::max(a, b) < 1.f;  // not the light box itself
     in_band += band[p];
   }
   HashedFilterSettings s = integrate_settings(2.f);

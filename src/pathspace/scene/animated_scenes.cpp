@@ -11,7 +11,9 @@ double phase(double seconds) { return 2.0 * double(kPi) * seconds / kMovingScene
 }  // namespace
 
 Scene make_moving_light_scene(int width, int height, double seconds) {
-  const float x = kMovingLightAmplitude * float(std::sin(phase(seconds)));
+  // From the left wall's side to the right and back: fastest at 1 s (frame 30 at 30 frames per
+  // second), where fig. 9's shadow boundary is measured.
+  const float x = -kMovingLightAmplitude * float(std::cos(phase(seconds)));
   Scene scene = make_cornell_box(kLightCeiling, width, height, Vec3(x, 0.f, 0.f));
   scene.first_moving_triangle = uint32_t(scene.triangles.size()) - kLightBoxTriangles;  // the light box comes last
   // A diffuse sphere standing still on the floor: its shadow moves with the light (fig. 9).
