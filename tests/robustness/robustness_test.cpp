@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -89,6 +90,20 @@ TEST_F(Robustness, HugePbrtGeometryIsAnInputError) {
 TEST_F(Robustness, InvalidMaterialIsAnInputError) {
   write("neg.pbrt", std::string(kCamera) + kLight + "Material \"diffuse\" \"rgb reflectance\" [ -0.5 0.5 0.5 ]\nShape \"sphere\"\n");
   expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"diffuse reflectance", "-0.5", ">= 0"});
+}
+
+TEST_F(Robustness, NonFiniteTexelIsAnInputError) {
+  // A 2x1 PFM whose second texel's red is NaN, used as a diffuse reflectance texture.
+  std::string pfm = "PF\n2 1\n-1.0\n";
+  const float texels[6] = {0.5f, 0.5f, 0.5f, std::nanf(""), 0.f, 0.f};
+  pfm.append(reinterpret_cast<const char*>(texels), sizeof texels);
+  write("nan.pfm", pfm);
+  write("tex.pbrt", std::string(kCamera) + kLight +
+                        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"nan.pfm\"\n"
+                        "Material \"diffuse\" \"texture reflectance\" \"t\"\nShape \"sphere\"\n");
+  // The pbrt loader names the statement; every other way into a render meets scene validation's
+  // texel check (tests/unit/render_session_test.cpp, SessionValidation).
+  expect(std::string("render tex.pbrt -o a.exr") + kQuick, 1, {"tex.pbrt:6:", "NaN or infinite"});
 }
 
 TEST_F(Robustness, SceneWithoutLightsWarns) {

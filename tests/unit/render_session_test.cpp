@@ -440,5 +440,33 @@ TEST(SessionStatistics, UnreportedStatisticIsAnError) {
   EXPECT_THROW(sppm->stats().details.at("hashed.passes"), Error);
 }
 
+// Every session validates its scene before Embree sees it (scene/scene_validation.h): values out of
+// range are an Error at construction, not an abort inside Embree or a silently wrong image, whether
+// the scene comes from the CLI or from code (studies, tests, bindings).
+TEST(SessionValidation, OutOfRangeScenesAreErrorsBeforeTheAccelIsBuilt) {
+  Scene far = make_builtin_scene("cornell-empty-area", 8, 8);
+  far.positions[0].x = 1e20f;  // Embree's ray.valid() assertion aborted on such values
+  EXPECT_THROW(RenderSession(std::move(far), make_render_config("pt", PtSettings{})), Error);
+
+  Scene textured = make_builtin_scene("cornell-empty-area", 8, 8);
+  ImageTexture t;
+  t.name = "nan.exr";
+  t.width = 2;
+  t.height = 1;
+  t.texels = {Rgb(0.5f), Rgb(std::nanf(""), 0.f, 0.f)};
+  textured.add_texture(t);
+  textured.finalize();
+  try {
+    RenderSession session(textured, make_render_config("pt", PtSettings{}));
+    ADD_FAILURE() << "a NaN texel was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("texel (1, 0)"), std::string::npos) << e.what();
+  }
+  textured.textures[0].texels[1] = Rgb(-0.25f, 0.f, 0.f);  // negative: used, with a warning
+  const RenderSession session(textured, make_render_config("pt", PtSettings{}));
+  ASSERT_EQ(session.scene_warnings().size(), 1u);
+  EXPECT_NE(session.scene_warnings()[0].find("1 of its 2 texels are negative"), std::string::npos) << session.scene_warnings()[0];
+}
+
 }  // namespace
 }  // namespace pathspace

@@ -69,6 +69,21 @@ void check_material(const Material& m, size_t i, std::vector<std::string>* gains
   if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f) gains->push_back(name);
 }
 
+// Image texels (textures, the environment image): NaN or Inf is an error (it would spread through
+// every estimate that reads it); negative texels (an HDR map's ringing, say) are used as they are,
+// with a warning.
+void check_texels(const std::vector<Rgb>& texels, int width, const std::string& what, std::vector<std::string>* warnings) {
+  size_t negative = 0;
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const Rgb& t = texels[i];
+    if (!all_finite(t))
+      throw Error(fmt::format("{}: texel ({}, {}) is {}: every texel must be finite", what, width > 0 ? i % size_t(width) : 0,
+                              width > 0 ? i / size_t(width) : 0, text(t)));
+    if (t.r < 0.f || t.g < 0.f || t.b < 0.f) ++negative;
+  }
+  if (negative > 0) warnings->push_back(fmt::format("warning: {}: {} of its {} texels are negative (used as they are)", what, negative, texels.size()));
+}
+
 }  // namespace
 
 void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
@@ -88,6 +103,10 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     if (is_point_light(l)) check_point(l.position, name);
     if (l.type == LightType::directional || l.type == LightType::spot) check_direction(l.direction, name + ": direction");
   }
+  for (size_t i = 0; i < scene.textures.size(); ++i)
+    check_texels(scene.textures[i].texels, scene.textures[i].width, "texture " + std::to_string(i) + " ('" + scene.textures[i].name + "')", warnings);
+  if (!scene.environment_image.empty())
+    check_texels(scene.environment_image.texels, scene.environment_image.width, "the environment image", warnings);
   if (!gains.empty())
     warnings->push_back(fmt::format("warning: {} reflect{} more light than {} receive{} (a reflectance above 1 adds energy)",
                                     fmt::join(gains, ", "), gains.size() == 1 ? "s" : "", gains.size() == 1 ? "it" : "they",

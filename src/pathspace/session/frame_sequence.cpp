@@ -5,6 +5,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace {
 
@@ -29,6 +30,8 @@ uint64_t render_frames(const Animation& animation, const RenderConfig& config, F
     // The scene is made anew every frame; its acceleration structure reuses the previous frame's for
     // the geometry that does not move (Scene::first_moving_triangle, accel/accel.h).
     auto scene = std::make_shared<const Scene>(animation.at_frame(frame));
+    std::vector<std::string> warnings;
+    validate_scene(*scene, &warnings);  // before Embree sees the frame's values (the session reports the warnings)
     auto accel = std::make_shared<const Accel>(*scene, previous.get());
     result.scene_seconds = seconds_since(t0);
     result.static_geometry_reused = accel->reused_static_part();

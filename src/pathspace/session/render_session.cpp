@@ -12,6 +12,7 @@
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/sampling/hash.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace {
 
@@ -43,13 +44,19 @@ std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& a
   return integrator_registry().at(config.integrator).create(context, config.settings);
 }
 
+// Validates the scene before Embree sees any of its values, then builds its accel unless given one.
+std::shared_ptr<const Accel> validated_accel(const Scene& scene, std::shared_ptr<const Accel> accel, std::vector<std::string>* warnings) {
+  validate_scene(scene, warnings);
+  return accel ? std::move(accel) : std::make_shared<const Accel>(scene);
+}
+
 }  // namespace
 
 uint64_t frame_seed(uint64_t seed, uint64_t frame) { return frame == 0 ? seed : hash_combine(mix64(seed ^ 0x6672616d65ull), frame); }
 
 RenderSession::RenderSession(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, RenderConfig config)
     : scene_(std::move(scene)),
-      accel_(accel ? std::move(accel) : std::make_shared<const Accel>(*scene_)),
+      accel_(validated_accel(*scene_, std::move(accel), &scene_warnings_)),
       config_(std::move(config)),
       integrator_(create_integrator(*scene_, *accel_, config_)),
       film_(scene_->camera.width, scene_->camera.height) {}
@@ -118,7 +125,8 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   if (scene->camera.width != int(film_.width()) || scene->camera.height != int(film_.height()))
     throw Error("frame " + std::to_string(frame) + " is " + std::to_string(scene->camera.width) + "x" + std::to_string(scene->camera.height) +
                 ", the animation's first frame " + std::to_string(film_.width()) + "x" + std::to_string(film_.height()));
-  std::shared_ptr<const Accel> next_accel = accel ? std::move(accel) : std::make_shared<const Accel>(*scene);
+  std::vector<std::string> warnings;
+  std::shared_ptr<const Accel> next_accel = validated_accel(*scene, std::move(accel), &warnings);
   RenderConfig frame_config = config_;
   frame_config.seed = frame_seed(config_.seed, frame);
   // The new integrator takes the filter over before the old one (and its scene) goes.
@@ -131,6 +139,7 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   wall_s_ = 0.0;
   frame_ = frame;
   in_sequence_ = true;
+  scene_warnings_ = std::move(warnings);
 }
 
 uint64_t RenderSession::frame() const {

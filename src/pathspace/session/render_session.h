@@ -131,6 +131,9 @@ class RenderSession {
   // so a pass made of several loops (trace, filter, resolve) can step back when the next one starts.
   PassProgress pass_progress() const;
   const RenderConfig& config() const { return config_; }
+  // The warnings of the scene's validation (scene/scene_validation.h), which every session runs
+  // before the scene reaches Embree: a scene with an out-of-range value is an Error at construction.
+  const std::vector<std::string>& scene_warnings() const { return scene_warnings_; }
   const Scene& scene() const { return *scene_; }
   const Accel& accel() const { return *accel_; }
 
@@ -153,6 +156,7 @@ class RenderSession {
   };
 
   std::shared_ptr<const Scene> scene_;
+  std::vector<std::string> scene_warnings_;  // before accel_: the scene is validated before it is built
   std::shared_ptr<const Accel> accel_;
   RenderConfig config_;
   std::unique_ptr<Integrator> integrator_;
