@@ -56,7 +56,6 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
       if (std::binary_search(all.begin(), all.end(), key) && next < freed.size()) assigned.push_back({freed[next++], key});
   }
   if (assigned.empty()) return;
-  std::map<uint64_t, uint32_t> winner_of(assigned.begin(), assigned.end());
   std::map<uint32_t, uint64_t> cell_of_key;
   for (const auto& [cell, key] : assigned) cell_of_key[key] = cell;
   for (const auto& [cell, key] : assigned) {
