@@ -39,20 +39,6 @@ namespace pathspace::cli {
 
 namespace {
 
-constexpr const char* kDefaultOutputFolder = "pathspace-out";
-
-
-// The output files: --out as given, else pathspace-out/<scene>.exr and .png.
-std::vector<std::string> output_paths(const RenderOptions& o, const std::string& scene_name) {
-  if (!o.outputs.empty()) return o.outputs;
-  std::filesystem::create_directories(kDefaultOutputFolder);
-  const std::string base = std::string(kDefaultOutputFolder) + "/" + scene_name;
-  return {base + ".exr", base + ".png"};
-}
-
-
-
-
 // The integrator, filter and their options, checked against the registry (usage errors name the
 // integrators or filter an option belongs to).
 RenderConfig render_config(const RenderOptions& o) {
@@ -71,20 +57,6 @@ std::vector<std::string> filter_choices() {
   std::vector<std::string> names = {FilterChoice::kNone};
   for (const std::string& n : filter_registry().names()) names.push_back(n);
   return names;
-}
-
-// `option` names where the path came from: "-o" takes every word up to the next option, so a scene
-// name after "-o a.exr" lands here and gets its own message instead of "unsupported extension".
-void check_image_path(const std::string& option, const std::string& path) {
-  try {
-    image_format_from_path(path);
-  } catch (const Error& e) {
-    if (option == "-o" && (find_builtin_scene(path) || is_scene_file(path)))
-      throw UsageError("-o took the scene '" + path + "' as an output file: -o reads every word up to the next option, so "
-                       "give the scene before -o, or end the outputs with --");
-    throw UsageError(e.what());
-  }
-  check_output_writable(path);
 }
 
 const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal"; }
@@ -179,7 +151,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   const BuiltinSceneInfo* builtin = from_file ? nullptr : find_builtin_scene(scene_name);
   if (!from_file && !builtin) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
   OutputPlan plan;
-  plan.images = output_paths(o, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
+  plan.images = image_output_paths(o.outputs, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
   plan.variance = o.variance_path;
   plan.stats = o.stats_path;
   std::vector<NamedFile> files, inputs;

@@ -2,7 +2,6 @@
 
 #include <csignal>
 #include <filesystem>
-#include <memory>
 #include <set>
 
 #include <fmt/format.h>
@@ -10,10 +9,9 @@
 
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/camera_path_file.h"
-#include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
-#include "pathspace/scene/scene_validation.h"
 #include "pathspace/session/frame_sequence.h"
 #include "distinct_files.h"
 #include "frame_pattern.h"
@@ -30,10 +28,12 @@ namespace {
 
 FrameRange parse_frames(const std::string& text) {
   const size_t colon = text.find(':');
-  const auto number = [&](const std::string& part) {
-    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos)
+  const auto number = [&](const std::string& part) {  // the project's checked parser (options/option_parse.h)
+    try {
+      return parse_unsigned_option("frames", part, 999999999);
+    } catch (const OptionError&) {
       throw UsageError(fmt::format("--frames expects FIRST:LAST, two frame numbers below 10^9, not '{}'", text), "e.g. --frames 0:63");
-    return uint64_t(std::stoull(part));
+    }
   };
   if (colon == std::string::npos) throw UsageError(fmt::format("--frames expects FIRST:LAST, not '{}'", text), "e.g. --frames 0:63");
   const FrameRange r{number(text.substr(0, colon)), number(text.substr(colon + 1))};
@@ -48,13 +48,6 @@ void check_sequence_options(const RenderOptions& o) {
       {o.time_s > 0.0, "--time"},              {o.checkpoint_every > 0.0, "--checkpoint-every"}};
   for (const auto& [given, name] : unsupported)
     if (given) throw UsageError(std::string(name) + " does not apply to --frames (a frame's table spans the frames before it)");
-}
-
-std::vector<std::string> frame_outputs(const RenderOptions& o, const std::string& scene_name) {
-  if (!o.outputs.empty()) return o.outputs;
-  std::filesystem::create_directories("pathspace-out");
-  const std::string base = "pathspace-out/" + scene_name + "-%04d";
-  return {base + ".exr", base + ".png"};
 }
 
 nlohmann::ordered_json frame_entry(const FrameResult& f, const Animation& animation) {
@@ -89,25 +82,6 @@ std::function<Scene(double)> file_animation(const PreparedScene& prepared) {
   return load_scene_animation(prepared.file, prepared.load_options, &printed);
 }
 
-// Every frame of an animated file is validated as prepare_scene validates the still scene; a warning
-// is printed the first time it appears (prepare_scene printed those of frame 0's scene).
-class FrameChecks {
- public:
-  explicit FrameChecks(const Scene& initial) {
-    std::vector<std::string> w;
-    validate_scene(initial, &w);
-    printed_.insert(w.begin(), w.end());
-  }
-  void validate(const Scene& s) {
-    std::vector<std::string> w;
-    validate_scene(s, &w);
-    for (const std::string& line : w)
-      if (printed_.insert(line).second) print_warnings({line});
-  }
-
- private:
-  std::set<std::string> printed_;
-};
 
 }  // namespace
 
@@ -124,17 +98,12 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
 
   PreparedScene prepared = prepare_scene(o);
   const BuiltinSceneInfo* builtin = prepared.file.empty() ? find_builtin_scene(prepared.label) : nullptr;
-  std::vector<std::string> images = frame_outputs(o, prepared.display_name);
+  std::vector<std::string> images = image_output_paths(o.outputs, prepared.display_name + "-%04d");
   std::vector<NamedFile> files;
   for (const std::string& pattern : images) {
     check_frame_pattern("-o", pattern);
     files.push_back({"-o", frame_path(pattern, range.first)});
-    try {
-      image_format_from_path(pattern);
-    } catch (const Error& e) {
-      throw UsageError(e.what());
-    }
-    check_output_writable(files.back().path);
+    check_image_path("-o", files.back().path);
   }
   if (!o.variance_path.empty()) {
     check_frame_pattern("--variance-out", o.variance_path);
@@ -160,15 +129,10 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
       return s;
     };
   } else if (auto file_scene_at = file_animation(prepared)) {
-    animation.scene_at = [&o, file_scene_at, checks = std::make_shared<FrameChecks>(prepared.scene)](double seconds) {
-      try {
-        Scene s = file_scene_at(seconds);
-        apply_scene_options(o, &s);
-        checks->validate(s);
-        return s;
-      } catch (const Error& e) {  // say when: the scene at 0 s was fine
-        throw Error(fmt::format("the scene at {} s: {}", seconds, e.what()));
-      }
+    animation.scene_at = [&o, file_scene_at](double seconds) {
+      Scene s = file_scene_at(seconds);
+      apply_scene_options(o, &s);
+      return s;
     };
   } else {
     animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene file without animation stands still
@@ -192,9 +156,14 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
   InterruptHandler interrupt;
   RenderRunInfo run{prepared.display_name, width, height, 0, ""};
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  // Each frame's scene validation warnings (the session's), printed the first time they appear;
+  // prepare_scene printed those of the still scene.
+  std::set<std::string> printed(prepared.validation_warnings.begin(), prepared.validation_warnings.end());
   const uint64_t rendered = render_frames(
       animation, config, range, spp,
       [&](const FrameResult& f) {
+        for (const std::string& w : f.scene_warnings)
+          if (printed.insert(w).second) print_warnings({w});
         if (interrupt.signal() != 0 && f.snapshot.stats.spp < spp) return false;  // an unfinished frame is not written
         OutputPlan plan;
         for (const std::string& p : images) plan.images.push_back(frame_path(p, f.frame));

@@ -6,8 +6,31 @@
 
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/scene_loader.h"
+#include "pathspace/scene/builtin_scenes.h"
+#include "usage_error.h"
 
 namespace pathspace::cli {
+
+std::vector<std::string> image_output_paths(const std::vector<std::string>& given, const std::string& name) {
+  if (!given.empty()) return given;
+  constexpr const char* kDefaultOutputFolder = "pathspace-out";
+  std::filesystem::create_directories(kDefaultOutputFolder);
+  const std::string base = std::string(kDefaultOutputFolder) + "/" + name;
+  return {base + ".exr", base + ".png"};
+}
+
+void check_image_path(const std::string& option, const std::string& path) {
+  try {
+    image_format_from_path(path);
+  } catch (const Error& e) {
+    if (option == "-o" && (find_builtin_scene(path) || is_scene_file(path)))
+      throw UsageError("-o took the scene '" + path + "' as an output file: -o reads every word up to the next option, so "
+                       "give the scene before -o, or end the outputs with --");
+    throw UsageError(e.what());
+  }
+  check_output_writable(path);
+}
 
 std::string aov_path(const std::string& first_image, const std::string& aov) {
   const std::filesystem::path first(first_image);

@@ -22,6 +22,13 @@ struct OutputPlan {
 // Periodic sets are soon replaced: they are encoded fast (io/image_io.h, ImageEncoding).
 enum class OutputKind { final, periodic };
 
+// The image outputs: -o as given, else pathspace-out/NAME.exr and .png (the folder is created).
+std::vector<std::string> image_output_paths(const std::vector<std::string>& given, const std::string& name);
+// An image output given to `option`: an extension that names a format and a writable folder, or a
+// UsageError. "-o" takes every word up to the next option, so a scene name after "-o a.exr" lands
+// here and gets its own message instead of "unsupported extension".
+void check_image_path(const std::string& option, const std::string& path);
+
 // "out/a.exr" + "voxel" -> "out/a.aov-voxel.exr".
 std::string aov_path(const std::string& first_image, const std::string& aov);
 

@@ -92,9 +92,8 @@ PreparedScene prepare_scene(const RenderOptions& o) {
   }
   apply_scene_options(o, &p.scene);
   // Every scene, built-in or from any file format, with the command line's camera changes applied.
-  std::vector<std::string> warnings;
-  validate_scene(p.scene, &warnings);
-  print_warnings(warnings);
+  validate_scene(p.scene, &p.validation_warnings);
+  print_warnings(p.validation_warnings);
   return p;
 }
 

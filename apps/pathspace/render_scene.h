@@ -23,6 +23,7 @@ struct PreparedScene {
   std::string file;          // the scene file, or empty
   SceneLoadOptions load_options;  // what the file was loaded with (the command line's camera and -r)
   int file_spp = 0;          // the file's samples per pixel, 0: none
+  std::vector<std::string> validation_warnings;  // printed by prepare_scene
 };
 
 // -r as given, 512x512 when it is empty.

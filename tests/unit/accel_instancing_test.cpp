@@ -61,6 +61,19 @@ TEST(AccelInstancing, MovingPartsHitExactlyLikeTheFlatStructure) {
   }
 }
 
+// A camera moving through a still scene: frames after the first are built in two levels with all of
+// the scene static, and from the third frame on the previous frame's structure is reused whole.
+TEST(AccelInstancing, StillScenesAreReusedWholeFromTheSecondTwoLevelFrame) {
+  const Scene scene = make_builtin_scene("cornell-box", 16, 16);  // nothing moves
+  const Accel a0(scene);
+  const Accel a1(scene, &a0);  // a0 is flat: the static part is built here
+  EXPECT_FALSE(a1.reused_static_part());
+  const Accel a2(scene, &a1);
+  EXPECT_TRUE(a2.reused_static_part());
+  const Scene flat = flat_copy(scene);
+  expect_same_hits(a2, Accel(flat), 4);
+}
+
 TEST(AccelInstancing, ChangedStaticGeometryIsBuiltAgain) {
   const Scene frame0 = make_builtin_scene_at("cornell-moving-light", 16, 16, 0.0);
   Scene frame1 = make_builtin_scene_at("cornell-moving-light", 16, 16, 0.5);

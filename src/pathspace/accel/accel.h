@@ -16,7 +16,8 @@ class Scene;
 class Accel {
  public:
   // `previous`: the Accel of the previous frame of an animation; the part of the scene that does not
-  // move (Scene::first_moving_triangle, first_moving_sphere) is reused from it when unchanged.
+  // move (Scene::first_moving_triangle, first_moving_sphere; all of it when nothing moves) is reused
+  // from it when unchanged.
   explicit Accel(const Scene& scene, const Accel* previous = nullptr);
   // Whether the static part was taken from `previous` (animations; statistics and tests).
   bool reused_static_part() const;

@@ -1,10 +1,10 @@
 // Embree 3 backend of Accel: one triangle geometry for all triangles and one user geometry for all
 // analytic spheres (exact quadratic intersection in geometry/shapes.h, not Embree's tessellation-free
 // "sphere points", so glass spheres are hit identically from inside and outside).
-// A scene with moving parts (Scene::first_moving_triangle / first_moving_sphere: an animation's
-// frame) is built in two levels: the static part and the moving part are two instanced Embree
-// scenes, and the next frame's Accel reuses the static part when it is unchanged, so a frame
-// rebuilds only the moving part and the two-instance top level (docs/animation.md).
+// A scene with moving parts (Scene::first_moving_triangle / first_moving_sphere), or any frame built
+// after a previous one, is built in two levels: the static part and the moving part are two
+// instanced Embree scenes, and the next frame's Accel reuses the static part when it is unchanged,
+// so a frame rebuilds only the moving part and the two-instance top level (docs/animation.md).
 #include <embree3/rtcore.h>
 #include <fmt/core.h>
 
@@ -256,7 +256,9 @@ Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique
   if (!scene.normals.empty() && scene.normals.size() == scene.positions.size()) impl_->normals = scene.normals.data();
   impl_->textured = !scene.textures.empty();
   const uint32_t triangles = uint32_t(scene.triangles.size()), spheres = uint32_t(scene.spheres.size());
-  const bool two_level = scene.first_moving_triangle < triangles || scene.first_moving_sphere < spheres;
+  // Frames of an animation (a previous frame given) are built in two levels even when nothing moves
+  // (a camera moving through a still scene): their static part is then all of it, reused as it is.
+  const bool two_level = previous || scene.first_moving_triangle < triangles || scene.first_moving_sphere < spheres;
   const Impl* before = previous ? previous->impl_.get() : nullptr;
   impl_->device = before && before->static_part ? before->device : new_device();
   const RTCDevice device = impl_->device->device;

@@ -2,10 +2,11 @@
 
 #include <chrono>
 
+#include <fmt/format.h>
+
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
 #include "pathspace/scene/scene.h"
-#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace {
 
@@ -21,26 +22,26 @@ uint64_t render_frames(const Animation& animation, const RenderConfig& config, F
   if (range.last < range.first) throw Error("the last frame comes before the first");
   if (passes == 0) throw Error("a frame needs at least one pass");
   std::unique_ptr<RenderSession> session;
-  std::shared_ptr<const Accel> previous;
   uint64_t rendered = 0;
   for (uint64_t frame = range.first; frame <= range.last; ++frame) {
     FrameResult result;
     result.frame = frame;
     auto t0 = std::chrono::steady_clock::now();
-    // The scene is made anew every frame; its acceleration structure reuses the previous frame's for
-    // the geometry that does not move (Scene::first_moving_triangle, accel/accel.h).
-    auto scene = std::make_shared<const Scene>(animation.at_frame(frame));
-    std::vector<std::string> warnings;
-    validate_scene(*scene, &warnings);  // before Embree sees the frame's values (the session reports the warnings)
-    auto accel = std::make_shared<const Accel>(*scene, previous.get());
-    result.scene_seconds = seconds_since(t0);
-    result.static_geometry_reused = accel->reused_static_part();
-    previous = accel;
-    if (!session) {
-      session = std::make_unique<RenderSession>(scene, accel, config);
-      if (on_session) on_session(*session);
+    // The scene is made anew every frame; the session validates it and builds its acceleration
+    // structure, reusing the previous frame's for what does not move (accel/accel.h).
+    try {
+      auto scene = std::make_shared<const Scene>(animation.at_frame(frame));
+      if (!session) {
+        session = std::make_unique<RenderSession>(scene, nullptr, config);
+        if (on_session) on_session(*session);
+      }
+      session->begin_frame(scene, nullptr, frame);
+    } catch (const Error& e) {  // say which frame: the ones before were fine
+      throw Error(fmt::format("frame {} ({:g} s): {}", frame, animation.seconds_of(frame), e.what()));
     }
-    session->begin_frame(scene, accel, frame);
+    result.scene_seconds = seconds_since(t0);
+    result.static_geometry_reused = session->accel().reused_static_part();
+    result.scene_warnings = session->scene_warnings();
     t0 = std::chrono::steady_clock::now();
     const RunResult run = session->run(RunLimit::for_passes(passes));
     result.render_seconds = seconds_since(t0);

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "pathspace/scene/animation.h"
 #include "pathspace/session/render_session.h"
@@ -21,6 +23,7 @@ struct FrameResult {
   RenderSnapshot snapshot;     // the frame's image, variance and statistics (the filter's over all frames so far)
   double scene_seconds = 0.0;  // building the frame's scene and its acceleration structure
   bool static_geometry_reused = false;  // the acceleration structure of what does not move came from the previous frame
+  std::vector<std::string> scene_warnings;  // of the frame's scene validation (RenderSession::scene_warnings)
   double render_seconds = 0.0;
 };
 

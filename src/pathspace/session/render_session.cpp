@@ -44,10 +44,12 @@ std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& a
   return integrator_registry().at(config.integrator).create(context, config.settings);
 }
 
-// Validates the scene before Embree sees any of its values, then builds its accel unless given one.
-std::shared_ptr<const Accel> validated_accel(const Scene& scene, std::shared_ptr<const Accel> accel, std::vector<std::string>* warnings) {
+// Validates the scene before Embree sees any of its values, then builds its accel unless given one
+// (reusing what does not move from `previous`, the previous frame's).
+std::shared_ptr<const Accel> validated_accel(const Scene& scene, std::shared_ptr<const Accel> accel, std::vector<std::string>* warnings,
+                                             const Accel* previous = nullptr) {
   validate_scene(scene, warnings);
-  return accel ? std::move(accel) : std::make_shared<const Accel>(scene);
+  return accel ? std::move(accel) : std::make_shared<const Accel>(scene, previous);
 }
 
 }  // namespace
@@ -125,8 +127,13 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   if (scene->camera.width != int(film_.width()) || scene->camera.height != int(film_.height()))
     throw Error("frame " + std::to_string(frame) + " is " + std::to_string(scene->camera.width) + "x" + std::to_string(scene->camera.height) +
                 ", the animation's first frame " + std::to_string(film_.width()) + "x" + std::to_string(film_.height()));
-  std::vector<std::string> warnings;
-  std::shared_ptr<const Accel> next_accel = validated_accel(*scene, std::move(accel), &warnings);
+  std::vector<std::string> warnings = scene_warnings_;
+  std::shared_ptr<const Accel> next_accel = accel_;
+  // The session's own scene (an animation's first frame) was validated and built by the constructor.
+  if (scene != scene_ || accel) {
+    warnings.clear();
+    next_accel = validated_accel(*scene, std::move(accel), &warnings, accel_.get());
+  }
   RenderConfig frame_config = config_;
   frame_config.seed = frame_seed(config_.seed, frame);
   // The new integrator takes the filter over before the old one (and its scene) goes.

@@ -121,7 +121,9 @@ class RenderSession {
 
   // Starts frame `frame` of an animation with this scene (same image size): a new film and pass
   // count, a new integrator seeded with frame_seed(seed, frame), and the path space filter carried
-  // over with its table (Integrator::carried_filter; 2021 paper sec. 3.4). A null accel is built.
+  // over with its table (Integrator::carried_filter; 2021 paper sec. 3.4). The scene is validated
+  // (scene_warnings()); a null accel is built, reusing the part of the previous frame's that does not
+  // move (accel/accel.h), or kept when the scene is the session's own.
   // Between runs. A session that began a frame cannot save its state (checkpoints hold one frame).
   void begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame);
   uint64_t frame() const;
