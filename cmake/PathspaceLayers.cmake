@@ -27,7 +27,7 @@ set(PATHSPACE_LAYER_accel_BELOW         scene)
 # io is a sibling of accel, integrators and session: neither side includes the other.
 set(PATHSPACE_LAYER_io_FOLDERS          io)
 set(PATHSPACE_LAYER_io_BELOW            scene)
-set(PATHSPACE_LAYER_integrators_FOLDERS filters integrators)
+set(PATHSPACE_LAYER_integrators_FOLDERS filters integrators gpu)
 set(PATHSPACE_LAYER_integrators_BELOW   accel)
 set(PATHSPACE_LAYER_session_FOLDERS     session)
 set(PATHSPACE_LAYER_session_BELOW       integrators)
