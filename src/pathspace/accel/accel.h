@@ -1,5 +1,6 @@
 // The ray-casting contract every integrator uses on the CPU: nearest hit and any-hit (shadow) queries
-// over a finalised Scene. The implementation (embree_accel.cpp) is the project's only Embree client.
+// over a finalised Scene. The implementation (embree_accel.cpp) is the project's only user of
+// Embree's ray queries (bvh_build.cpp uses its BVH builder for the device tracer, bvh_tracer.h).
 // Accel satisfies the "Tracer" concept the PS_HD kernels are templated on (intersect / occluded).
 #pragma once
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/base/error.h"
-#include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
@@ -194,13 +194,27 @@ uint64_t static_hash(const Scene& scene, uint32_t triangles, uint32_t spheres) {
   }
   return h;
 }
+
+// What Scene::view() sets of the fields surface_hit_fill.h reads; Scene::finalize pads the vertex
+// attributes to one per position, only then are they used.
+SceneView geometry_view(const Scene& scene) {
+  SceneView v;
+  v.positions = scene.positions.data();
+  v.uvs = !scene.uvs.empty() && scene.uvs.size() == scene.positions.size() ? scene.uvs.data() : nullptr;
+  v.normals = !scene.normals.empty() && scene.normals.size() == scene.positions.size() ? scene.normals.data() : nullptr;
+  v.triangles = scene.triangles.data();
+  v.num_triangles = uint32_t(scene.triangles.size());
+  v.spheres = scene.spheres.data();
+  v.num_spheres = uint32_t(scene.spheres.size());
+  v.num_textures = uint32_t(scene.textures.size());  // Scene::view() has one TextureView per texture
+  return v;
+}
 }  // namespace
 
 struct Accel::Impl {
-  const Scene* scene = nullptr;
-  const Point2* uvs = nullptr;   // per vertex, or nullptr
-  const Vec3* normals = nullptr; // per vertex, or nullptr
-  bool textured = false;         // uvs are only computed for scenes with textures (atan2/acos on spheres)
+  // The scene's geometry as accel/surface_hit_fill.h reads it (positions, uvs, normals, triangles,
+  // spheres, num_textures); the rest of the view is not set (Scene::view() needs a finalised scene).
+  SceneView geometry;
   std::shared_ptr<SharedDevice> device;
   RTCScene rtc_scene = nullptr;  // the whole scene, or the top level of the two parts
   // Two levels (moving parts): instance 0 is the static part, instance 1 the moving part, whose
@@ -217,44 +231,14 @@ struct Accel::Impl {
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     const bool moving = rh.hit.instID[0] == 1;
     const uint32_t prim = rh.hit.primID + (moving ? (rh.hit.geomID == kTriangleGeometry ? moving_triangle_offset : moving_sphere_offset) : 0);
-    hit->t = rh.ray.tfar;
-    hit->prim = prim;
-    if (rh.hit.geomID == kTriangleGeometry) {
-      const Triangle& tri = scene->triangles[prim];
-      const Vec3 &p0 = scene->positions[tri.v[0]], &p1 = scene->positions[tri.v[1]], &p2 = scene->positions[tri.v[2]];
-      const float u = rh.hit.u, v = rh.hit.v;
-      hit->p = p0 * (1.f - u - v) + p1 * u + p2 * v;  // barycentric: more precise than o + t d
-      hit->ng = triangle_normal(p0, p1, p2);
-      hit->u = u;
-      hit->v = v;
-      hit->uv = textured ? triangle_uv(tri, uvs, u, v) : Point2{};
-      hit->ns = triangle_shading_normal(tri, normals, u, v, hit->ng);
-      hit->kind = ShapeKind::triangle;
-      hit->material = tri.material;
-      hit->light = tri.light;
-    } else {
-      const Sphere& s = scene->spheres[prim];
-      const Vec3 p = ray.at(rh.ray.tfar);
-      const Vec3 radial = normalize(p - s.center);
-      hit->p = s.center + radial * s.radius;  // re-project onto the surface
-      hit->ng = s.inward_normals ? -radial : radial;
-      hit->u = hit->v = 0.f;
-      hit->uv = textured ? sphere_uv(s, hit->p) : Point2{};
-      hit->ns = hit->ng;
-      hit->kind = ShapeKind::sphere;
-      hit->material = s.material;
-      hit->light = s.light;
-    }
+    const ShapeKind kind = rh.hit.geomID == kTriangleGeometry ? ShapeKind::triangle : ShapeKind::sphere;
+    fill_surface_hit(geometry, kind, prim, rh.ray.tfar, rh.hit.u, rh.hit.v, ray, hit);
     return true;
   }
 };
 
 Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique<Impl>()) {
-  impl_->scene = &scene;
-  // Scene::finalize pads the vertex attributes to one per position; only then are they used.
-  if (!scene.uvs.empty() && scene.uvs.size() == scene.positions.size()) impl_->uvs = scene.uvs.data();
-  if (!scene.normals.empty() && scene.normals.size() == scene.positions.size()) impl_->normals = scene.normals.data();
-  impl_->textured = !scene.textures.empty();
+  impl_->geometry = geometry_view(scene);
   const uint32_t triangles = uint32_t(scene.triangles.size()), spheres = uint32_t(scene.spheres.size());
   // Frames of an animation (a previous frame given) are built in two levels even when nothing moves
   // (a camera moving through a still scene): their static part is then all of it, reused as it is.

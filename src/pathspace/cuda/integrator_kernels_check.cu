@@ -4,6 +4,7 @@
 // with splats, bidirectional path tracing, SPPM's eye pass, photon pass and deposit, PCLT's eye and
 // light passes) with a trivial device tracer, so code that breaks the device-safe subset fails the
 // build early. Nothing here runs; no GPU is needed. The lower layers: layers_compile_check.cu.
+#include "pathspace/accel/bvh_tracer.h"
 #include "pathspace/integrators/bpt/bpt_kernel.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/integrators/common/camera_sample.h"
@@ -51,6 +52,15 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Visibilit
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample, probes, i % 2 == 0, &caustics);
   out[i] += sample.value();
   trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, &counters, &photons[i]);
+}
+
+// Path tracing through the BVH tracer, as a CUDA backend calls it.
+__global__ void pt_bvh_compile_check(SceneView scene, BvhView bvh, PtSettings settings, Rgb* out, uint32_t n) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  PathCounters counters;
+  const Sampler sampler(0, i, 0);
+  out[i] = pt_trace_path(scene, BvhTracer{scene, bvh}, sampler, sample_camera_ray(scene.camera, sampler, i), settings, &counters);
 }
 
 __global__ void lt_compile_check(SceneView scene, LtSettings settings, SplatFilmView film, uint32_t n) {

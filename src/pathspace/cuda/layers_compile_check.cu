@@ -52,6 +52,9 @@
 #include "pathspace/film/tonemap.h"
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/accel/bvh_tracer.h"
+#include "pathspace/accel/bvh_view.h"
+#include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/filters/vertex_selection.h"
 
@@ -154,6 +157,17 @@ __global__ void hash_grid_compile_check(HashGridView grid, StochasticHashMapView
   grid.for_each_in_radius(points[i], radius, [&](const GridRecord& rec, float d2) { sum += d2 + float(rec.payload); });
   stochastic.for_each_in_radius(points[i], radius, [&](const StochasticSlot& s, float d2) { sum += d2 * float(s.count); });
   out[i] = sum;
+}
+
+// The device tracer over a flat BVH (Aila-Laine traversal, watertight triangles) and the hit filling
+// it shares with the Embree backend.
+__global__ void bvh_tracer_compile_check(SceneView scene, BvhView bvh, const Ray* rays, SurfaceHit* hits, bool* blocked,
+                                         uint32_t n) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  const BvhTracer tracer{scene, bvh};
+  if (!tracer.intersect(rays[i], &hits[i])) fill_sphere_hit(scene, 0, 1.f, rays[i], &hits[i]);
+  blocked[i] = tracer.occluded(rays[i]);
 }
 
 // Fixed-point splats of light paths and the path records a filter receives.
