@@ -10,6 +10,8 @@
 
 
 #include "pathspace/base/error.h"
+#include "pathspace/filters/hashed_filter_keys.h"
+#include "pathspace/filters/hashed_filter_steps.h"
 #include "pathspace/filters/local_voxel_cache.h"
 #include "pathspace/hashing/voxel_key_batch.h"
 #include "pathspace/parallel/parallel_for.h"
@@ -19,7 +21,7 @@ namespace pathspace {
 namespace {
 
 constexpr size_t kGrain = 2048;
-constexpr int32_t kNotAccumulated = -2;  // contribution not representable (NaN, negative, huge)
+constexpr int32_t kNotAccumulated = kSlotNotAccumulated;  // contribution not representable (NaN, negative, huge)
 
 double milliseconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -204,27 +206,14 @@ void HashedFilter::reset_stats() {
   stats_ = fresh;
 }
 
-namespace {
-// Jitter is a pure function of (seed, pass, record slot): identical for any thread count.
-uint64_t pass_jitter_hash(uint64_t seed, uint32_t pass) { return hash_combine(mix64(seed ^ 0x4a17e5ull), pass); }
-}  // namespace
-
 VoxelKey HashedFilter::key_of(const VertexBuffer& b, size_t i, uint64_t seed, uint32_t pass) const {
   return key_for_pass(b, i, pass_jitter_hash(seed, pass));
 }
 
-namespace {
-VoxelKeyInput key_input(const VertexBuffer& b, size_t i) {
-  return {b.position[i],          b.geometric_normal[i], b.shading_normal[i], b.incident[i], b.previous_position[i],
-          b.prefix_distance[i],   b.roughness[i],        b.layer[i],          b.selected[i]};
-}
-uint64_t jitter_seed(uint64_t pass_hash, size_t i) { return pass_hash + uint64_t(i) * kGoldenGamma; }
-}  // namespace
-
-// The scalar reference of the batched keys used by accumulate() (voxel_key_batch.h).
+// The scalar reference of the batched keys used by accumulate() (voxel_key_batch.h), shared with the
+// GPU (hashed_filter_keys.h).
 VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pass_hash) const {
-  const uint64_t h = mix64(jitter_seed(pass_hash, i));
-  return make_voxel_key(settings_.key, key_input(b, i), bits_to_unit_float(h), bits_to_unit_float(h << 24));
+  return pathspace::key_for_pass(settings_.key, b.view(), i, pass_hash);
 }
 
 void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
@@ -344,6 +333,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     size_t path = begin;
     int rec = 0;
     const int records_per_path = b.records_per_path();
+    const VertexBufferView bv = b.view();
     auto fill_block = [&] {
       block_n = block_next = 0;
       // Without a branch per slot: every slot is written to the next lane, which only advances
@@ -351,7 +341,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       // predictable pattern, and a mispredicted branch cost more than the copy).
       while (block_n < kVoxelKeyBatchSize && path < end) {
         const size_t i = b.slot(path, rec);
-        key_batch.set_input(block_n, key_input(b, i), jitter_seed(pass_hash, i));
+        key_batch.set_input(block_n, key_input(bv, i), jitter_seed(pass_hash, i));
         block_slot[block_n] = i;
         block_n += rec < b.count[path] ? 1 : 0;
         if (++rec == records_per_path) {
@@ -415,38 +405,18 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   stats_.probes_max = std::max(stats_.probes_max, counters.probes_max.load());
 }
 
-Rgb HashedFilter::neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const {
-  const VoxelHashTableView view = table_.view();
-  uint64_t sum[3] = {own.sum[0], own.sum[1], own.sum[2]};
-  uint64_t count = own.count;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (dx == 0 && dy == 0 && dz == 0) continue;
-        VoxelKey n = key;
-        n.cell[0] += dx;
-        n.cell[1] += dy;
-        n.cell[2] += dz;
-        ++*lookups;
-        const ProbeResult r = view.find(hash_voxel_key(n, settings_.key.normal));
-        if (r.slot < 0) continue;
-        const VoxelCell& c = view.cells[r.slot];
-        for (int ch = 0; ch < 3; ++ch) sum[ch] += c.sum[ch];
-        count += c.count;
-      }
-  return from_fixed_point(sum, count);
-}
-
 void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
-  const uint64_t min_count = uint64_t(std::max(0, settings_.min_count));
+  const HashedStepSettings steps = step_settings(settings_);
+  const uint64_t min_count = steps.min_count;
   const bool keep_counts = settings_.debug_images;
   std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0}, blended_total{0};
   std::atomic<uint64_t> alpha_total{0};  // fixed point 2^-32: the sum does not depend on the thread count
   const TemporalHistory* history = history_.get();
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
-    uint64_t low = 0, neighbour_lookups = 0, multi = 0, blended = 0, alpha_sum = 0;
+    LookupCounters low_counters;
+    uint64_t blended = 0, alpha_sum = 0;
     for (size_t path = begin; path < end; ++path) {
       for (int r = 0; r < b.count[path]; ++r) {
         const size_t i = b.slot(path, r);
@@ -467,24 +437,15 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         } else {
           average = from_fixed_point(cell.sum, cell.count);
         }
-        if (cell.count < min_count) {
-          ++low;
-          if (settings_.neighbour_search) {
-            average = neighbourhood_average(keys_[i], cell, &neighbour_lookups);
-          } else if (coarse_table_ && coarse_slots_[i] >= 0) {
-            const VoxelCell& c = coarse.cells[coarse_slots_[i]];
-            if (c.count > cell.count) {
-              average = from_fixed_point(c.sum, c.count);
-              ++multi;
-            }
-          }
-        }
+        if (cell.count < min_count)  // sec. 3.3, the steps the GPU runs too (hashed_filter_steps.h)
+          average = low_count_average(steps, view, coarse, cell, average, settings_.neighbour_search ? keys_[i] : VoxelKey{},
+                                      coarse_table_ ? coarse_slots_[i] : kSlotProbeFailed, &low_counters);
         (*filtered)[i] = average;
       }
     }
-    low_total += low;
-    neighbour_total += neighbour_lookups;
-    multi_total += multi;
+    low_total += low_counters.low_count;
+    neighbour_total += low_counters.neighbour_lookups;
+    multi_total += low_counters.multi_level_used;
     blended_total += blended;
     alpha_total += alpha_sum;
   });

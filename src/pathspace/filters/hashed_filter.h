@@ -77,7 +77,6 @@ class HashedFilter final : public PathSpaceFilter {
   bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
-  Rgb neighbourhood_average(const VoxelKey& key, const VoxelCell& own, uint64_t* lookups) const;
   // Hybrid (sec. 3.4.1): the re-traced paths' changes into their cells, and this frame's values of
   // the paths the next frame re-traces.
   void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);

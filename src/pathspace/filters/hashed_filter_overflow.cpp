@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/overflow_settling.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -18,6 +19,7 @@ namespace pathspace {
 namespace {
 constexpr uint64_t kWindow = kFingerprintsPerLine;
 }  // namespace
+// The decision itself is filters/overflow_settling.cpp, shared with the GPU filter.
 
 void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
   const VoxelHashTableView view = table_.view();
@@ -36,28 +38,11 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
   if (failed.empty()) return;
   // A cell is new this pass when the table is cleared every pass, or when it has no history yet.
   const auto is_new = [&](uint64_t c) { return !history_ || !(history_->at(c).weight > 0.f); };
-  std::vector<std::pair<uint64_t, uint32_t>> assigned;  // (cell, winning key) for cells that change hands
-  for (auto& [window, keys] : failed_keys) {
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    std::vector<std::pair<uint32_t, uint64_t>> holders;  // (key, cell) of the window's new cells
-    for (uint64_t c = window * kWindow; c < (window + 1) * kWindow; ++c)
-      if (view.fingerprints[c] != kEmptyFingerprint && is_new(c)) holders.push_back({view.fingerprints[c] & view.key_mask, c});
-    // The winners: the smallest keys among holders and failed keys, as many as there are new cells.
-    std::vector<uint32_t> all = keys;
-    for (const auto& h : holders) all.push_back(h.first);
-    std::sort(all.begin(), all.end());
-    all.resize(std::min(all.size(), holders.size()));
-    std::vector<uint64_t> freed;
-    for (const auto& [key, cell] : holders)
-      if (!std::binary_search(all.begin(), all.end(), key)) freed.push_back(cell);
-    size_t next = 0;
-    for (const uint32_t key : keys)
-      if (std::binary_search(all.begin(), all.end(), key) && next < freed.size()) assigned.push_back({freed[next++], key});
-  }
+  const OverflowDecision d = decide_overflows(std::move(failed_keys), view.key_mask,
+                                              [&](uint64_t c) { return view.fingerprints[c]; }, is_new);
+  const auto& assigned = d.assigned;
+  const auto& cell_of_key = d.cell_of_key;
   if (assigned.empty()) return;
-  std::map<uint32_t, uint64_t> cell_of_key;
-  for (const auto& [cell, key] : assigned) cell_of_key[key] = cell;
   for (const auto& [cell, key] : assigned) {
     view.fingerprints[cell] = key;
     view.cells[cell] = VoxelCell{};

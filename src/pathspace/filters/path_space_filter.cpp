@@ -2,6 +2,7 @@
 
 #include <atomic>
 
+#include "pathspace/filters/filter_resolve.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -13,22 +14,15 @@ void PassthroughFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, s
 void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,
                            PathCounters* counters, const std::vector<uint8_t>* found) {
   std::atomic<uint64_t> dropped{0};
+  const VertexBufferView view = buffer.view();
+  const uint8_t* found_data = found ? found->data() : nullptr;
   parallel_for(buffer.paths(), 1024, [&](size_t begin, size_t end) {
     uint64_t local_dropped = 0;
     for (size_t path = begin; path < end; ++path) {
-      Rgb v = buffer.prefix[path];
-      bool complete = true;
-      for (int r = 0; r < buffer.count[path]; ++r) {
-        const size_t i = buffer.slot(path, r);
-        v += buffer.throughput[i] * filtered[i];
-        if (found && !(*found)[i]) complete = false;
-      }
-      if (!complete) continue;
-      if (!all_finite(v)) {
-        ++local_dropped;
-        v = Rgb();
-      }
-      film.add_sample(buffer.pixel[path], v);
+      const ResolvedPath r = resolved_path_value(view, path, filtered.data(), found_data);
+      if (!r.complete) continue;
+      local_dropped += r.dropped ? 1 : 0;
+      film.add_sample(buffer.pixel[path], r.value);
     }
     dropped += local_dropped;
   });

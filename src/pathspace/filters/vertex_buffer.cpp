@@ -32,29 +32,28 @@ size_t VertexBuffer::bytes_per_slot() {
 
 size_t VertexBuffer::total_records() const { return std::accumulate(count.begin(), count.end(), size_t(0)); }
 
-void VertexBuffer::store(size_t path, uint32_t pixel_index, const PathSample& s) {
-  prefix[path] = s.prefix;
-  pixel[path] = pixel_index;
-  const int n = min_int(s.count, records_per_path_);
-  count[path] = uint8_t(n);
-  for (int r = 0; r < n; ++r) {
-    const FilterVertex& v = s.records[r];
-    const size_t i = slot(path, r);
-    position[i] = v.p;
-    geometric_normal[i] = v.ng;
-    shading_normal[i] = v.ns;
-    incident[i] = v.wo;
-    previous_position[i] = v.prev_p;
-    prefix_distance[i] = v.prefix_distance;
-    roughness[i] = v.roughness;
-    throughput[i] = v.throughput;
-    contribution[i] = v.contribution;
-    layer[i] = v.layer;
-    segments[i] = v.segments;
-    selected[i] = v.selected;
-    visible_lights[i] = v.visible_lights;
-    open_distance[i] = v.open_distance;
-  }
+VertexBufferView VertexBuffer::view() {
+  VertexBufferView v;
+  v.paths = paths();
+  v.records_per_path = records_per_path_;
+  v.prefix = prefix.data();
+  v.pixel = pixel.data();
+  v.count = count.data();
+  v.position = position.data();
+  v.geometric_normal = geometric_normal.data();
+  v.shading_normal = shading_normal.data();
+  v.incident = incident.data();
+  v.previous_position = previous_position.data();
+  v.prefix_distance = prefix_distance.data();
+  v.roughness = roughness.data();
+  v.throughput = throughput.data();
+  v.contribution = contribution.data();
+  v.layer = layer.data();
+  v.segments = segments.data();
+  v.selected = selected.data();
+  v.visible_lights = visible_lights.data();
+  v.open_distance = open_distance.data();
+  return v;
 }
 
 FilterVertex VertexBuffer::record(size_t i) const {

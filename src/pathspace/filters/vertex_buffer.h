@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pathspace/filters/path_sample.h"
+#include "pathspace/filters/vertex_buffer_view.h"
 
 namespace pathspace {
 
@@ -21,8 +22,13 @@ class VertexBuffer {
   size_t slot(size_t path, int record) const { return path * size_t(records_per_path_) + size_t(record); }
   size_t total_records() const;  // valid records (sum of count)
 
-  // Stores one path's sample (drops records beyond records_per_path; the caller sizes it right).
-  void store(size_t path, uint32_t pixel_index, const PathSample& s);
+  // Stores one path's sample (drops records beyond records_per_path; the caller sizes it right):
+  // VertexBufferView::store, the one implementation the GPU uses too.
+  void store(size_t path, uint32_t pixel_index, const PathSample& s) { view().store(path, pixel_index, s); }
+  // Raw pointers to the arrays (valid until the next resize). The const form is for readers: the
+  // view's pointers are not const so that one type serves writers and readers on both sides.
+  VertexBufferView view();
+  VertexBufferView view() const { return const_cast<VertexBuffer*>(this)->view(); }
   // The record in slot i as the kernel produced it.
   FilterVertex record(size_t i) const;
 
