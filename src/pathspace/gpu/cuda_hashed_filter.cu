@@ -1,0 +1,435 @@
+#include "pathspace/gpu/cuda_hashed_filter.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pathspace/filters/overflow_settling.h"
+
+namespace pathspace::gpu {
+
+namespace {
+
+constexpr int kBlock = 256;
+constexpr unsigned kFullWarp = 0xffffffffu;
+
+// Device counters of one pass, summed per warp before one atomic each.
+enum Counter : int {
+  kVertices,
+  kNotAccumulated,
+  kInsertions,
+  kProbes,
+  kProbesMax,
+  kFailures,
+  kLowCount,
+  kNeighbourLookups,
+  kMultiLevelUsed,
+  kFailedListed,
+  kLost,
+  kWon,
+  kOccupied,
+  kCounters
+};
+
+// Per-pass counters are summed per warp, then per block in shared memory, and each block adds its
+// sums to one of kCopies copies in global memory: one atomic per warp on a single global address
+// serialised there and cost more than the filter itself (tens of thousands of warps per pass).
+constexpr int kCopies = 16;
+
+__device__ int lane_id() { return int(threadIdx.x & 31u); }
+
+// Zeroes the block's counters; every thread of the block calls it.
+__device__ void block_counters_init(unsigned* block) {
+  for (int k = int(threadIdx.x); k < kCounters; k += int(blockDim.x)) block[k] = 0;
+  __syncthreads();
+}
+// Adds the block's counters to the global copies; every thread of the block calls it.
+__device__ void block_counters_flush(const unsigned* block, unsigned long long* counters) {
+  __syncthreads();
+  for (int k = int(threadIdx.x); k < kCounters; k += int(blockDim.x)) {
+    if (block[k] == 0) continue;
+    unsigned long long* c = &counters[(blockIdx.x % kCopies) * kCounters + k];
+    if (k == kProbesMax) {
+      atomicMax(c, (unsigned long long)block[k]);
+    } else {
+      atomicAdd(c, (unsigned long long)block[k]);
+    }
+  }
+}
+// Adds the values of the lanes of `mask` to the block's counter (the lowest lane of mask adds).
+__device__ void warp_add(unsigned mask, unsigned* counter, unsigned value) {
+  const unsigned total = __reduce_add_sync(mask, value);
+  if (lane_id() == __ffs(mask) - 1 && total != 0) atomicAdd(counter, total);
+}
+__device__ void warp_max(unsigned mask, unsigned* counter, unsigned value) {
+  const unsigned m = __reduce_max_sync(mask, value);
+  if (lane_id() == __ffs(mask) - 1 && m != 0) atomicMax(counter, m);
+}
+
+__device__ size_t thread_index() { return size_t(blockIdx.x) * blockDim.x + threadIdx.x; }
+
+// Whether slot i holds a record of its path.
+__device__ bool valid_slot(const VertexBufferView& b, size_t i) {
+  return i < b.slots() && int(i % size_t(b.records_per_path)) < int(b.count[i / size_t(b.records_per_path)]);
+}
+
+// Warp aggregation (sec. 4: neighbouring pixels' primary hits mostly share a voxel): the lanes of
+// `mask` with the same hash form a group; its leader inserts once and adds the group's summed
+// fixed-point values and count, the others take the leader's slot. Integer sums: the cell is the
+// same as with one add per vertex.
+struct AggregatedInsert {
+  ProbeResult result;
+  bool leader = false;
+};
+
+__device__ AggregatedInsert aggregated_insert(unsigned mask, const VoxelHashTableView& t, const VoxelHash& h,
+                                              const uint64_t fixed[3]) {
+  const unsigned group = __match_any_sync(mask, (unsigned long long)h.index) & __match_any_sync(mask, h.fingerprint);
+  const int leader = __ffs(group) - 1;
+  uint64_t sum[3] = {fixed[0], fixed[1], fixed[2]};
+  // Uniform across the warp: skip the exchange when every group is a single lane (incoherent bounces).
+  if (!__all_sync(mask, group == (1u << lane_id()))) {
+    sum[0] = sum[1] = sum[2] = 0;
+    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+      const int l = __ffs(rest) - 1;
+      const unsigned long long a = __shfl_sync(mask, (unsigned long long)fixed[0], l);
+      const unsigned long long b = __shfl_sync(mask, (unsigned long long)fixed[1], l);
+      const unsigned long long c = __shfl_sync(mask, (unsigned long long)fixed[2], l);
+      if ((group >> l) & 1u) sum[0] += a, sum[1] += b, sum[2] += c;
+    }
+  }
+  AggregatedInsert out;
+  out.leader = lane_id() == leader;
+  if (out.leader) out.result = insert_and_add(t, h, sum, uint64_t(__popc(group)));
+  out.result.slot = __shfl_sync(mask, (long long)out.result.slot, leader);
+  return out;
+}
+
+// Keys and accumulation, one thread per record slot (sec. 3.1-3.2; 3.3.2 with multi-level).
+__global__ void accumulate_kernel(HashedStepSettings s, VertexBufferView b, uint64_t pass_hash, VoxelHashTableView table,
+                                  VoxelHashTableView coarse, int32_t* slots, int32_t* coarse_slots,
+                                  unsigned long long* counters) {
+  __shared__ unsigned block[kCounters];
+  block_counters_init(block);
+  const size_t i = thread_index();
+  const bool valid = valid_slot(b, i);
+  PreparedVertex v;
+  if (valid) v = prepare_vertex(s, b, i, pass_hash);
+  const bool accumulated = valid && v.accumulated;
+  if (valid && !accumulated) slots[i] = kSlotNotAccumulated;
+  const unsigned valid_mask = __ballot_sync(kFullWarp, valid);
+  const unsigned mask = __ballot_sync(kFullWarp, accumulated);
+  if (lane_id() == 0) {
+    if (valid_mask) atomicAdd(&block[kVertices], unsigned(__popc(valid_mask)));
+    if (valid_mask & ~mask) atomicAdd(&block[kNotAccumulated], unsigned(__popc(valid_mask & ~mask)));
+  }
+  if (accumulated) {
+    if (s.multi_level) coarse_slots[i] = int32_t(aggregated_insert(mask, coarse, coarse_hash(s, v.key), v.fixed).result.slot);
+    const AggregatedInsert a = aggregated_insert(mask, table, v.hash, v.fixed);
+    slots[i] = int32_t(a.result.slot);
+    warp_add(mask, &block[kInsertions], a.leader ? 1u : 0u);
+    warp_add(mask, &block[kProbes], a.leader ? unsigned(a.result.probes) : 0u);
+    warp_max(mask, &block[kProbesMax], a.leader ? unsigned(a.result.probes) : 0u);
+    warp_add(mask, &block[kFailures], a.result.slot < 0 ? 1u : 0u);
+  }
+  block_counters_flush(block, counters);
+}
+
+// Sec. 3.3: each valid slot's filtered contribution.
+__global__ void lookup_kernel(HashedStepSettings s, VertexBufferView b, uint64_t pass_hash, VoxelHashTableView table,
+                              VoxelHashTableView coarse, const int32_t* slots, const int32_t* coarse_slots,
+                              Rgb* filtered, unsigned long long* counters) {
+  __shared__ unsigned block[kCounters];
+  block_counters_init(block);
+  const size_t i = thread_index();
+  const bool valid = valid_slot(b, i);
+  const unsigned mask = __ballot_sync(kFullWarp, valid);
+  if (valid) {
+    LookupCounters c;
+    filtered[i] = lookup_vertex(s, b, i, pass_hash, table, coarse, slots[i], s.multi_level ? coarse_slots[i] : kSlotProbeFailed, &c);
+    warp_add(mask, &block[kLowCount], unsigned(c.low_count));
+    warp_add(mask, &block[kNeighbourLookups], unsigned(c.neighbour_lookups));
+    warp_add(mask, &block[kMultiLevelUsed], unsigned(c.multi_level_used));
+  }
+  block_counters_flush(block, counters);
+}
+
+__global__ void occupancy_kernel(const uint32_t* fingerprints, uint64_t cells, unsigned long long* counters) {
+  __shared__ unsigned block[kCounters];
+  block_counters_init(block);
+  const size_t c = thread_index();
+  const unsigned occupied = __ballot_sync(kFullWarp, c < cells && fingerprints[c] != kEmptyFingerprint);
+  if (lane_id() == 0 && occupied) atomicAdd(&block[kOccupied], unsigned(__popc(occupied)));
+  block_counters_flush(block, counters);
+}
+
+// Settling (hashed_filter_overflow.cpp): the failed vertices' windows and stored fingerprints.
+struct FailedVertex {
+  unsigned long long slot, window;
+  uint32_t key;
+};
+
+__global__ void list_failed_kernel(HashedStepSettings s, VertexBufferView b, uint64_t pass_hash, VoxelHashTableView table,
+                                   const int32_t* slots, FailedVertex* out, unsigned long long capacity,
+                                   unsigned long long* counters) {
+  const size_t i = thread_index();
+  if (!valid_slot(b, i) || slots[i] != kSlotProbeFailed) return;
+  const VoxelHash h = hash_voxel_key(key_for_pass(s.key, b, i, pass_hash), s.key.normal);
+  const unsigned long long k = atomicAdd(&counters[kFailedListed], 1ull);
+  if (k < capacity) out[k] = {i, (h.index & table.mask) / kFingerprintsPerLine, table.stored_fingerprint(h)};
+}
+
+__global__ void reassign_kernel(VoxelHashTableView table, const unsigned long long* cells, const uint32_t* keys, size_t n,
+                                uint8_t* reassigned) {
+  const size_t k = thread_index();
+  if (k >= n) return;
+  table.fingerprints[cells[k]] = keys[k];
+  table.cells[cells[k]] = VoxelCell{};
+  reassigned[cells[k]] = 1;
+}
+
+// The losers' vertices fall back to their own contributions ...
+__global__ void drop_losers_kernel(VertexBufferView b, int32_t* slots, const uint8_t* reassigned, unsigned long long* counters) {
+  const size_t i = thread_index();
+  const bool lost = valid_slot(b, i) && slots[i] >= 0 && reassigned[slots[i]];
+  if (lost) slots[i] = kSlotProbeFailed;
+  const unsigned m = __ballot_sync(kFullWarp, lost);
+  if (lane_id() == 0 && m) atomicAdd(&counters[kLost], (unsigned long long)__popc(m));
+}
+
+// ... and the winners' vertices fill their cells (keys sorted: binary search).
+__global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table, const FailedVertex* failed, size_t n,
+                                   const uint32_t* keys, const unsigned long long* cells, size_t winners, int32_t* slots,
+                                   unsigned long long* counters) {
+  const size_t k = thread_index();
+  if (k >= n) return;
+  const FailedVertex f = failed[k];
+  size_t lo = 0, hi = winners;
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    if (keys[mid] < f.key) lo = mid + 1; else hi = mid;
+  }
+  if (lo == winners || keys[lo] != f.key) return;
+  uint64_t fixed[3];
+  if (!to_fixed_point(b.contribution[f.slot], fixed)) return;  // never the case for a failure
+  add_to_cell(table, cells[lo], fixed, 1);
+  slots[f.slot] = int32_t(cells[lo]);
+  atomicAdd(&counters[kWon], 1ull);
+}
+
+unsigned blocks_for(size_t n) { return unsigned((n + kBlock - 1) / kBlock); }
+
+uint64_t table_cells(const HashedFilterSettings& s, size_t pixels) {
+  uint64_t want = uint64_t(std::max(1.0, double(s.table_factor) * double(pixels)));
+  if (want < uint64_t(kFingerprintsPerLine)) want = kFingerprintsPerLine;
+  uint64_t n = 1;
+  while (n < want) n <<= 1;
+  if (n > (uint64_t(1) << 31)) throw Error("the voxel hash table is limited to 2^31 cells");
+  return n;
+}
+
+// Events of one pass, released with it.
+struct PassEvents {
+  cudaEvent_t e[6] = {};
+  PassEvents() {
+    for (cudaEvent_t& x : e) PS_CUDA_CHECK(cudaEventCreate(&x));
+  }
+  ~PassEvents() {
+    for (cudaEvent_t x : e)
+      if (x) cudaEventDestroy(x);
+  }
+  PassEvents(const PassEvents&) = delete;
+  PassEvents& operator=(const PassEvents&) = delete;
+  static double ms(cudaEvent_t a, cudaEvent_t b) {
+    float t = 0.f;
+    PS_CUDA_CHECK(cudaEventElapsedTime(&t, a, b));
+    return double(t);
+  }
+};
+
+}  // namespace
+
+CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels)
+    : CudaHashedFilter(settings, 2.f * camera.tan_y / float(camera.height), pixels) {}
+
+CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float pixel_angle, size_t pixels)
+    : settings_(settings) {
+  // HashedFilter's checks, in its words.
+  if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
+  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
+      settings.key.direction_bins > kMaxKeyBins)
+    throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
+  if (settings.max_probes < 1) throw Error("the probe limit must be at least 1");
+  if (settings.temporal.enabled())
+    throw Error("the GPU hashed filter keeps no table across passes: --temporal is not supported with --device cuda");
+  if (settings.debug_images)
+    throw Error("the GPU hashed filter writes no debug images: --aov is not supported with --device cuda");
+  settings_.key.pixel_angle = pixel_angle;  // as HashedFilter: sec. 4, s times the projected pixel size
+  steps_ = pathspace::step_settings(settings_);
+  cells_ = table_cells(settings_, pixels);
+  fingerprints_.resize(cells_);
+  cells_buffer_.resize(cells_);
+  if (settings_.multi_level) {
+    coarse_fingerprints_.resize(cells_);
+    coarse_cells_.resize(cells_);
+  }
+  counters_.resize(size_t(kCounters) * kCopies);
+  stats_.cells = cells_;
+  stats_.table_bytes = size_t(cells_) * (sizeof(uint32_t) + sizeof(VoxelCell)) * (settings_.multi_level ? 2 : 1);
+}
+
+void CudaHashedFilter::reset_stats() {
+  CudaHashedFilterStats fresh;
+  fresh.cells = stats_.cells;
+  fresh.table_bytes = stats_.table_bytes;
+  stats_ = fresh;
+}
+
+VoxelHashTableView CudaHashedFilter::table() const {
+  VoxelHashTableView v;
+  v.fingerprints = const_cast<uint32_t*>(fingerprints_.data());
+  v.cells = const_cast<VoxelCell*>(cells_buffer_.data());
+  v.mask = cells_ - 1;
+  v.max_probes = settings_.max_probes;
+  return v;
+}
+
+VoxelHashTableView CudaHashedFilter::coarse_table() const {
+  if (!settings_.multi_level) return VoxelHashTableView{};
+  VoxelHashTableView v = table();
+  v.fingerprints = const_cast<uint32_t*>(coarse_fingerprints_.data());
+  v.cells = const_cast<VoxelCell*>(coarse_cells_.data());
+  return v;
+}
+
+// The pass's counters so far, summed over the copies (waits for the stream).
+std::vector<unsigned long long> CudaHashedFilter::read_counters(cudaStream_t stream) const {
+  std::vector<unsigned long long> copies(counters_.size()), sums(kCounters, 0);
+  PS_CUDA_CHECK(cudaMemcpyAsync(copies.data(), counters_.data(), counters_.bytes(), cudaMemcpyDeviceToHost, stream));
+  PS_CUDA_CHECK(cudaStreamSynchronize(stream));
+  for (int copy = 0; copy < kCopies; ++copy)
+    for (int k = 0; k < kCounters; ++k) {
+      const unsigned long long v = copies[size_t(copy) * kCounters + k];
+      sums[k] = k == kProbesMax ? std::max(sums[k], v) : sums[k] + v;
+    }
+  return sums;
+}
+
+void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t pass, Rgb* device_filtered,
+                              cudaStream_t stream) {
+  if (b.records_per_path < 1 && b.paths > 0) throw Error("CudaHashedFilter::filter: a vertex buffer without record slots");
+  const size_t slots = b.slots();
+  if (slots > size_t(INT32_MAX)) throw Error("CudaHashedFilter::filter: more than 2^31 record slots in one batch");
+  if (slots_.size() < slots) slots_.resize(slots);
+  if (settings_.multi_level && coarse_slots_.size() < slots) coarse_slots_.resize(slots);
+  const uint64_t pass_hash = pass_jitter_hash(seed, pass);
+  const VoxelHashTableView table = this->table(), coarse = coarse_table();
+  unsigned long long* counters = counters_.data();
+  PassEvents ev;
+
+  // Clear (one memset per array: the table is rebuilt every pass).
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[0], stream));
+  PS_CUDA_CHECK(cudaMemsetAsync(fingerprints_.data(), 0, fingerprints_.bytes(), stream));
+  PS_CUDA_CHECK(cudaMemsetAsync(cells_buffer_.data(), 0, cells_buffer_.bytes(), stream));
+  if (settings_.multi_level) {
+    PS_CUDA_CHECK(cudaMemsetAsync(coarse_fingerprints_.data(), 0, coarse_fingerprints_.bytes(), stream));
+    PS_CUDA_CHECK(cudaMemsetAsync(coarse_cells_.data(), 0, coarse_cells_.bytes(), stream));
+  }
+  PS_CUDA_CHECK(cudaMemsetAsync(counters, 0, counters_.bytes(), stream));
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[1], stream));
+
+  // Keys and accumulation.
+  if (slots > 0) {
+    accumulate_kernel<<<blocks_for(slots), kBlock, 0, stream>>>(steps_, b, pass_hash, table, coarse, slots_.data(),
+                                                                settings_.multi_level ? coarse_slots_.data() : nullptr, counters);
+    PS_CUDA_CHECK_LAUNCH("accumulate_kernel");
+  }
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[2], stream));
+  const unsigned long long failures = read_counters(stream)[kFailures];
+  // As HashedFilter: fallbacks that do not depend on timing when a window is one cache line.
+  const bool settle = failures > 0 && settings_.max_probes <= kFingerprintsPerLine;
+  if (settle) settle_overflows(b, pass_hash, stream);
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[3], stream));
+
+  // Lookup.
+  if (slots > 0) {
+    lookup_kernel<<<blocks_for(slots), kBlock, 0, stream>>>(steps_, b, pass_hash, table, coarse, slots_.data(),
+                                                            settings_.multi_level ? coarse_slots_.data() : nullptr,
+                                                            device_filtered, counters);
+    PS_CUDA_CHECK_LAUNCH("lookup_kernel");
+  }
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[4], stream));
+  occupancy_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(fingerprints_.data(), cells_, counters);
+  PS_CUDA_CHECK_LAUNCH("occupancy_kernel");
+  const std::vector<unsigned long long> c = read_counters(stream);
+
+  stats_.passes += 1;
+  stats_.vertices += c[kVertices];
+  stats_.not_accumulated += c[kNotAccumulated];
+  stats_.insertions += c[kInsertions];
+  stats_.probes_total += c[kProbes];
+  stats_.probes_max = std::max<uint64_t>(stats_.probes_max, c[kProbesMax]);
+  stats_.probe_failures += c[kFailures] + c[kLost] - c[kWon];
+  stats_.low_count += c[kLowCount];
+  stats_.neighbour_lookups += c[kNeighbourLookups];
+  stats_.multi_level_used += c[kMultiLevelUsed];
+  stats_.occupied_cells_last = c[kOccupied];
+  stats_.clear_ms_last = PassEvents::ms(ev.e[0], ev.e[1]);
+  // Without settling, the accumulation ends at its kernel (e[2]); e[3] then follows a host wait.
+  stats_.settle_ms_last = settle ? PassEvents::ms(ev.e[2], ev.e[3]) : 0.0;
+  stats_.accumulate_ms_last = PassEvents::ms(ev.e[1], ev.e[2]) + stats_.settle_ms_last;
+  stats_.lookup_ms_last = PassEvents::ms(ev.e[3], ev.e[4]);
+  stats_.clear_ms += stats_.clear_ms_last;
+  stats_.accumulate_ms += stats_.accumulate_ms_last;
+  stats_.settle_ms += stats_.settle_ms_last;
+  stats_.lookup_ms += stats_.lookup_ms_last;
+}
+
+// hashed_filter_overflow.cpp on the GPU's table: the failed vertices are listed on the device, the
+// decision is the CPU's own code (overflow_settling.cpp) on the downloaded fingerprints, and its
+// result is applied by kernels. Rare (a table too small for the pass), so plain copies are fine.
+void CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream) {
+  const VoxelHashTableView table = this->table();
+  unsigned long long* counters = counters_.data();
+  const unsigned long long failures = read_counters(stream)[kFailures];
+  DeviceBuffer<FailedVertex> failed_device{size_t(failures)};
+  list_failed_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(steps_, b, pass_hash, table, slots_.data(),
+                                                                    failed_device.data(), failures, counters);
+  PS_CUDA_CHECK_LAUNCH("list_failed_kernel");
+  PS_CUDA_CHECK(cudaStreamSynchronize(stream));
+  const std::vector<FailedVertex> failed = failed_device.download();
+  const std::vector<uint32_t> fingerprints = fingerprints_.download();
+
+  std::map<uint64_t, std::vector<uint32_t>> failed_keys;
+  for (const FailedVertex& f : failed) failed_keys[f.window].push_back(f.key);
+  const OverflowDecision d = decide_overflows(std::move(failed_keys), table.key_mask,
+                                              [&](uint64_t c) { return fingerprints[c]; }, [](uint64_t) { return true; });
+  if (d.assigned.empty()) return;  // as the CPU: nothing changes hands, the pass is not counted as settled
+
+  std::vector<unsigned long long> assigned_cells;
+  std::vector<uint32_t> assigned_keys;
+  for (const auto& [cell, key] : d.assigned) assigned_cells.push_back(cell), assigned_keys.push_back(key);
+  std::vector<uint32_t> winner_keys;  // sorted (a std::map's order), one cell each
+  std::vector<unsigned long long> winner_cells;
+  for (const auto& [key, cell] : d.cell_of_key) winner_keys.push_back(key), winner_cells.push_back(cell);
+  const DeviceBuffer<unsigned long long> assigned_cells_device(assigned_cells), winner_cells_device(winner_cells);
+  const DeviceBuffer<uint32_t> assigned_keys_device(assigned_keys), winner_keys_device(winner_keys);
+  if (reassigned_.size() != cells_) reassigned_.resize(cells_);
+  PS_CUDA_CHECK(cudaMemsetAsync(reassigned_.data(), 0, reassigned_.bytes(), stream));
+
+  reassign_kernel<<<blocks_for(assigned_cells.size()), kBlock, 0, stream>>>(
+      table, assigned_cells_device.data(), assigned_keys_device.data(), assigned_cells.size(), reassigned_.data());
+  PS_CUDA_CHECK_LAUNCH("reassign_kernel");
+  drop_losers_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(b, slots_.data(), reassigned_.data(), counters);
+  PS_CUDA_CHECK_LAUNCH("drop_losers_kernel");
+  add_winners_kernel<<<blocks_for(failed.size()), kBlock, 0, stream>>>(
+      b, table, failed_device.data(), failed.size(), winner_keys_device.data(), winner_cells_device.data(),
+      winner_keys.size(), slots_.data(), counters);
+  PS_CUDA_CHECK_LAUNCH("add_winners_kernel");
+  // The device buffers above are freed on return: wait for the kernels that read them.
+  PS_CUDA_CHECK(cudaStreamSynchronize(stream));
+  ++stats_.settled_passes;
+}
+
+}  // namespace pathspace::gpu

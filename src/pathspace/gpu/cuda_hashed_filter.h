@@ -1,0 +1,65 @@
+// CudaHashedFilter: hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1-3.3 and 4)
+// on an NVIDIA GPU, over a vertex buffer in device memory (DeviceVertexBuffer::view(), or a CUDA
+// path tracer's). Per pass: clear the table, keys + accumulation with warp aggregation, settling of
+// overflowing probe windows when any overflowed, lookup. The per-vertex steps are the CPU filter's
+// (filters/hashed_filter_steps.h) and sums are integers, so the filtered values equal HashedFilter's
+// bit for bit (docs/hashed-filter.md, "The GPU filter"). Includable from plain C++ (g++ with the
+// CUDA include path); the kernels are in cuda_hashed_filter.cu.
+#pragma once
+
+#include <cuda_runtime_api.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "pathspace/camera/perspective_camera.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed_filter_steps.h"
+#include "pathspace/filters/vertex_buffer_view.h"
+#include "pathspace/gpu/cuda_hashed_filter_stats.h"
+#include "pathspace/gpu/device_buffer.h"
+
+namespace pathspace::gpu {
+
+class CudaHashedFilter {
+ public:
+  // The table and probe limit of HashedFilter for this many pixels. Throws pathspace::Error for what
+  // the GPU filter does not do (--temporal, --aov) and for settings HashedFilter rejects.
+  CudaHashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
+  // The same with the camera's projected pixel size at distance 1 (2 tan_y / height) given directly
+  // (vertex buffer files carry it; filters/vertex_buffer_file.h).
+  CudaHashedFilter(const HashedFilterSettings& settings, float pixel_angle, size_t pixels);
+
+  // device_filtered[slot] receives the filtered contribution of every valid record slot of
+  // device_buffer (device memory, device_buffer.slots() elements). Returns when the pass is done
+  // (the statistics are read back).
+  void filter(const VertexBufferView& device_buffer, uint64_t seed, uint32_t pass, Rgb* device_filtered,
+              cudaStream_t stream = 0);
+
+  const CudaHashedFilterStats& stats() const { return stats_; }
+  void reset_stats();
+  // "cuda_hashed.<what>" (cuda_hashed_filter_statistics.cpp).
+  void statistics(Statistics& out) const;
+  uint64_t cells() const { return cells_; }
+  // Device pointers to the table of the last pass (tests read it back).
+  VoxelHashTableView table() const;
+  const HashedStepSettings& step_settings() const { return steps_; }
+
+ private:
+  void settle_overflows(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream);
+  VoxelHashTableView coarse_table() const;
+  std::vector<unsigned long long> read_counters(cudaStream_t stream) const;
+
+  HashedFilterSettings settings_;
+  HashedStepSettings steps_;
+  uint64_t cells_ = 0;
+  DeviceBuffer<uint32_t> fingerprints_, coarse_fingerprints_;
+  DeviceBuffer<VoxelCell> cells_buffer_, coarse_cells_;
+  DeviceBuffer<int32_t> slots_, coarse_slots_;  // per record slot: table cell or kSlot*
+  DeviceBuffer<unsigned long long> counters_;  // per pass, kCopies copies (cuda_hashed_filter.cu)
+  DeviceBuffer<uint8_t> reassigned_;            // settling: cells that changed hands
+  CudaHashedFilterStats stats_;
+};
+
+}  // namespace pathspace::gpu
