@@ -15,6 +15,7 @@
 #include "pathspace/accel/bvh_view.h"
 #include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/geometry/ray.h"
+#include "pathspace/math/scalar.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
@@ -57,8 +58,10 @@ PS_INLINE bool hit_child_box(const RayPrep& r, const BvhNode& node, int c, float
   const float x0 = (lo.x - r.o.x) * r.inv_d.x, x1 = (hi.x - r.o.x) * r.inv_d.x;
   const float y0 = (lo.y - r.o.y) * r.inv_d.y, y1 = (hi.y - r.o.y) * r.inv_d.y;
   const float z0 = (lo.z - r.o.z) * r.inv_d.z, z1 = (hi.z - r.o.z) * r.inv_d.z;
-  const float t_near = fmaxf(fmaxf(fminf(x0, x1), fminf(y0, y1)), fmaxf(fminf(z0, z1), tmin));
-  const float t_far = fminf(fminf(fmaxf(x0, x1), fmaxf(y0, y1)), fminf(fmaxf(z0, z1), tmax)) * 1.0000004f;
+  // min_of / max_of (a compare and a select), not fminf / fmaxf: no NaN reaches here, and GCC calls
+  // libm for fminf without -ffinite-math-only (half of the CPU time).
+  const float t_near = max_of(max_of(min_of(x0, x1), min_of(y0, y1)), max_of(min_of(z0, z1), tmin));
+  const float t_far = min_of(min_of(max_of(x0, x1), max_of(y0, y1)), min_of(max_of(z0, z1), tmax)) * 1.0000004f;
   *entry = t_near;
   return t_near <= t_far;
 }
