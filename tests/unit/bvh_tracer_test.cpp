@@ -22,7 +22,13 @@
 #include "pathspace/sampling/rng.h"
 #include "pathspace/sampling/warps.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/io/scene_loader.h"
+#include "support/shared_data.h"
 #include "support/shipped_scenes.h"
+
+#ifndef PATHSPACE_SHARED_SCENES_DIR
+#define PATHSPACE_SHARED_SCENES_DIR ""
+#endif
 
 namespace pathspace {
 namespace {
@@ -101,7 +107,7 @@ Agreement compare_intersect(const Traced& t, const std::vector<Ray>& rays) {
     }
     if (!fe) continue;
     ++a.hits;
-    EXPECT_TRUE(same_t(h.t, e.t)) << h.t << " vs " << e.t << ", prim " << e.prim;
+    EXPECT_TRUE(same_t(h.t, e.t)) << h.t << " vs " << e.t << ", prim " << e.prim << " kind " << int(e.kind);
     EXPECT_TRUE(close_vec(h.p, e.p, 1e-4f)) << "prim " << e.prim;
     EXPECT_TRUE(close_vec(h.ng, e.ng, 1e-5f)) << "prim " << e.prim;
     EXPECT_TRUE(close_vec(h.ns, e.ns, 1e-3f)) << "prim " << e.prim;
@@ -118,10 +124,11 @@ Agreement compare_intersect(const Traced& t, const std::vector<Ray>& rays) {
 // Shadow rays between random points of the bounds, of random finite length.
 Agreement compare_occluded(const Traced& t, const std::vector<Ray>& rays, uint64_t seed) {
   Pcg32 rng(seed, 11);
+  const float diagonal = length(t.scene.geometry_bounds().diagonal());
   Agreement a;
   for (Ray ray : rays) {
     SurfaceHit e;
-    const float reach = t.accel.intersect(ray, &e) ? e.t : length(t.scene.geometry_bounds().diagonal());
+    const float reach = t.accel.intersect(ray, &e) ? e.t : diagonal;
     ray.tmax = reach * (0.5f + rng.next_float());  // about half end before the nearest hit
     const bool be = t.accel.occluded(ray), bh = t.tracer.occluded(ray);
     ++a.rays;
@@ -161,6 +168,19 @@ TEST(BvhTracer, HitsAgreeWithEmbreeOnTheShippedScenes) {
       EXPECT_FALSE(scene.textures.empty());
     }
     expect_agreement(scene, name, 100000);
+  }
+}
+
+// Larger scenes (outside the repository, docs/testing.md): deeper trees with many spatial splits.
+TEST(BvhTracer, HitsAgreeWithEmbreeOnBitterliScenes) {
+  for (const char* name : {"veach-bidir", "living-room"}) {
+    const std::string path = std::string(PATHSPACE_SHARED_SCENES_DIR) + "/bitterli/" + name + "/scene-v4.pbrt";
+    PATHSPACE_REQUIRE_SHARED_DATA(path);
+    SceneLoadOptions options;
+    options.width = options.height = 64;
+    options.substitute_missing_textures = true;  // the living room lacks three files
+    std::vector<std::string> warnings;
+    expect_agreement(load_scene(path, options, &warnings), name, 50000);
   }
 }
 

@@ -69,6 +69,15 @@ void* create_leaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims,
 // 4.2: clip the triangle, not its box), limited to the reference's current box (it may already be a
 // split part). Clipped points are rounded, so the boxes are widened by a relative 2^-20: a box that
 // is too large costs a little time, one too small would lose hits.
+// Component-wise min / max as a compare and a select: fminf / fmaxf are libm calls in GCC without
+// -ffinite-math-only, and the builder calls this for every candidate split (most of the build time).
+Vec3 lower(const Vec3& a, const Vec3& b) { return {min_of(a.x, b.x), min_of(a.y, b.y), min_of(a.z, b.z)}; }
+Vec3 upper(const Vec3& a, const Vec3& b) { return {max_of(a.x, b.x), max_of(a.y, b.y), max_of(a.z, b.z)}; }
+void grow(Bounds3* b, const Vec3& p) {
+  b->lo = lower(b->lo, p);
+  b->hi = upper(b->hi, p);
+}
+
 void split_primitive(const RTCBuildPrimitive* prim, unsigned int dim, float pos, RTCBounds* left_out,
                      RTCBounds* right_out, void* user) {
   const auto& scene = *static_cast<const SceneView*>(user);
@@ -79,30 +88,31 @@ void split_primitive(const RTCBuildPrimitive* prim, unsigned int dim, float pos,
     for (int i = 0; i < 3; ++i) {
       const Vec3 a = scene.positions[tri.v[i]], b = scene.positions[tri.v[(i + 1) % 3]];
       const float da = a[int(dim)], db = b[int(dim)];
-      if (da <= pos) left.expand(a);
-      if (da >= pos) right.expand(a);
+      if (da <= pos) grow(&left, a);
+      if (da >= pos) grow(&right, a);
       if ((da < pos && pos < db) || (db < pos && pos < da)) {
         Vec3 c = a + (b - a) * ((pos - da) / (db - da));
         c[int(dim)] = pos;
-        left.expand(c);
-        right.expand(c);
+        grow(&left, c);
+        grow(&right, c);
       }
     }
     for (Bounds3* b : {&left, &right}) {
       if (b->empty()) continue;
-      const float pad = 0x1p-20f * fmaxf(max_component(max_vec(b->lo, -b->lo)), max_component(max_vec(b->hi, -b->hi)));
+      const Vec3 m = upper(upper(b->lo, -b->lo), upper(b->hi, -b->hi));
+      const float pad = 0x1p-20f * max_of(m.x, max_of(m.y, m.z));
       b->lo = b->lo - Vec3(pad);
       b->hi = b->hi + Vec3(pad);
     }
   } else {
     left = right = box;  // a sphere's part: its box cut at the plane
   }
-  left.lo = max_vec(left.lo, box.lo);
-  left.hi = min_vec(left.hi, box.hi);
-  right.lo = max_vec(right.lo, box.lo);
-  right.hi = min_vec(right.hi, box.hi);
-  left.hi[int(dim)] = fminf(left.hi[int(dim)], pos);
-  right.lo[int(dim)] = fmaxf(right.lo[int(dim)], pos);
+  left.lo = upper(left.lo, box.lo);
+  left.hi = lower(left.hi, box.hi);
+  right.lo = upper(right.lo, box.lo);
+  right.hi = lower(right.hi, box.hi);
+  left.hi[int(dim)] = min_of(left.hi[int(dim)], pos);
+  right.lo[int(dim)] = max_of(right.lo[int(dim)], pos);
   if (left.empty()) left = {Vec3(pos), Vec3(pos)};  // a point box on the plane: harmless
   if (right.empty()) right = {Vec3(pos), Vec3(pos)};
   *left_out = {left.lo.x, left.lo.y, left.lo.z, 0.f, left.hi.x, left.hi.y, left.hi.z, 0.f};
