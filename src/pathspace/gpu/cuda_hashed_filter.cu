@@ -78,6 +78,9 @@ __device__ bool valid_slot(const VertexBufferView& b, size_t i) {
 // `mask` with the same hash form a group; its leader inserts once and adds the group's summed
 // fixed-point values and count, the others take the leader's slot. Integer sums: the cell is the
 // same as with one add per vertex.
+static_assert(uint64_t(kMaxAccumulatedValue) * uint64_t(kFixedPointScale) <= (uint64_t(1) << 40),
+              "aggregated_insert splits fixed-point values of at most 2^40 at bit 24");
+
 struct AggregatedInsert {
   ProbeResult result;
   bool leader = false;
@@ -88,17 +91,15 @@ __device__ AggregatedInsert aggregated_insert(unsigned mask, const VoxelHashTabl
   const unsigned group = __match_any_sync(mask, (unsigned long long)h.index) & __match_any_sync(mask, h.fingerprint);
   const int leader = __ffs(group) - 1;
   uint64_t sum[3] = {fixed[0], fixed[1], fixed[2]};
-  // Uniform across the warp: skip the exchange when every group is a single lane (incoherent bounces).
-  if (!__all_sync(mask, group == (1u << lane_id()))) {
-    sum[0] = sum[1] = sum[2] = 0;
-    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-      const int l = __ffs(rest) - 1;
-      const unsigned long long a = __shfl_sync(mask, (unsigned long long)fixed[0], l);
-      const unsigned long long b = __shfl_sync(mask, (unsigned long long)fixed[1], l);
-      const unsigned long long c = __shfl_sync(mask, (unsigned long long)fixed[2], l);
-      if ((group >> l) & 1u) sum[0] += a, sum[1] += b, sum[2] += c;
+  // Each group sums its own lanes (groups run divergently, each with its own mask). REDUX adds 32-bit
+  // values: a value (at most 2^40, to_fixed_point) is split at bit 24, so that neither part's sum
+  // over 32 lanes can overflow (< 2^29 and < 2^21), and the sum is reassembled exactly.
+  if (group != (1u << lane_id()))
+    for (int c = 0; c < 3; ++c) {
+      const unsigned low = __reduce_add_sync(group, unsigned(fixed[c] & 0xffffffu));
+      const unsigned high = __reduce_add_sync(group, unsigned(fixed[c] >> 24));
+      sum[c] = uint64_t(low) + (uint64_t(high) << 24);
     }
-  }
   AggregatedInsert out;
   out.leader = lane_id() == leader;
   if (out.leader) out.result = insert_and_add(t, h, sum, uint64_t(__popc(group)));

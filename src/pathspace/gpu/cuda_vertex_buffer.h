@@ -1,6 +1,6 @@
 // DeviceVertexBuffer: a VertexBuffer in device memory, one DeviceBuffer per field (structure of
 // arrays, as on the host: a warp's loads of one field are coalesced). A CUDA path tracer fills it
-// through view().store(...) (the same PS_HD code as VertexBuffer::store) and hands view() to
+// through view().store(...) (the same device-safe code as VertexBuffer::store) and hands view() to
 // CudaHashedFilter; upload/download copy a host buffer for tests and benchmarks.
 #pragma once
 
