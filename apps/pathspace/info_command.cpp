@@ -5,6 +5,8 @@
 
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
+#include "pathspace/gpu/gpu_info.h"
+#include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
@@ -45,6 +47,7 @@ nlohmann::ordered_json registry_json() {
     i["description"] = e.description;
     i["paper"] = e.paper;
     i["filters"] = e.filter_names();
+    i["devices"] = devices_of_integrator(e.name);
     i["options"] = options_json(e.schema);
     j["integrators"].push_back(i);
   }
@@ -56,6 +59,15 @@ nlohmann::ordered_json registry_json() {
     f["paper"] = e.paper;
     f["options"] = options_json(e.schema);
     j["filters"].push_back(f);
+  }
+  j["devices"] = nlohmann::ordered_json::array();
+  for (const DeviceEntry& e : device_registry().entries()) {
+    nlohmann::ordered_json d;
+    d["name"] = e.name;
+    d["description"] = e.description;
+    d["integrators"] = e.integrators;
+    d["filters"] = e.filters;
+    j["devices"].push_back(d);
   }
   return j;
 }
@@ -96,6 +108,7 @@ std::string registry_markdown() {
     if (!e.paper.empty()) out += fmt::format(" Paper: {}.", e.paper);
     const std::vector<std::string> filters = e.filter_names();
     if (!filters.empty()) out += fmt::format(" Filters: `{}`.", fmt::join(filters, "`, `"));
+    out += fmt::format(" Devices: `{}`.", devices_of_integrator(e.name));
     out += "\n\n" + markdown_options(e.schema);
   }
   for (const FilterEntry& e : filter_registry().entries()) {
@@ -103,6 +116,10 @@ std::string registry_markdown() {
     if (!e.paper.empty()) out += fmt::format(" Paper: {}.", e.paper);
     out += "\n\n" + (e.schema.options.empty() ? std::string("No options.\n") : markdown_options(e.schema));
   }
+  out += "\n### `--device`\n\n";
+  for (const DeviceEntry& d : device_registry().entries())
+    out += fmt::format("* `{}`: {}; integrators `{}`, filters `{}`.\n", d.name, d.description, fmt::join(d.integrators, "`, `"),
+                       fmt::join(d.filters, "`, `"));
   out += "<!-- end of generated block -->\n";
   return out;
 }
@@ -114,6 +131,7 @@ void print_registry() {
     if (!e.paper.empty()) fmt::print("         paper: {}\n", e.paper);
     const std::vector<std::string> filters = e.filter_names();
     if (!filters.empty()) fmt::print("         filters: {}\n", fmt::join(filters, ", "));
+    fmt::print("         devices: {}\n", devices_of_integrator(e.name));
     print_options(e.schema);
   }
   fmt::print("\nPath space filters (--filter NAME, default none):\n");
@@ -122,6 +140,9 @@ void print_registry() {
     if (!e.paper.empty()) fmt::print("               paper: {}\n", e.paper);
     print_options(e.schema);
   }
+  fmt::print("\nDevices (--device NAME, default cpu):\n");
+  for (const DeviceEntry& d : device_registry().entries())
+    fmt::print("  {:<6} {}; integrators {}, filters {}\n", d.name, d.description, fmt::join(d.integrators, ", "), fmt::join(d.filters, ", "));
 }
 
 // `pathspace info FILE`: the checkpoint's header, after checking the whole file.
@@ -168,7 +189,11 @@ int run_info_command(const InfoOptions& options) {
     return 0;
   }
   const bool all = !options.scenes && !options.integrators;
-  if (all) fmt::print("pathspace {} build\n\n", build_type());
+  if (all) {
+    fmt::print("pathspace {} build\n", build_type());
+    const gpu::GpuInfo& g = gpu::gpu_info();
+    fmt::print("CUDA backend: {}; GPU: {}\n\n", g.built ? "built" : "not built", g.available ? g.describe() : g.reason);
+  }
   if (all || options.scenes) {
     fmt::print("Built-in scenes (select by name or id; default '{}'):\n", kDefaultSceneName);
     for (const BuiltinSceneInfo& s : builtin_scenes()) fmt::print("  {:<28} {:<6} {}\n", s.name, s.id, s.description);

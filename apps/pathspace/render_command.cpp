@@ -13,6 +13,7 @@
 #include "pathspace/base/printable.h"
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/session/render.h"
 #include "pathspace/session/render_session.h"
@@ -46,6 +47,8 @@ RenderConfig render_config(const RenderOptions& o) {
     RenderConfig config = configure_render(o.integrator, o.filter, o.registry.given());
     config.seed = o.seed;
     config.threads = o.threads;
+    config.device = o.device;
+    check_device(config.device, config.integrator, config.filter.name);
     return config;
   } catch (const OptionError& e) {
     throw UsageError(e.what());
@@ -84,6 +87,12 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(checked_real("focus-distance", 1e-30, kMaxSceneCoordinate));
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
+  cmd->add_option("--device", o->device,
+                  fmt::format("Where the passes run: {} (an integrator or filter the device does not run is a usage error; "
+                              "'pathspace info' names the GPU)",
+                              device_registry().joined_names()))
+      ->check(CLI::IsMember(device_registry().names()))
+      ->capture_default_str();
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")
       ->check(checked_unsigned("seed", UINT64_MAX))
       ->capture_default_str();

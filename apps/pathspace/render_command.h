@@ -26,6 +26,7 @@ struct RenderOptions {
   std::string resolution;  // "WxH"; empty: 512x512
   uint64_t seed = 0;
   int threads = 0;
+  std::string device = "cpu";  // integrators/device_registry.h
   std::vector<std::string> outputs;
   std::string stats_path;
   std::string variance_path;  // variance-of-the-mean image

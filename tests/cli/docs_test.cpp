@@ -59,6 +59,12 @@ const std::set<std::string> kOtherToolsOptions = {
     "--no-install-recommends",   // apt-get install
     "--fuzz",                    // scripts/install-deps --fuzz (a script, not the pathspace binary)
     "--expt-relaxed-constexpr",  // nvcc
+    "--fmad",                    // nvcc
+    "--runs",                    // bench/cuda/cuda_filter_bench
+    "--bundle",                  // scripts/gpu-check
+    "--scenes",                  // scripts/gpu-check, bench/gpu_render_bench
+    "--frames",                  // (also pathspace render) bench/gpu_render_bench
+    "--no-sanitizer",            // scripts/gpu-check
     "--benchmark_",              // Google Benchmark: --benchmark_filter, --benchmark_out, ...
     "--gtest_",                  // GoogleTest: --gtest_filter, ...
 };

@@ -23,7 +23,9 @@ GpuInfo query() {
   int count = 0;
   const cudaError_t e = cudaGetDeviceCount(&count);
   if (e != cudaSuccess || count == 0) {
-    info.reason = e != cudaSuccess ? std::string("no CUDA device (") + cudaGetErrorString(e) + ")" : "no CUDA device";
+    // Without a driver the runtime reports an "insufficient" driver: say what is missing instead.
+    const std::string why = info.driver_version == 0 ? "no NVIDIA driver" : e != cudaSuccess ? cudaGetErrorString(e) : "";
+    info.reason = why.empty() ? "no CUDA device" : "no CUDA device (" + why + ")";
     cudaGetLastError();  // clear the sticky error of the failed query
     return info;
   }

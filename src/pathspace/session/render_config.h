@@ -1,5 +1,5 @@
 // RenderConfig: what a RenderSession renders with: an integrator and its settings, the path space
-// filter and its settings, the seed and the thread count. Built either in code from the typed
+// filter and its settings, the seed, the thread count and the device. Built either in code from the typed
 // settings structs (make_render_config) or from options given by name, as the CLI and the Python
 // bindings receive them (configure_render), which checks every option against the registry.
 #pragma once
@@ -9,6 +9,7 @@
 #include <string>
 
 #include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/options/option_values.h"
 
@@ -20,6 +21,7 @@ struct RenderConfig {
   FilterChoice filter;  // FilterChoice::kNone: no path space filter
   uint64_t seed = 0;
   int threads = 0;      // <= 0: all cores
+  std::string device = DeviceEntry::kCpu;  // where the passes run (integrators/device_registry.h)
 };
 
 // A config from typed settings: make_render_config("sppm", SppmSettings{...}, seed).

@@ -40,7 +40,10 @@ std::string scene_fingerprint(const Scene& scene) {
 std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config,
                                               std::shared_ptr<PathSpaceFilter> carried = nullptr) {
   check_composition(config.integrator, config.filter.name);
+  check_device(config.device, config.integrator, config.filter.name);
   const IntegratorContext context{scene, accel, config.seed, config.filter, std::move(carried)};
+  const DeviceEntry& device = device_registry().at(config.device);
+  if (device.create) return device.create(context, config.integrator, config.settings);
   return integrator_registry().at(config.integrator).create(context, config.settings);
 }
 

@@ -1,0 +1,191 @@
+#include "pathspace/gpu/cuda_pt_integrator.h"
+
+#include <cuda_runtime.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pathspace/accel/bvh_build.h"
+#include "pathspace/accel/bvh_tracer.h"
+#include "pathspace/filters/filter_resolve.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/gpu/cuda_event_timer.h"
+#include "pathspace/gpu/cuda_hashed_filter.h"
+#include "pathspace/gpu/cuda_vertex_buffer.h"
+#include "pathspace/gpu/device_bvh.h"
+#include "pathspace/gpu/device_scene.h"
+#include "pathspace/gpu/gpu_info.h"
+#include "pathspace/integrators/common/camera_sample.h"
+#include "pathspace/integrators/pt/pt_kernel.h"
+#include "pathspace/options/option_spec.h"
+#include "pathspace/scene/scene.h"
+
+namespace pathspace::gpu {
+
+namespace {
+
+constexpr int kThreadsPerBlock = 128;
+
+// The pass's counters, summed per warp before one atomic add per warp and field.
+struct DeviceCounters {
+  unsigned long long rays, shadow_rays, paths, dropped;
+};
+
+__device__ void add_counters(DeviceCounters* out, uint32_t rays, uint32_t shadow_rays, uint32_t paths, uint32_t dropped) {
+  const unsigned mask = __activemask();
+  rays = __reduce_add_sync(mask, rays);
+  shadow_rays = __reduce_add_sync(mask, shadow_rays);
+  paths = __reduce_add_sync(mask, paths);
+  dropped = __reduce_add_sync(mask, dropped);
+  if ((threadIdx.x & 31u) == uint32_t(__ffs(mask) - 1)) {
+    atomicAdd(&out->rays, (unsigned long long)rays);
+    atomicAdd(&out->shadow_rays, (unsigned long long)shadow_rays);
+    atomicAdd(&out->paths, (unsigned long long)paths);
+    atomicAdd(&out->dropped, (unsigned long long)dropped);
+  }
+}
+
+struct PassParams {
+  SceneView scene;
+  BvhTracer tracer;
+  PtSettings settings;
+  uint64_t seed;
+  uint32_t pass;
+  uint32_t pixels;
+};
+
+// Plain path tracing: one path per pixel, its value into the pass image (non-finite values dropped,
+// as the CPU's render_plain does).
+__global__ void __launch_bounds__(kThreadsPerBlock) trace_plain(PassParams p, Rgb* image, DeviceCounters* counters) {
+  const uint32_t pixel = blockIdx.x * blockDim.x + threadIdx.x;
+  if (pixel >= p.pixels) return;
+  PathCounters c;
+  const Sampler sampler(p.seed, pixel, p.pass);
+  Rgb value = pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene.camera, sampler, pixel), p.settings, &c);
+  uint32_t dropped = 0;
+  if (!all_finite(value)) {
+    dropped = 1;
+    value = Rgb();
+  }
+  image[pixel] = value;
+  add_counters(counters, uint32_t(c.rays), uint32_t(c.shadow_rays), 1u, dropped);
+}
+
+// Filtered path tracing, phase 1 (2021 paper, sec. 3): trace and record the selected vertices.
+__global__ void __launch_bounds__(kThreadsPerBlock) trace_recording(PassParams p, VertexBufferView buffer, DeviceCounters* counters) {
+  const uint32_t pixel = blockIdx.x * blockDim.x + threadIdx.x;
+  if (pixel >= p.pixels) return;
+  PathCounters c;
+  PathSample sample;
+  const Sampler sampler(p.seed, pixel, p.pass);
+  pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene.camera, sampler, pixel), p.settings, &c, &sample);
+  buffer.store(pixel, pixel, sample);
+  add_counters(counters, uint32_t(c.rays), uint32_t(c.shadow_rays), 1u, 0u);
+}
+
+// Phase 3: each path's value from its prefix and its filtered vertices (filters/filter_resolve.h,
+// the CPU's resolve_filtered_pass).
+__global__ void resolve_paths(VertexBufferView buffer, const Rgb* filtered, Rgb* image, DeviceCounters* counters) {
+  const uint32_t path = blockIdx.x * blockDim.x + threadIdx.x;
+  if (path >= buffer.paths) return;
+  const ResolvedPath r = resolved_path_value(buffer, path, filtered);
+  image[buffer.pixel[path]] = r.value;
+  add_counters(counters, 0u, 0u, 0u, r.dropped ? 1u : 0u);
+}
+
+uint32_t blocks_for(size_t n) { return uint32_t((n + kThreadsPerBlock - 1) / kThreadsPerBlock); }
+
+class CudaPtIntegrator final : public Integrator {
+ public:
+  CudaPtIntegrator(const IntegratorContext& ctx, const PtSettings& settings)
+      : settings_(settings), seed_(ctx.seed), pixels_(uint32_t(ctx.scene.camera.width) * uint32_t(ctx.scene.camera.height)),
+        device_name_(gpu_info().name), scene_(ctx.scene), bvh_(ctx.scene) {
+    if (ctx.filter.active()) {
+      // check_device allows only the filters the device entry names (hashed).
+      const HashedFilterSettings fs = settings_cast<HashedFilterSettings>(ctx.filter.settings, ctx.filter.name);
+      filter_.emplace(fs, ctx.scene.camera, size_t(pixels_));
+      buffer_.resize(pixels_, records_per_path(settings_.selection));
+      filtered_.resize(size_t(pixels_) * size_t(records_per_path(settings_.selection)));
+    }
+    image_.resize(pixels_);
+    counters_.resize(1);
+    host_image_.resize(pixels_);
+  }
+
+  const char* name() const override { return "pt"; }
+
+  void render_pass(uint32_t pass, Film& film, PathCounters& counters) override {
+    PassParams p{scene_.view(), BvhTracer{scene_.view(), bvh_.view()}, settings_, seed_, pass, pixels_};
+    counters_.fill_bytes(0);
+    timer_.start();
+    if (filter_) {
+      trace_recording<<<blocks_for(pixels_), kThreadsPerBlock>>>(p, buffer_.view(), counters_.data());
+      PS_CUDA_CHECK_LAUNCH("trace_recording");
+      timer_.lap(&trace_ms_);
+      filter_->filter(buffer_.view(), seed_, pass, filtered_.data());
+      timer_.lap(&filter_ms_);
+      resolve_paths<<<blocks_for(pixels_), kThreadsPerBlock>>>(buffer_.view(), filtered_.data(), image_.data(), counters_.data());
+      PS_CUDA_CHECK_LAUNCH("resolve_paths");
+      timer_.lap(&resolve_ms_);
+    } else {
+      trace_plain<<<blocks_for(pixels_), kThreadsPerBlock>>>(p, image_.data(), counters_.data());
+      PS_CUDA_CHECK_LAUNCH("trace_plain");
+      timer_.lap(&trace_ms_);
+    }
+    image_.download(host_image_.data(), pixels_);
+    DeviceCounters c{};
+    counters_.download(&c, 1);
+    timer_.lap(&download_ms_);
+    for (uint32_t i = 0; i < pixels_; ++i) film.add_sample(i, host_image_[i]);
+    counters.rays += c.rays;
+    counters.shadow_rays += c.shadow_rays;
+    counters.paths += c.paths;
+    counters.dropped += c.dropped;
+    rays_ += c.rays;
+    ++passes_;
+  }
+
+  void statistics(Statistics& out) const override {
+    const double passes = double(passes_ ? passes_ : 1);
+    out.text("cuda.device", device_name_);
+    out.bytes("cuda.scene_bytes", scene_.bytes(), "the scene's arrays in device memory");
+    out.bytes("cuda.bvh_bytes", bvh_.bytes(), "BVH nodes and primitive references in device memory");
+    out.counter("cuda.bvh_nodes", bvh_.nodes());
+    out.seconds("cuda.bvh_build_s", bvh_.build_seconds(), "on the host, Embree's SAH builder, then flattened");
+    out.seconds("cuda.trace_s_per_pass", trace_ms_ * 1e-3 / passes, "camera rays to the paths' values or vertices (device time)");
+    out.seconds("cuda.filter_s_per_pass", filter_ms_ * 1e-3 / passes, "the hashed filter: clear, accumulate, lookup (device time)");
+    out.seconds("cuda.resolve_s_per_pass", resolve_ms_ * 1e-3 / passes, "filtered vertices into pixels (device time)");
+    out.seconds("cuda.download_s_per_pass", download_ms_ * 1e-3 / passes, "the pass image to the host film");
+    out.seconds("cuda.frame_s_per_pass", (trace_ms_ + filter_ms_ + resolve_ms_) * 1e-3 / passes,
+                "camera rays to the filtered image in device memory");
+    out.value("cuda.mrays_per_s", trace_ms_ > 0.0 ? double(rays_) / (trace_ms_ * 1e3) : 0.0, "rays over the tracing time");
+    if (filter_) filter_->statistics(out);
+  }
+
+ private:
+  PtSettings settings_;
+  uint64_t seed_;
+  uint32_t pixels_;
+  std::string device_name_;
+  DeviceScene scene_;
+  DeviceBvh bvh_;
+  std::optional<CudaHashedFilter> filter_;
+  DeviceVertexBuffer buffer_;
+  DeviceBuffer<Rgb> filtered_, image_;
+  DeviceBuffer<DeviceCounters> counters_;
+  std::vector<Rgb> host_image_;
+  CudaEventTimer timer_;
+  double trace_ms_ = 0, filter_ms_ = 0, resolve_ms_ = 0, download_ms_ = 0;
+  uint64_t rays_ = 0, passes_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_cuda_pt_integrator(const IntegratorContext& context, const PtSettings& settings) {
+  require_gpu();
+  return std::make_unique<CudaPtIntegrator>(context, settings);
+}
+
+}  // namespace pathspace::gpu

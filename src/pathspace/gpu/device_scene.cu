@@ -1,0 +1,54 @@
+#include "pathspace/gpu/device_scene.h"
+
+#include <cstring>
+
+namespace pathspace::gpu {
+
+template <typename T>
+const T* DeviceScene::upload(const T* host, size_t n) {
+  if (host == nullptr || n == 0) return nullptr;
+  DeviceBuffer<unsigned char> buffer;
+  buffer.upload(reinterpret_cast<const unsigned char*>(host), n * sizeof(T));
+  bytes_ += buffer.bytes();
+  arrays_.push_back(std::move(buffer));
+  return reinterpret_cast<const T*>(arrays_.back().data());
+}
+
+namespace {
+DiscreteView device_discrete(const DiscreteView& host, auto&& upload) {
+  DiscreteView d = host;
+  d.cdf = upload(host.cdf, size_t(host.n) + 1);
+  d.pmf = upload(host.pmf, size_t(host.n));
+  return d;
+}
+}  // namespace
+
+DeviceScene::DeviceScene(const Scene& scene) {
+  const SceneView h = scene.view();
+  const size_t vertices = scene.positions.size();
+  view_ = h;  // scalars, the camera and the bounds as they are; every pointer replaced below
+  view_.positions = upload(h.positions, vertices);
+  view_.uvs = upload(h.uvs, h.uvs ? vertices : 0);
+  view_.normals = upload(h.normals, h.normals ? vertices : 0);
+  view_.triangles = upload(h.triangles, h.num_triangles);
+  view_.spheres = upload(h.spheres, h.num_spheres);
+  view_.materials = upload(h.materials, h.num_materials);
+  view_.lights = upload(h.lights, h.num_lights);
+  // Textures: each view's texels first, then the array of views pointing at them.
+  std::vector<TextureView> textures(h.textures, h.textures + h.num_textures);
+  for (TextureView& t : textures) t.texels = upload(t.texels, size_t(t.width) * size_t(t.height));
+  view_.textures = upload(textures.data(), textures.size());
+  auto up = [this](const auto* p, size_t n) { return upload(p, n); };
+  view_.light_selection = device_discrete(h.light_selection, up);
+  EnvironmentMapView& env = view_.environment_map;
+  env.texels = upload(h.environment_map.texels, size_t(h.environment_map.width) * size_t(h.environment_map.height));
+  const Piecewise2DView& dist = h.environment_map.distribution;
+  if (dist.valid()) {
+    const size_t W = size_t(dist.width), H = size_t(dist.height);
+    env.distribution.row_cdf = upload(dist.row_cdf, H + 1);
+    env.distribution.cell_cdf = upload(dist.cell_cdf, H * (W + 1));
+    env.distribution.cell_pdf = upload(dist.cell_pdf, H * W);
+  }
+}
+
+}  // namespace pathspace::gpu
