@@ -1,5 +1,5 @@
 // Path tracing and hashed filtering on the GPU (--device cuda) at 1920x1080, 1 sample per pixel per
-// frame: per-frame device time (camera rays to the filtered image in device memory) as the median
+// frame, with both pipelines (megakernel and wavefront, gpu/cuda_pt_integrator.h): per-frame device time (camera rays to the filtered image in device memory) as the median
 // over frames after warm-up, its stages (trace, filter, resolve), rays per second, and the 2-thread
 // CPU figure of the same build for the same scene. Needs a CUDA device (prints why not and exits 0
 // without one, so that CI can run it). Used by scripts/gpu-check; docs/benchmarks.md.
@@ -16,6 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/accel/accel.h"
+#include "pathspace/film/film.h"
+#include "pathspace/gpu/cuda_pt_integrator.h"
 #include "pathspace/gpu/gpu_info.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/io/scene_loader.h"
@@ -33,42 +36,58 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-// A statistic's total over the passes so far (the integrator reports per-pass means).
-double total(const RenderStats& s, const char* name) {
-  const Statistic* st = s.details.find(name);
-  return st ? st->number * double(s.spp) : 0.0;
+// A statistic's total over `passes` passes (the integrator reports per-pass means).
+double total(const Statistics& s, const char* name, uint32_t passes) {
+  const Statistic* st = s.find(name);
+  return st ? st->number * double(passes) : 0.0;
 }
 
 struct GpuRun {
   double frame_ms = 0, trace_ms = 0, filter_ms = 0, resolve_ms = 0, download_ms = 0, mrays_per_s = 0, rays_per_path = 0;
+  double extend_ms = 0, shade_ms = 0, shadow_ms = 0;  // wavefront stages
 };
 
-GpuRun run_gpu(const std::shared_ptr<const Scene>& scene, bool filtered, int frames) {
-  RenderConfig config = make_render_config("pt", PtSettings{}, 1);
-  config.device = "cuda";
-  if (filtered) config = with_filter(config, "hashed", HashedFilterSettings{});
-  RenderSession session(scene, nullptr, config);
-  session.run(RunLimit::for_passes(3));  // warm-up: module load, first-touch of the buffers
-  std::vector<double> frame, trace, filter, resolve, download, mrays;
-  RenderStats before = session.stats();
+GpuRun run_gpu(const Scene& scene, bool filtered, gpu::CudaPtPipeline pipeline, int frames) {
+  const Accel accel(scene);  // the context's; the GPU builds its own BVH
+  FilterChoice filter;
+  if (filtered) filter.name = "hashed";
+  const IntegratorContext context{scene, accel, 1, filter};
+  auto integrator = gpu::make_cuda_pt_integrator(context, PtSettings{}, pipeline);
+  Film film(scene.camera.width, scene.camera.height);
+  PathCounters counters;
+  uint32_t passes = 0;
+  for (; passes < 3; ++passes) integrator->render_pass(passes, film, counters);  // warm-up
+  std::vector<double> frame, trace, filter_ms, resolve, download, mrays, extend, shade, shadow;
+  Statistics before;
+  integrator->statistics(before);
+  uint64_t rays_before = counters.rays;
   for (int f = 0; f < frames; ++f) {
-    session.run(RunLimit::for_passes(1));
-    const RenderStats now = session.stats();
-    auto delta = [&](const char* n) { return (total(now, n) - total(before, n)) * 1e3; };  // ms
+    integrator->render_pass(passes, film, counters);
+    Statistics now;
+    integrator->statistics(now);
+    auto delta = [&](const char* n) { return (total(now, n, passes + 1) - total(before, n, passes)) * 1e3; };  // ms
     frame.push_back(delta("cuda.frame_s_per_pass"));
     trace.push_back(delta("cuda.trace_s_per_pass"));
-    filter.push_back(delta("cuda.filter_s_per_pass"));
+    filter_ms.push_back(delta("cuda.filter_s_per_pass"));
     resolve.push_back(delta("cuda.resolve_s_per_pass"));
     download.push_back(delta("cuda.download_s_per_pass"));
-    mrays.push_back(double(now.rays - before.rays) / (trace.back() * 1e3));
-    before = now;
+    extend.push_back(delta("cuda.extend_s_per_pass"));
+    shade.push_back(delta("cuda.shade_s_per_pass"));
+    shadow.push_back(delta("cuda.shadow_s_per_pass"));
+    mrays.push_back(double(counters.rays - rays_before) / (trace.back() * 1e3));
+    rays_before = counters.rays;
+    before = std::move(now);
+    ++passes;
   }
-  const RenderStats s = session.stats();
-  return {median(frame), median(trace), median(filter), median(resolve), median(download), median(mrays),
-          double(s.rays) / double(std::max<uint64_t>(1, s.paths))};
+  GpuRun r{median(frame), median(trace), median(filter_ms), median(resolve), median(download), median(mrays),
+           double(counters.rays) / double(std::max<uint64_t>(1, counters.paths))};
+  r.extend_ms = median(extend);
+  r.shade_ms = median(shade);
+  r.shadow_ms = median(shadow);
+  return r;
 }
 
-double cpu_mrays_per_s(const std::shared_ptr<const Scene>& scene, int threads) {
+double cpu_mrays_per_s(const std::shared_ptr<const Scene>& scene, int threads) {  // one pass
   RenderConfig config = make_render_config("pt", PtSettings{}, 1);
   config.threads = threads;
   RenderSession session(scene, nullptr, config);
@@ -112,20 +131,24 @@ int run(int argc, char** argv) {
   out["width"] = kWidth;
   out["height"] = kHeight;
   out["frames"] = frames;
-  std::printf("\n%-12s %-7s %9s %7s %9s %9s %9s %10s %9s %10s %9s\n", "scene", "filter", "frame ms", "fps", "trace ms", "filter ms",
-              "resolve ms", "Mrays/s", "rays/path", "CPU2 Mr/s", "GPU/CPU2");
+  std::printf("\n%-12s %-7s %-10s %9s %7s %9s %9s %9s %9s %9s %9s %10s %9s %10s %9s\n", "scene", "filter", "pipeline", "frame ms", "fps",
+              "trace ms", "extend ms", "shade ms", "shadow ms", "filter ms", "resolve ms", "Mrays/s", "rays/path", "CPU2 Mr/s",
+              "GPU/CPU2");
   for (const auto& [name, scene] : scenes) {
     const double cpu = cpu_mrays_per_s(scene, 2);
-    for (bool filtered : {false, true}) {
-      const GpuRun r = run_gpu(scene, filtered, frames);
-      std::printf("%-12s %-7s %9.3f %7.1f %9.3f %9.3f %9.3f %10.1f %9.2f %10.2f %9.1f\n", name.c_str(), filtered ? "hashed" : "none",
-                  r.frame_ms, 1e3 / r.frame_ms, r.trace_ms, r.filter_ms, r.resolve_ms, r.mrays_per_s, r.rays_per_path, cpu,
-                  r.mrays_per_s / cpu);
-      out["runs"].push_back({{"scene", name}, {"filter", filtered ? "hashed" : "none"}, {"frame_ms", r.frame_ms},
-                             {"fps", 1e3 / r.frame_ms}, {"trace_ms", r.trace_ms}, {"filter_ms", r.filter_ms},
-                             {"resolve_ms", r.resolve_ms}, {"download_ms", r.download_ms}, {"mrays_per_s", r.mrays_per_s},
-                             {"rays_per_path", r.rays_per_path}, {"cpu_2_threads_mrays_per_s", cpu}});
-    }
+    for (bool filtered : {false, true})
+      for (gpu::CudaPtPipeline pipeline : {gpu::CudaPtPipeline::megakernel, gpu::CudaPtPipeline::wavefront}) {
+        const bool wave = pipeline == gpu::CudaPtPipeline::wavefront;
+        const GpuRun r = run_gpu(*scene, filtered, pipeline, frames);
+        std::printf("%-12s %-7s %-10s %9.3f %7.1f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %10.1f %9.2f %10.2f %9.1f\n", name.c_str(),
+                    filtered ? "hashed" : "none", wave ? "wavefront" : "megakernel", r.frame_ms, 1e3 / r.frame_ms, r.trace_ms, r.extend_ms,
+                    r.shade_ms, r.shadow_ms, r.filter_ms, r.resolve_ms, r.mrays_per_s, r.rays_per_path, cpu, r.mrays_per_s / cpu);
+        out["runs"].push_back({{"scene", name}, {"filter", filtered ? "hashed" : "none"}, {"pipeline", wave ? "wavefront" : "megakernel"},
+                               {"frame_ms", r.frame_ms}, {"fps", 1e3 / r.frame_ms}, {"trace_ms", r.trace_ms}, {"extend_ms", r.extend_ms},
+                               {"shade_ms", r.shade_ms}, {"shadow_ms", r.shadow_ms}, {"filter_ms", r.filter_ms},
+                               {"resolve_ms", r.resolve_ms}, {"download_ms", r.download_ms}, {"mrays_per_s", r.mrays_per_s},
+                               {"rays_per_path", r.rays_per_path}, {"cpu_2_threads_mrays_per_s", cpu}});
+      }
   }
   if (!json_path.empty()) std::ofstream(json_path) << out.dump(2) << "\n";
   return 0;

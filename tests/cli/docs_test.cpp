@@ -65,6 +65,7 @@ const std::set<std::string> kOtherToolsOptions = {
     "--scenes",                  // scripts/gpu-check, bench/gpu_render_bench
     "--frames",                  // (also pathspace render) bench/gpu_render_bench
     "--no-sanitizer",            // scripts/gpu-check
+    "--vertices",                // scripts/gpu-check
     "--benchmark_",              // Google Benchmark: --benchmark_filter, --benchmark_out, ...
     "--gtest_",                  // GoogleTest: --gtest_filter, ...
 };

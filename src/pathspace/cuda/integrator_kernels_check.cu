@@ -18,6 +18,7 @@
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
+#include "pathspace/gpu/wavefront_stages.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/integrators/sppm/sppm_kernel.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"

@@ -14,6 +14,7 @@
 #include "pathspace/gpu/cuda_event_timer.h"
 #include "pathspace/gpu/cuda_hashed_filter.h"
 #include "pathspace/gpu/cuda_vertex_buffer.h"
+#include "pathspace/gpu/cuda_wavefront_pt.h"
 #include "pathspace/gpu/device_bvh.h"
 #include "pathspace/gpu/device_scene.h"
 #include "pathspace/gpu/gpu_info.h"
@@ -28,10 +29,7 @@ namespace {
 
 constexpr int kThreadsPerBlock = 128;
 
-// The pass's counters, summed per warp before one atomic add per warp and field.
-struct DeviceCounters {
-  unsigned long long rays, shadow_rays, paths, dropped;
-};
+using DeviceCounters = PathCountersDevice;
 
 __device__ void add_counters(DeviceCounters* out, uint32_t rays, uint32_t shadow_rays, uint32_t paths, uint32_t dropped) {
   const unsigned mask = __activemask();
@@ -99,8 +97,8 @@ uint32_t blocks_for(size_t n) { return uint32_t((n + kThreadsPerBlock - 1) / kTh
 
 class CudaPtIntegrator final : public Integrator {
  public:
-  CudaPtIntegrator(const IntegratorContext& ctx, const PtSettings& settings)
-      : settings_(settings), seed_(ctx.seed), pixels_(uint32_t(ctx.scene.camera.width) * uint32_t(ctx.scene.camera.height)),
+  CudaPtIntegrator(const IntegratorContext& ctx, const PtSettings& settings, CudaPtPipeline pipeline)
+      : settings_(settings), pipeline_(pipeline), seed_(ctx.seed), pixels_(uint32_t(ctx.scene.camera.width) * uint32_t(ctx.scene.camera.height)),
         device_name_(gpu_info().name), scene_(ctx.scene), bvh_(ctx.scene) {
     if (ctx.filter.active()) {
       // check_device allows only the filters the device entry names (hashed).
@@ -111,6 +109,7 @@ class CudaPtIntegrator final : public Integrator {
     }
     image_.resize(pixels_);
     counters_.resize(1);
+    if (pipeline_ == CudaPtPipeline::wavefront) wavefront_.emplace(pixels_);
     host_image_.resize(pixels_);
   }
 
@@ -120,19 +119,26 @@ class CudaPtIntegrator final : public Integrator {
     PassParams p{scene_.view(), BvhTracer{scene_.view(), bvh_.view()}, settings_, seed_, pass, pixels_};
     counters_.fill_bytes(0);
     timer_.start();
-    if (filter_) {
+    if (wavefront_) {
+      const VertexBufferView view = filter_ ? buffer_.view() : VertexBufferView{};
+      wavefront_->trace(p.scene, p.tracer, settings_, seed_, pass, filter_ ? &view : nullptr, image_.data(), counters_.data(), &stages_);
+      timer_.start();  // the wavefront timed its own stages; the trace time is their sum
+      trace_ms_ = stages_.camera_ms + stages_.extend_ms + stages_.shade_ms + stages_.shadow_ms;
+    } else if (filter_) {
       trace_recording<<<blocks_for(pixels_), kThreadsPerBlock>>>(p, buffer_.view(), counters_.data());
       PS_CUDA_CHECK_LAUNCH("trace_recording");
       timer_.lap(&trace_ms_);
+    } else {
+      trace_plain<<<blocks_for(pixels_), kThreadsPerBlock>>>(p, image_.data(), counters_.data());
+      PS_CUDA_CHECK_LAUNCH("trace_plain");
+      timer_.lap(&trace_ms_);
+    }
+    if (filter_) {
       filter_->filter(buffer_.view(), seed_, pass, filtered_.data());
       timer_.lap(&filter_ms_);
       resolve_paths<<<blocks_for(pixels_), kThreadsPerBlock>>>(buffer_.view(), filtered_.data(), image_.data(), counters_.data());
       PS_CUDA_CHECK_LAUNCH("resolve_paths");
       timer_.lap(&resolve_ms_);
-    } else {
-      trace_plain<<<blocks_for(pixels_), kThreadsPerBlock>>>(p, image_.data(), counters_.data());
-      PS_CUDA_CHECK_LAUNCH("trace_plain");
-      timer_.lap(&trace_ms_);
     }
     image_.download(host_image_.data(), pixels_);
     DeviceCounters c{};
@@ -150,6 +156,15 @@ class CudaPtIntegrator final : public Integrator {
   void statistics(Statistics& out) const override {
     const double passes = double(passes_ ? passes_ : 1);
     out.text("cuda.device", device_name_);
+    out.text("cuda.pipeline", wavefront_ ? "wavefront" : "megakernel", "how paths are traced (docs/gpu.md)");
+    if (wavefront_) {
+      out.seconds("cuda.camera_s_per_pass", stages_.camera_ms * 1e-3 / passes, "wavefront: camera rays into path states");
+      out.seconds("cuda.extend_s_per_pass", stages_.extend_ms * 1e-3 / passes, "wavefront: extension rays, closest hit");
+      out.seconds("cuda.shade_s_per_pass", stages_.shade_ms * 1e-3 / passes, "wavefront: emission, selection, NEE, BSDF sampling");
+      out.seconds("cuda.shadow_s_per_pass", stages_.shadow_ms * 1e-3 / passes, "wavefront: shadow rays, any hit");
+      out.value("cuda.bounces_per_pass", double(stages_.bounces) / passes, "wavefront: extension rounds");
+      out.bytes("cuda.path_state_bytes", wavefront_->bytes(), "wavefront: path states, hits and queues");
+    }
     out.bytes("cuda.scene_bytes", scene_.bytes(), "the scene's arrays in device memory");
     out.bytes("cuda.bvh_bytes", bvh_.bytes(), "BVH nodes and primitive references in device memory");
     out.counter("cuda.bvh_nodes", bvh_.nodes());
@@ -166,12 +181,15 @@ class CudaPtIntegrator final : public Integrator {
 
  private:
   PtSettings settings_;
+  CudaPtPipeline pipeline_;
   uint64_t seed_;
   uint32_t pixels_;
   std::string device_name_;
   DeviceScene scene_;
   DeviceBvh bvh_;
   std::optional<CudaHashedFilter> filter_;
+  std::optional<WavefrontPathTracer> wavefront_;
+  WavefrontStageTimes stages_;
   DeviceVertexBuffer buffer_;
   DeviceBuffer<Rgb> filtered_, image_;
   DeviceBuffer<DeviceCounters> counters_;
@@ -183,9 +201,10 @@ class CudaPtIntegrator final : public Integrator {
 
 }  // namespace
 
-std::unique_ptr<Integrator> make_cuda_pt_integrator(const IntegratorContext& context, const PtSettings& settings) {
+std::unique_ptr<Integrator> make_cuda_pt_integrator(const IntegratorContext& context, const PtSettings& settings,
+                                                    CudaPtPipeline pipeline) {
   require_gpu();
-  return std::make_unique<CudaPtIntegrator>(context, settings);
+  return std::make_unique<CudaPtIntegrator>(context, settings, pipeline);
 }
 
 }  // namespace pathspace::gpu

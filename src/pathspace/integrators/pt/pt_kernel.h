@@ -122,6 +122,220 @@ PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out
 }
 }  // namespace pt_detail
 
+// The state of one camera path between its bounces. pt_trace_path runs the steps below in a loop on
+// one thread; the GPU's wavefront path tracer (gpu/cuda_wavefront_pt.cu; Laine, Karras, Aila 2013)
+// keeps the state in device memory and runs each step as its own kernel over a queue of paths, so
+// both are the same arithmetic in the same order: the images agree bit for bit.
+struct PtPathState {
+  Ray ray;                   // the next ray to trace (extension)
+  pt_detail::OpenVertex open[kMaxSelectedVertices];
+  Rgb prefix;
+  int owner = -1;            // where gathered radiance goes: -1 the prefix, k open[k].after
+  Rgb beta{1.f};             // throughput relative to that owner
+  Rgb abs_beta{1.f};         // throughput from the camera (Russian roulette)
+  bool after_delta = true;   // the camera "bounce" counts as delta: directly seen emission always counts
+  float prev_bsdf_pdf = 0.f;
+  Vec3 prev_p;
+  float path_distance = 0.f, prev_distance = 0.f;
+  // With caustics: 1 after a gathering vertex's non-delta bounce, 2 once delta bounces alone
+  // followed it (emission found then belongs to the photon map), 0 otherwise.
+  int caustic_chain = 0;
+  int selected = 0, diffuse_index = 0;
+  int segments = 1;          // of the ray being traced (camera ray = segment 1)
+  // Next event estimation waiting for its shadow ray: added if the ray is unoccluded.
+  bool shadow_pending = false;
+  int shadow_vertex = -1;    // -1: shadow_value[0] adds to open[shadow_owner] / the prefix; k: sets open[k].nee[l]
+  int shadow_owner = -1;
+  Ray shadow_ray;
+  Rgb shadow_value[kMaxBsdfLayers];
+
+  PS_HD Rgb& radiance() { return owner < 0 ? prefix : open[owner].after; }
+};
+
+// What follows a step: trace s.ray next, or the path has ended (after its pending shadow ray).
+enum class PtNext : uint8_t { extend, end };
+
+// Field by field: the open vertices are written when selected, and a whole-struct assignment would
+// clear a kilobyte per path (the wavefront keeps millions of states in device memory).
+PS_INLINE void pt_begin(PtPathState* s, const Ray& ray) {
+  s->ray = ray;
+  s->prefix = Rgb();
+  s->owner = -1;
+  s->beta = s->abs_beta = Rgb(1.f);
+  s->after_delta = true;
+  s->prev_bsdf_pdf = 0.f;
+  s->prev_p = ray.o;
+  s->path_distance = s->prev_distance = 0.f;
+  s->caustic_chain = s->selected = s->diffuse_index = 0;
+  s->segments = 1;
+  s->shadow_pending = false;
+}
+
+// The path's ray left the scene: environment emission; the path ends.
+PS_INLINE void pt_on_miss(const SceneView& scene, const PtSettings& settings, PtPathState* s) {
+  using namespace pt_detail;
+  if (scene.environment_light < 0 || s->caustic_chain == 2) return;
+  const Light& env = scene.lights[scene.environment_light];
+  const Ray& ray = s->ray;
+  if (s->after_delta || !settings.nee) {
+    s->radiance() += s->beta * environment_radiance(scene, env, ray.d);
+  } else if (settings.bsdf_sampling) {
+    const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * environment_pdf(scene, ray.d);
+    s->radiance() += s->beta * environment_radiance(scene, env, ray.d) * combine_mis(settings, s->prev_bsdf_pdf, light_pdf_w);
+  }
+}
+
+// The path's ray hit `hit`: emission, vertex selection, next event estimation (its shadow ray left
+// pending in s: pt_resolve_shadow), BSDF sampling and Russian roulette. `tracer` serves only the
+// visibility probes (none unless a filter asks for them).
+template <typename Tracer>
+PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const PtSettings& settings,
+                       const SurfaceHit& hit, PathCounters* counters, PtPathState* s, const VisibilityProbes& probes = {},
+                       bool query_only = false, const CausticMapView* caustics = nullptr) {
+  using namespace pt_detail;
+  const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
+  const VertexSelection& selection = settings.selection;
+  const Ray ray = s->ray;
+  const int segments = s->segments;
+  s->prev_distance = s->path_distance;
+  s->path_distance += hit.t;
+
+  if (hit.light != kNoLight && s->caustic_chain != 2) {
+    const Light& light = scene.lights[hit.light];
+    const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
+    if (!is_black(le)) {
+      if (s->after_delta || !settings.nee) {
+        s->radiance() += s->beta * le;
+      } else if (settings.bsdf_sampling) {
+        const float light_pdf_w =
+            scene.light_selection.probability(uint32_t(hit.light)) * light_pdf(scene, light, s->prev_p, hit.p, hit.ng);
+        s->radiance() += s->beta * le * combine_mis(settings, s->prev_bsdf_pdf, light_pdf_w);
+      }
+    }
+  }
+  if (segments >= max_segments) return PtNext::end;
+
+  Material textured;
+  const Material& mat = shading_material(scene, hit, &textured);
+  const Frame frame(hit.ns);
+  const Vec3 wo = frame.to_local(-ray.d);
+  const uint32_t v = uint32_t(segments - 1);
+
+  // Vertex selection for filtering.
+  OpenVertex* sel = nullptr;
+  BsdfLayers layers = bsdf_layers(mat);
+  if (!selection.split_layers) merge_layers(&layers);
+  const bool selectable = is_selectable(layers, selection);
+  if (selectable) {
+    // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
+    // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
+    // selected vertex's contribution (light arriving there from elsewhere, filtered with it).
+    if (caustics) s->radiance() += s->beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
+    ++s->diffuse_index;
+    if (wants_vertex(selection, s->diffuse_index, s->selected)) {
+      sel = &s->open[s->selected];
+      FilterVertex& g = sel->geometry;
+      g.p = hit.p;
+      g.ng = hit.ng;
+      g.ns = hit.ns;
+      g.wo = -ray.d;
+      g.prev_p = s->prev_p;
+      g.prefix_distance = s->prev_distance;
+      g.segments = uint8_t(segments);
+      g.selected = uint8_t(s->selected);
+      sel->layers = layers;
+      sel->throughput = s->abs_beta;
+      for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
+      sel->after = Rgb();
+      if (probes.any()) probe_visibility(scene, tracer, hit, -ray.d, probes, counters, &g);
+      ++s->selected;
+      if (query_only && !selects_more(selection, s->selected)) return PtNext::end;
+    }
+  }
+
+  // Next event estimation: one light, one point on it; its contribution waits for the shadow ray.
+  if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat)) {
+    float select_prob;
+    const uint32_t li = scene.light_selection.sample(sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
+    const Light& light = scene.lights[li];
+    LightSample ls;
+    const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
+    if (sample_light(scene, light, hit.p, ul, &ls)) {
+      const Vec3 wi = frame.to_local(ls.wi);
+      const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
+      if (!is_black(f)) {
+        s->shadow_ray = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon);
+        ++counters->rays;
+        ++counters->shadow_rays;
+        const float pdf_light = select_prob * ls.pdf_w;
+        const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, bsdf_pdf(mat, wo, wi, TransportMode::radiance));
+        const float scale = fabsf(wi.z) * w / pdf_light;
+        s->shadow_pending = true;
+        if (sel) {
+          Rgb fl[kMaxBsdfLayers];
+          eval_layers(mat, layers, selection.split_layers, wo, wi, fl);
+          for (int l = 0; l < layers.count; ++l) s->shadow_value[l] = fl[l] * ls.li * scale;
+          s->shadow_vertex = s->selected - 1;
+        } else {
+          s->shadow_value[0] = s->beta * f * ls.li * scale;
+          s->shadow_vertex = -1;
+          s->shadow_owner = s->owner;
+        }
+      }
+    }
+  }
+
+  // Continue by BSDF sampling.
+  BsdfSample bs;
+  const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
+  if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) return PtNext::end;
+  s->abs_beta *= bs.weight;
+  if (caustics) s->caustic_chain = selectable ? (bs.delta ? 0 : 1) : (s->caustic_chain != 0 && bs.delta ? 2 : 0);
+  if (sel) {
+    Rgb fl[kMaxBsdfLayers];
+    eval_layers(mat, layers, selection.split_layers, wo, bs.wi, fl);
+    for (int l = 0; l < layers.count; ++l) sel->continuation[l] = fl[l] * (fabsf(bs.wi.z) / bs.pdf_w);
+    s->owner = s->selected - 1;
+    s->beta = Rgb(1.f);
+  } else {
+    s->beta *= bs.weight;
+  }
+  if (is_black(s->abs_beta)) return PtNext::end;
+  s->after_delta = bs.delta;
+  s->prev_bsdf_pdf = bs.pdf_w;
+  s->prev_p = hit.p;
+
+  if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
+    const float q = fminf(1.f, max_component(s->abs_beta));
+    if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) return PtNext::end;
+    s->beta *= 1.f / q;
+    s->abs_beta *= 1.f / q;
+  }
+  s->ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+  ++s->segments;
+  return PtNext::extend;
+}
+
+// The pending shadow ray's answer: the next event estimate counts unless it was blocked.
+PS_INLINE void pt_resolve_shadow(PtPathState* s, bool occluded) {
+  if (!s->shadow_pending) return;
+  s->shadow_pending = false;
+  if (occluded) return;
+  if (s->shadow_vertex >= 0) {
+    pt_detail::OpenVertex& o = s->open[s->shadow_vertex];
+    for (int l = 0; l < o.layers.count; ++l) o.nee[l] = s->shadow_value[l];
+  } else {
+    (s->shadow_owner < 0 ? s->prefix : s->open[s->shadow_owner].after) += s->shadow_value[0];
+  }
+}
+
+// The ended path as a PathSample: its prefix and its selected vertices' records.
+PS_INLINE void pt_finish(PtPathState* s, PathSample* out) {
+  out->prefix = s->prefix;
+  out->count = 0;
+  pt_detail::close_vertices(s->open, s->selected, out);
+}
+
 // `probes`: the visibility weight's rays at each selected vertex (none by default). `query_only`: the
 // path ends at its last selectable vertex, whose records then carry no contribution (their
 // contributions come from a filter's query: the anti-aliasing paths of Keller et al. 2014, sec. 3).
@@ -133,155 +347,20 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
                          const PtSettings& settings, PathCounters* counters, PathSample* out,
                          const VisibilityProbes& probes = {}, bool query_only = false,
                          const CausticMapView* caustics = nullptr) {
-  using namespace pt_detail;
-  const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
-  const VertexSelection& selection = settings.selection;
-  OpenVertex open[kMaxSelectedVertices];
-  int selected = 0, diffuse_index = 0;
-  Rgb prefix;
-  Rgb* radiance = &prefix;  // where gathered radiance goes: the prefix, or the last selected vertex
-  Rgb beta(1.f);            // throughput relative to that owner
-  Rgb abs_beta(1.f);        // throughput from the camera (Russian roulette)
-  bool after_delta = true;  // the camera "bounce" counts as delta: directly seen emission always counts
-  float prev_bsdf_pdf = 0.f;
-  Vec3 prev_p = ray.o;
-  float path_distance = 0.f, prev_distance = 0.f;
-  // With caustics: 1 after a gathering vertex's non-delta bounce, 2 once delta bounces alone
-  // followed it (emission found then belongs to the photon map), 0 otherwise.
-  int caustic_chain = 0;
-
-  for (int segments = 1;; ++segments) {
+  PtPathState s;
+  pt_begin(&s, ray);
+  for (;;) {
     SurfaceHit hit;
     ++counters->rays;
-    if (!tracer.intersect(ray, &hit)) {
-      if (scene.environment_light >= 0 && caustic_chain != 2) {
-        const Light& env = scene.lights[scene.environment_light];
-        if (after_delta || !settings.nee) {
-          *radiance += beta * environment_radiance(scene, env, ray.d);
-        } else if (settings.bsdf_sampling) {
-          const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * environment_pdf(scene, ray.d);
-          *radiance += beta * environment_radiance(scene, env, ray.d) * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
-        }
-      }
+    if (!tracer.intersect(s.ray, &hit)) {
+      pt_on_miss(scene, settings, &s);
       break;
     }
-    prev_distance = path_distance;
-    path_distance += hit.t;
-
-    if (hit.light != kNoLight && caustic_chain != 2) {
-      const Light& light = scene.lights[hit.light];
-      const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
-      if (!is_black(le)) {
-        if (after_delta || !settings.nee) {
-          *radiance += beta * le;
-        } else if (settings.bsdf_sampling) {
-          const float light_pdf_w =
-              scene.light_selection.probability(uint32_t(hit.light)) * light_pdf(scene, light, prev_p, hit.p, hit.ng);
-          *radiance += beta * le * combine_mis(settings, prev_bsdf_pdf, light_pdf_w);
-        }
-      }
-    }
-    if (segments >= max_segments) break;
-
-    Material textured;
-    const Material& mat = shading_material(scene, hit, &textured);
-    const Frame frame(hit.ns);
-    const Vec3 wo = frame.to_local(-ray.d);
-    const uint32_t v = uint32_t(segments - 1);
-
-    // Vertex selection for filtering.
-    OpenVertex* sel = nullptr;
-    BsdfLayers layers = bsdf_layers(mat);
-    if (!selection.split_layers) merge_layers(&layers);
-    const bool selectable = is_selectable(layers, selection);
-    if (selectable) {
-      // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
-      // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
-      // selected vertex's contribution (light arriving there from elsewhere, filtered with it).
-      if (caustics) *radiance += beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
-      ++diffuse_index;
-      if (wants_vertex(selection, diffuse_index, selected)) {
-        sel = &open[selected];
-        FilterVertex& g = sel->geometry;
-        g.p = hit.p;
-        g.ng = hit.ng;
-        g.ns = hit.ns;
-        g.wo = -ray.d;
-        g.prev_p = prev_p;
-        g.prefix_distance = prev_distance;
-        g.segments = uint8_t(segments);
-        g.selected = uint8_t(selected);
-        sel->layers = layers;
-        sel->throughput = abs_beta;
-        for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
-        sel->after = Rgb();
-        if (probes.any()) probe_visibility(scene, tracer, hit, -ray.d, probes, counters, &g);
-        ++selected;
-        if (query_only && !selects_more(selection, selected)) break;
-      }
-    }
-
-    // Next event estimation: one light, one point on it.
-    if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat)) {
-      float select_prob;
-      const uint32_t li = scene.light_selection.sample(sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
-      const Light& light = scene.lights[li];
-      LightSample ls;
-      const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
-      if (sample_light(scene, light, hit.p, ul, &ls)) {
-        const Vec3 wi = frame.to_local(ls.wi);
-        const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
-        if (!is_black(f)) {
-          const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon);
-          ++counters->rays;
-          ++counters->shadow_rays;
-          if (!tracer.occluded(shadow)) {
-            const float pdf_light = select_prob * ls.pdf_w;
-            const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, bsdf_pdf(mat, wo, wi, TransportMode::radiance));
-            const float scale = fabsf(wi.z) * w / pdf_light;
-            if (sel) {
-              Rgb fl[kMaxBsdfLayers];
-              eval_layers(mat, layers, selection.split_layers, wo, wi, fl);
-              for (int l = 0; l < layers.count; ++l) sel->nee[l] = fl[l] * ls.li * scale;
-            } else {
-              *radiance += beta * f * ls.li * scale;
-            }
-          }
-        }
-      }
-    }
-
-    // Continue by BSDF sampling.
-    BsdfSample bs;
-    const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
-    if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) break;
-    abs_beta *= bs.weight;
-    if (caustics) caustic_chain = selectable ? (bs.delta ? 0 : 1) : (caustic_chain != 0 && bs.delta ? 2 : 0);
-    if (sel) {
-      Rgb fl[kMaxBsdfLayers];
-      eval_layers(mat, layers, selection.split_layers, wo, bs.wi, fl);
-      for (int l = 0; l < layers.count; ++l) sel->continuation[l] = fl[l] * (fabsf(bs.wi.z) / bs.pdf_w);
-      radiance = &sel->after;
-      beta = Rgb(1.f);
-    } else {
-      beta *= bs.weight;
-    }
-    if (is_black(abs_beta)) break;
-    after_delta = bs.delta;
-    prev_bsdf_pdf = bs.pdf_w;
-    prev_p = hit.p;
-
-    if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
-      const float q = fminf(1.f, max_component(abs_beta));
-      if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) break;
-      beta *= 1.f / q;
-      abs_beta *= 1.f / q;
-    }
-    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+    const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, &s, probes, query_only, caustics);
+    if (s.shadow_pending) pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
+    if (next == PtNext::end) break;
   }
-  out->prefix = prefix;
-  out->count = 0;
-  close_vertices(open, selected, out);
+  pt_finish(&s, out);
 }
 
 // Plain path tracing: the unfiltered estimate of one path.

@@ -1,0 +1,172 @@
+#include "pathspace/gpu/cuda_wavefront_pt.h"
+
+#include <cuda_runtime.h>
+
+#include "pathspace/filters/vertex_buffer_view.h"
+#include "pathspace/gpu/cuda_check.h"
+#include "pathspace/gpu/cuda_event_timer.h"
+#include "pathspace/gpu/wavefront_stages.h"
+
+namespace pathspace::gpu {
+
+namespace {
+
+constexpr int kThreads = 128;
+uint32_t blocks_for(uint32_t n) { return (n + kThreads - 1) / kThreads; }
+
+// Sums per warp, then one atomic per warp and field (the pass's counters).
+__device__ void add_counters(PathCountersDevice* out, const PathCounters& c, uint32_t paths, uint32_t dropped) {
+  const unsigned mask = __activemask();
+  const uint32_t rays = __reduce_add_sync(mask, uint32_t(c.rays));
+  const uint32_t shadow = __reduce_add_sync(mask, uint32_t(c.shadow_rays));
+  paths = __reduce_add_sync(mask, paths);
+  dropped = __reduce_add_sync(mask, dropped);
+  if ((threadIdx.x & 31u) == uint32_t(__ffs(mask) - 1)) {
+    atomicAdd(&out->rays, (unsigned long long)rays);
+    atomicAdd(&out->shadow_rays, (unsigned long long)shadow);
+    atomicAdd(&out->paths, (unsigned long long)paths);
+    atomicAdd(&out->dropped, (unsigned long long)dropped);
+  }
+}
+
+// An ended path: its sample into the vertex buffer, or its value into the image (NaN/Inf dropped,
+// as the CPU's plain path tracing does).
+__device__ void finish(PtPathState* s, uint32_t path, const VertexBufferView* buffer, Rgb* image, uint32_t* dropped) {
+  PathSample sample;
+  pt_finish(s, &sample);
+  if (buffer) {
+    buffer->store(path, path, sample);
+    return;
+  }
+  Rgb v = sample.value();
+  if (!all_finite(v)) {
+    *dropped = 1;
+    v = Rgb();
+  }
+  image[path] = v;
+}
+
+struct StageParams {
+  SceneView scene;
+  BvhTracer tracer;
+  PtSettings settings;
+  uint64_t seed;
+  uint32_t pass;
+  VertexBufferView buffer;
+  bool filtered;
+  Rgb* image;
+};
+
+__global__ void camera_kernel(StageParams p, uint32_t n, PtPathState* states, uint32_t* queue) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  wavefront_camera(p.scene, p.seed, p.pass, i, &states[i]);
+  queue[i] = i;
+}
+
+__global__ void extend_kernel(StageParams p, const uint32_t* queue, const uint32_t* count, PtPathState* states, SurfaceHit* hits,
+                              uint8_t* found) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= *count) return;
+  const uint32_t path = queue[i];
+  found[path] = wavefront_extend(p.tracer, states[path], &hits[path]) ? 1 : 0;
+}
+
+__global__ void shade_kernel(StageParams p, const uint32_t* queue, const uint32_t* count, PtPathState* states, const SurfaceHit* hits,
+                             const uint8_t* found, PathQueue next, PathQueue shadow, uint8_t* ends_after_shadow,
+                             PathCountersDevice* counters) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= *count) return;
+  const uint32_t path = queue[i];
+  PathCounters c;
+  PtPathState* s = &states[path];
+  const WavefrontAfterShade after =
+      wavefront_shade(p.scene, p.tracer, p.settings, p.seed, p.pass, path, hits[path], found[path] != 0, s, &c);
+  uint32_t ended = 0, dropped = 0;
+  switch (after) {
+    case WavefrontAfterShade::extend: next.push(path); break;
+    case WavefrontAfterShade::shadow_then_extend:
+    case WavefrontAfterShade::shadow_then_end:
+      ends_after_shadow[path] = after == WavefrontAfterShade::shadow_then_end ? 1 : 0;
+      shadow.push(path);
+      break;
+    case WavefrontAfterShade::ended:
+      finish(s, path, p.filtered ? &p.buffer : nullptr, p.image, &dropped);
+      ended = 1;
+      break;
+  }
+  add_counters(counters, c, ended, dropped);
+}
+
+__global__ void shadow_kernel(StageParams p, const uint32_t* queue, const uint32_t* count, PtPathState* states,
+                              const uint8_t* ends_after_shadow, PathQueue next, PathCountersDevice* counters) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= *count) return;
+  const uint32_t path = queue[i];
+  PtPathState* s = &states[path];
+  wavefront_shadow(p.tracer, s);
+  uint32_t ended = 0, dropped = 0;
+  if (ends_after_shadow[path]) {
+    finish(s, path, p.filtered ? &p.buffer : nullptr, p.image, &dropped);
+    ended = 1;
+  } else {
+    next.push(path);
+  }
+  add_counters(counters, PathCounters{}, ended, dropped);
+}
+
+}  // namespace
+
+WavefrontPathTracer::WavefrontPathTracer(uint32_t paths)
+    : paths_(paths), states_(paths), hits_(paths), found_(paths), ends_after_shadow_(paths), queue_a_(paths), queue_b_(paths),
+      shadow_queue_(paths), counts_(3) {}
+
+size_t WavefrontPathTracer::bytes() const {
+  return states_.bytes() + hits_.bytes() + found_.bytes() + ends_after_shadow_.bytes() + queue_a_.bytes() + queue_b_.bytes() +
+         shadow_queue_.bytes() + counts_.bytes();
+}
+
+void WavefrontPathTracer::trace(const SceneView& scene, const BvhTracer& tracer, const PtSettings& settings, uint64_t seed,
+                                uint32_t pass, const VertexBufferView* buffer, Rgb* image, PathCountersDevice* counters,
+                                WavefrontStageTimes* times) {
+  const StageParams p{scene, tracer, settings, seed, pass, buffer ? *buffer : VertexBufferView{}, buffer != nullptr, image};
+  uint32_t* current = queue_a_.data();
+  uint32_t* next = queue_b_.data();
+  uint32_t* counts = counts_.data();  // [0] current, [1] next, [2] shadow
+  CudaEventTimer timer;
+  timer.start();
+  camera_kernel<<<blocks_for(paths_), kThreads>>>(p, paths_, states_.data(), current);
+  PS_CUDA_CHECK_LAUNCH("camera_kernel");
+  uint32_t n = paths_;
+  PS_CUDA_CHECK(cudaMemcpy(&counts[0], &n, sizeof n, cudaMemcpyHostToDevice));
+  timer.lap(&times->camera_ms);
+  while (n > 0) {
+    PS_CUDA_CHECK(cudaMemset(&counts[1], 0, 2 * sizeof(uint32_t)));
+    extend_kernel<<<blocks_for(n), kThreads>>>(p, current, &counts[0], states_.data(), hits_.data(), found_.data());
+    PS_CUDA_CHECK_LAUNCH("extend_kernel");
+    timer.lap(&times->extend_ms);
+    shade_kernel<<<blocks_for(n), kThreads>>>(p, current, &counts[0], states_.data(), hits_.data(), found_.data(),
+                                              PathQueue{next, &counts[1]}, PathQueue{shadow_queue_.data(), &counts[2]},
+                                              ends_after_shadow_.data(), counters);
+    PS_CUDA_CHECK_LAUNCH("shade_kernel");
+    timer.lap(&times->shade_ms);
+    uint32_t shadow_n = 0;
+    PS_CUDA_CHECK(cudaMemcpy(&shadow_n, &counts[2], sizeof shadow_n, cudaMemcpyDeviceToHost));
+    if (shadow_n > 0) {
+      shadow_kernel<<<blocks_for(shadow_n), kThreads>>>(p, shadow_queue_.data(), &counts[2], states_.data(), ends_after_shadow_.data(),
+                                                        PathQueue{next, &counts[1]}, counters);
+      PS_CUDA_CHECK_LAUNCH("shadow_kernel");
+    }
+    timer.lap(&times->shadow_ms);
+    times->extension_rays += n;
+    times->shadow_rays += shadow_n;
+    ++times->bounces;
+    PS_CUDA_CHECK(cudaMemcpy(&n, &counts[1], sizeof n, cudaMemcpyDeviceToHost));
+    PS_CUDA_CHECK(cudaMemcpy(&counts[0], &counts[1], sizeof n, cudaMemcpyDeviceToDevice));
+    uint32_t* t = current;
+    current = next;
+    next = t;
+  }
+}
+
+}  // namespace pathspace::gpu
