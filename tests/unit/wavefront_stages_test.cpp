@@ -44,6 +44,7 @@ Traced wavefront_order(const SceneView& view, const Accel& accel, const PtSettin
   Traced t;
   t.samples.resize(n);
   std::vector<PtPathState> states(n);
+  std::vector<pt_detail::OpenVertex> open(size_t(n) * kMaxSelectedVertices);
   std::vector<SurfaceHit> hits(n);
   std::vector<uint8_t> found(n), ends_after_shadow(n);
   std::vector<uint32_t> current(n), next(n), shadow(n);
@@ -51,7 +52,7 @@ Traced wavefront_order(const SceneView& view, const Accel& accel, const PtSettin
   std::vector<PathCounters> per_path(n);
   parallel_for(n, 256, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
-      wavefront_camera(view, seed, pass, uint32_t(i), &states[i]);
+      wavefront_camera(view, seed, pass, uint32_t(i), &states[i], &open[i * kMaxSelectedVertices]);
       current[i] = uint32_t(i);
     }
   });

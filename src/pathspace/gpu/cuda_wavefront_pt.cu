@@ -57,10 +57,12 @@ struct StageParams {
   Rgb* image;
 };
 
-__global__ void camera_kernel(StageParams p, uint32_t n, PtPathState* states, uint32_t* queue) {
+__global__ void camera_kernel(StageParams p, uint32_t n, PtPathState* states, pt_detail::OpenVertex* open, uint32_t* queue) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
-  wavefront_camera(p.scene, p.seed, p.pass, i, &states[i]);
+  PtPathState s;
+  wavefront_camera(p.scene, p.seed, p.pass, i, &s, &open[size_t(i) * kMaxSelectedVertices]);
+  states[i] = s;
   queue[i] = i;
 }
 
@@ -79,7 +81,8 @@ __global__ void shade_kernel(StageParams p, const uint32_t* queue, const uint32_
   if (i >= *count) return;
   const uint32_t path = queue[i];
   PathCounters c;
-  PtPathState* s = &states[path];
+  PtPathState local = states[path];  // the per-bounce part in registers; the open vertices stay in memory
+  PtPathState* s = &local;
   const WavefrontAfterShade after =
       wavefront_shade(p.scene, p.tracer, p.settings, p.seed, p.pass, path, hits[path], found[path] != 0, s, &c);
   uint32_t ended = 0, dropped = 0;
@@ -95,6 +98,7 @@ __global__ void shade_kernel(StageParams p, const uint32_t* queue, const uint32_
       ended = 1;
       break;
   }
+  if (!ended) states[path] = local;
   add_counters(counters, c, ended, dropped);
 }
 
@@ -103,13 +107,15 @@ __global__ void shadow_kernel(StageParams p, const uint32_t* queue, const uint32
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= *count) return;
   const uint32_t path = queue[i];
-  PtPathState* s = &states[path];
+  PtPathState local = states[path];
+  PtPathState* s = &local;
   wavefront_shadow(p.tracer, s);
   uint32_t ended = 0, dropped = 0;
   if (ends_after_shadow[path]) {
     finish(s, path, p.filtered ? &p.buffer : nullptr, p.image, &dropped);
     ended = 1;
   } else {
+    states[path] = local;
     next.push(path);
   }
   add_counters(counters, PathCounters{}, ended, dropped);
@@ -118,11 +124,11 @@ __global__ void shadow_kernel(StageParams p, const uint32_t* queue, const uint32
 }  // namespace
 
 WavefrontPathTracer::WavefrontPathTracer(uint32_t paths)
-    : paths_(paths), states_(paths), hits_(paths), found_(paths), ends_after_shadow_(paths), queue_a_(paths), queue_b_(paths),
+    : paths_(paths), states_(paths), open_(size_t(paths) * kMaxSelectedVertices), hits_(paths), found_(paths), ends_after_shadow_(paths), queue_a_(paths), queue_b_(paths),
       shadow_queue_(paths), counts_(3) {}
 
 size_t WavefrontPathTracer::bytes() const {
-  return states_.bytes() + hits_.bytes() + found_.bytes() + ends_after_shadow_.bytes() + queue_a_.bytes() + queue_b_.bytes() +
+  return states_.bytes() + open_.bytes() + hits_.bytes() + found_.bytes() + ends_after_shadow_.bytes() + queue_a_.bytes() + queue_b_.bytes() +
          shadow_queue_.bytes() + counts_.bytes();
 }
 
@@ -135,7 +141,7 @@ void WavefrontPathTracer::trace(const SceneView& scene, const BvhTracer& tracer,
   uint32_t* counts = counts_.data();  // [0] current, [1] next, [2] shadow
   CudaEventTimer timer;
   timer.start();
-  camera_kernel<<<blocks_for(paths_), kThreads>>>(p, paths_, states_.data(), current);
+  camera_kernel<<<blocks_for(paths_), kThreads>>>(p, paths_, states_.data(), open_.data(), current);
   PS_CUDA_CHECK_LAUNCH("camera_kernel");
   uint32_t n = paths_;
   PS_CUDA_CHECK(cudaMemcpy(&counts[0], &n, sizeof n, cudaMemcpyHostToDevice));

@@ -35,7 +35,8 @@ class WavefrontPathTracer {
 
  private:
   uint32_t paths_;
-  DeviceBuffer<PtPathState> states_;
+  DeviceBuffer<PtPathState> states_;                // the per-bounce part, copied in and out by each kernel
+  DeviceBuffer<pt_detail::OpenVertex> open_;         // kMaxSelectedVertices per path
   DeviceBuffer<SurfaceHit> hits_;
   DeviceBuffer<uint8_t> found_, ends_after_shadow_;
   DeviceBuffer<uint32_t> queue_a_, queue_b_, shadow_queue_;

@@ -30,9 +30,11 @@ struct PathQueue {
 // What shade decided for a path.
 enum class WavefrontAfterShade : uint8_t { ended, extend, shadow_then_extend, shadow_then_end };
 
-PS_INLINE void wavefront_camera(const SceneView& scene, uint64_t seed, uint32_t pass, uint32_t pixel, PtPathState* s) {
+// `open`: the path's room for its selected vertices (kMaxSelectedVertices of them).
+PS_INLINE void wavefront_camera(const SceneView& scene, uint64_t seed, uint32_t pass, uint32_t pixel, PtPathState* s,
+                                pt_detail::OpenVertex* open) {
   const Sampler sampler(seed, pixel, pass);
-  pt_begin(s, sample_camera_ray(scene.camera, sampler, pixel));
+  pt_begin(s, sample_camera_ray(scene.camera, sampler, pixel), open);
 }
 
 template <typename Tracer>

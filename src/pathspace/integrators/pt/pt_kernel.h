@@ -126,9 +126,12 @@ PS_INLINE void close_vertices(const OpenVertex* open, int count, PathSample* out
 // one thread; the GPU's wavefront path tracer (gpu/cuda_wavefront_pt.cu; Laine, Karras, Aila 2013)
 // keeps the state in device memory and runs each step as its own kernel over a queue of paths, so
 // both are the same arithmetic in the same order: the images agree bit for bit.
+// The selected vertices live outside the state (`open`, kMaxSelectedVertices of them, about 200
+// bytes each): they are written once per selection and read at the end, while the rest (about 170
+// bytes) changes every bounce, so the wavefront copies only that part in and out of each kernel.
 struct PtPathState {
   Ray ray;                   // the next ray to trace (extension)
-  pt_detail::OpenVertex open[kMaxSelectedVertices];
+  pt_detail::OpenVertex* open = nullptr;
   Rgb prefix;
   int owner = -1;            // where gathered radiance goes: -1 the prefix, k open[k].after
   Rgb beta{1.f};             // throughput relative to that owner
@@ -155,10 +158,10 @@ struct PtPathState {
 // What follows a step: trace s.ray next, or the path has ended (after its pending shadow ray).
 enum class PtNext : uint8_t { extend, end };
 
-// Field by field: the open vertices are written when selected, and a whole-struct assignment would
-// clear a kilobyte per path (the wavefront keeps millions of states in device memory).
-PS_INLINE void pt_begin(PtPathState* s, const Ray& ray) {
+// `open`: room for kMaxSelectedVertices selected vertices (written when selected, so not cleared).
+PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* open) {
   s->ray = ray;
+  s->open = open;
   s->prefix = Rgb();
   s->owner = -1;
   s->beta = s->abs_beta = Rgb(1.f);
@@ -347,8 +350,9 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
                          const PtSettings& settings, PathCounters* counters, PathSample* out,
                          const VisibilityProbes& probes = {}, bool query_only = false,
                          const CausticMapView* caustics = nullptr) {
+  pt_detail::OpenVertex open[kMaxSelectedVertices];
   PtPathState s;
-  pt_begin(&s, ray);
+  pt_begin(&s, ray, open);
   for (;;) {
     SurfaceHit hit;
     ++counters->rays;
