@@ -31,20 +31,6 @@ constexpr int kThreadsPerBlock = 128;
 
 using DeviceCounters = PathCountersDevice;
 
-__device__ void add_counters(DeviceCounters* out, uint32_t rays, uint32_t shadow_rays, uint32_t paths, uint32_t dropped) {
-  const unsigned mask = __activemask();
-  rays = __reduce_add_sync(mask, rays);
-  shadow_rays = __reduce_add_sync(mask, shadow_rays);
-  paths = __reduce_add_sync(mask, paths);
-  dropped = __reduce_add_sync(mask, dropped);
-  if ((threadIdx.x & 31u) == uint32_t(__ffs(mask) - 1)) {
-    atomicAdd(&out->rays, (unsigned long long)rays);
-    atomicAdd(&out->shadow_rays, (unsigned long long)shadow_rays);
-    atomicAdd(&out->paths, (unsigned long long)paths);
-    atomicAdd(&out->dropped, (unsigned long long)dropped);
-  }
-}
-
 struct PassParams {
   SceneView scene;
   BvhTracer tracer;

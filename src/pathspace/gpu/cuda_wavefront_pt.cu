@@ -14,21 +14,6 @@ namespace {
 constexpr int kThreads = 128;
 uint32_t blocks_for(uint32_t n) { return (n + kThreads - 1) / kThreads; }
 
-// Sums per warp, then one atomic per warp and field (the pass's counters).
-__device__ void add_counters(PathCountersDevice* out, const PathCounters& c, uint32_t paths, uint32_t dropped) {
-  const unsigned mask = __activemask();
-  const uint32_t rays = __reduce_add_sync(mask, uint32_t(c.rays));
-  const uint32_t shadow = __reduce_add_sync(mask, uint32_t(c.shadow_rays));
-  paths = __reduce_add_sync(mask, paths);
-  dropped = __reduce_add_sync(mask, dropped);
-  if ((threadIdx.x & 31u) == uint32_t(__ffs(mask) - 1)) {
-    atomicAdd(&out->rays, (unsigned long long)rays);
-    atomicAdd(&out->shadow_rays, (unsigned long long)shadow);
-    atomicAdd(&out->paths, (unsigned long long)paths);
-    atomicAdd(&out->dropped, (unsigned long long)dropped);
-  }
-}
-
 // An ended path: its sample into the vertex buffer, or its value into the image (NaN/Inf dropped,
 // as the CPU's plain path tracing does).
 __device__ void finish(PtPathState* s, uint32_t path, const VertexBufferView* buffer, Rgb* image, uint32_t* dropped) {
@@ -99,7 +84,7 @@ __global__ void shade_kernel(StageParams p, const uint32_t* queue, const uint32_
       break;
   }
   if (!ended) states[path] = local;
-  add_counters(counters, c, ended, dropped);
+  add_counters(counters, uint32_t(c.rays), uint32_t(c.shadow_rays), ended, dropped);
 }
 
 __global__ void shadow_kernel(StageParams p, const uint32_t* queue, const uint32_t* count, PtPathState* states,
@@ -118,7 +103,7 @@ __global__ void shadow_kernel(StageParams p, const uint32_t* queue, const uint32
     states[path] = local;
     next.push(path);
   }
-  add_counters(counters, PathCounters{}, ended, dropped);
+  add_counters(counters, 0u, 0u, ended, dropped);
 }
 
 }  // namespace

@@ -10,14 +10,11 @@
 
 #include "pathspace/accel/bvh_tracer.h"
 #include "pathspace/filters/vertex_buffer_view.h"
+#include "pathspace/gpu/device_counters.h"
 #include "pathspace/gpu/device_buffer.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 
 namespace pathspace::gpu {
-
-struct PathCountersDevice {
-  unsigned long long rays, shadow_rays, paths, dropped;
-};
 
 struct WavefrontStageTimes {
   double camera_ms = 0, extend_ms = 0, shade_ms = 0, shadow_ms = 0;
