@@ -40,21 +40,6 @@ namespace pathspace::cli {
 
 namespace {
 
-// The integrator, filter and their options, checked against the registry (usage errors name the
-// integrators or filter an option belongs to).
-RenderConfig render_config(const RenderOptions& o) {
-  try {
-    RenderConfig config = configure_render(o.integrator, o.filter, o.registry.given());
-    config.seed = o.seed;
-    config.threads = o.threads;
-    config.device = o.device;
-    check_device(config.device, config.integrator, config.filter.name);
-    return config;
-  } catch (const OptionError& e) {
-    throw UsageError(e.what());
-  }
-}
-
 // The names of the registered filters, with "none".
 std::vector<std::string> filter_choices() {
   std::vector<std::string> names = {FilterChoice::kNone};
@@ -151,7 +136,7 @@ namespace {
 // The render itself: `resumed` is the checkpoint being continued, or null.
 int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resumed) {
   // Validate everything before the (possibly long) render.
-  const RenderConfig config = render_config(o);
+  const RenderConfig config = check_render_options(o, cmd);
   if (!o.frames.empty()) return render_frame_sequence(o, config);
   if (resumed && o.spp == 0 && o.time_s <= 0.0)
     throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
@@ -263,10 +248,30 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
 
 }  // namespace
 
-int run_render_command(const RenderOptions& o, const CLI::App& cmd) {
-  // An empty positional is a mistake (an unset shell variable), not a request for the default scene.
+namespace {
+// An empty positional is a mistake (an unset shell variable), not a request for the default scene.
+void check_scene_argument(const RenderOptions& o, const CLI::App& cmd) {
   if (cmd.get_option("scene")->count() > 0 && o.scene.empty())
     throw UsageError("the scene is an empty string", "run 'pathspace info --scenes' for the list, or pass a scene file");
+}
+}  // namespace
+
+RenderConfig check_render_options(const RenderOptions& o, const CLI::App& cmd) {
+  check_scene_argument(o, cmd);
+  try {
+    RenderConfig config = configure_render(o.integrator, o.filter, o.registry.given());
+    config.seed = o.seed;
+    config.threads = o.threads;
+    config.device = o.device;
+    check_device(config.device, config.integrator, config.filter.name);
+    return config;
+  } catch (const OptionError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+int run_render_command(const RenderOptions& o, const CLI::App& cmd) {
+  check_scene_argument(o, cmd);  // the rest is checked by render(), after a resume merged the checkpoint's options
   if (o.resume.empty()) return render(o, cmd, nullptr);
   const Checkpoint checkpoint = read_checkpoint(o.resume);
   // The integrator and filter first: the checkpoint's other options may not apply to another one.

@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "pathspace/session/render_config.h"
+
 #include "pathspace/io/file_bytes.h"
 #include "registry_options.h"
 
@@ -55,5 +57,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* options);
 // status (0, or 128 + signal when interrupted). Throws UsageError for invalid options,
 // pathspace::Error for failures.
 int run_render_command(const RenderOptions& options, const CLI::App& cmd);
+// The checks made before anything is loaded: the scene argument, and the integrator, filter, device
+// and their options against the registry. Throws UsageError naming the option.
+RenderConfig check_render_options(const RenderOptions& options, const CLI::App& cmd);
 
 }  // namespace pathspace::cli

@@ -1,0 +1,102 @@
+#include "cli_app.h"
+
+#include <cstdio>
+#include <exception>
+
+#include <fmt/format.h>
+
+#include "pathspace/base/printable.h"
+#include "pathspace/options/option_spec.h"
+#include "usage_error.h"
+
+namespace pathspace::cli {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+// CLI11 messages can span lines; the contract is one line per error. Every message passes through
+// here, so input it quotes (a scene file's bytes, a command-line word) is shown with escapes.
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return printable(s);
+}
+
+// CLI11 reports a word that is no command as an unexpected argument; name the commands instead.
+void check_command_word(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->check_name(argv[1])) return;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  throw UsageError("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")", "run 'pathspace --help' for usage");
+}
+
+}  // namespace
+
+CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tracing renderer", "pathspace") {
+  app.require_subcommand(1);
+  render_cmd = add_render_command(app, &render_options);
+  info_cmd = add_info_command(app, &info_options);
+  compare_cmd = add_compare_command(app, &compare_options);
+  study_cmd = add_study_command(app, &study_options);
+}
+
+void CliApp::parse(int argc, char** argv) {
+  check_command_word(app, argc, argv);
+  app.parse(argc, argv);
+}
+
+int CliApp::run() {
+  if (render_cmd->parsed()) return run_render_command(render_options, *render_cmd);
+  if (info_cmd->parsed()) return run_info_command(info_options);
+  if (compare_cmd->parsed()) return run_compare_command(compare_options);
+  if (study_cmd->parsed()) return run_study_command(study_options);
+  return 0;
+}
+
+std::string CliApp::command_name() const {
+  if (render_cmd->parsed()) return "pathspace render";
+  if (info_cmd->parsed()) return "pathspace info";
+  if (compare_cmd->parsed()) return "pathspace compare";
+  if (study_cmd->parsed()) return "pathspace study " + study_options.study;
+  return "pathspace";
+}
+
+int run_cli(int argc, char** argv) {
+  CliApp cli;
+  try {
+    cli.parse(argc, argv);
+    return cli.run();
+  } catch (const CLI::CallForHelp& e) {
+    return cli.app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const std::string sub = cli.render_cmd->parsed()    ? " render"
+                            : cli.info_cmd->parsed()    ? " info"
+                            : cli.compare_cmd->parsed() ? " compare"
+                            : cli.study_cmd->parsed()   ? " study"
+                                                        : "";
+    fmt::print(stderr, "pathspace{}: error: {} (run 'pathspace{} --help' for usage)\n", sub, one_line(e.what()), sub);
+    return kExitUsage;
+  } catch (const UsageError& e) {
+    const std::string command = cli.command_name();
+    const std::string hint = e.hint().empty() ? "run '" + command + " --help' for usage" : e.hint();
+    fmt::print(stderr, "{}: error: {} ({})\n", command, one_line(e.what()), hint);
+    return kExitUsage;
+  } catch (const OptionError& e) {
+    const std::string command = cli.command_name();
+    fmt::print(stderr, "{}: error: {} (run '{} --help' for usage)\n", command, one_line(e.what()), command);
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: error: {}\n", cli.command_name(), one_line(e.what()));
+    return kExitFailure;
+  }
+}
+
+}  // namespace pathspace::cli
