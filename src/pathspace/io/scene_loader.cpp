@@ -13,6 +13,7 @@
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
 #include "pathspace/io/obj_loader.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
+#include "pathspace/options/option_spec.h"
 #include "pathspace/io/ply_reader.h"
 
 namespace pathspace {
@@ -84,8 +85,23 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
 }
 
-Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
-                 SceneFileSettings* settings) {
+namespace {
+// Every error of loading `path` names a file: one raised without a location by code the loaders
+// share (the camera framing of apply_camera_options, say) gets the scene file's.
+template <typename F>
+auto naming_the_file(const std::string& path, F&& load) -> decltype(load()) {
+  try {
+    return load();
+  } catch (const OptionError&) {
+    throw;  // a usage error (a bad --fov) stays one
+  } catch (const Error& e) {
+    if (!e.location().file.empty()) throw;
+    throw Error(FileLoc{path}, e.what());
+  }
+}
+
+Scene load_scene_file(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
+                      SceneFileSettings* settings) {
   LoadWarnings w(warnings);
   const std::string ext = scene_file_extension(path);
   if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
@@ -110,15 +126,22 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::
   scene.finalize();
   return scene;
 }
+}  // namespace
+
+Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
+                 SceneFileSettings* settings) {
+  return naming_the_file(path, [&] { return load_scene_file(path, options, warnings, settings); });
+}
 
 std::function<Scene(double seconds)> load_scene_animation(const std::string& path, const SceneLoadOptions& options,
                                                           std::vector<std::string>* warnings) {
   const std::string ext = scene_file_extension(path);
   if (ext != ".gltf" && ext != ".glb") return {};
   LoadWarnings w(warnings);
-  auto animation = std::make_shared<gltf::GltfAnimation>(path, options, &w);  // shared: std::function copies its target
+  // shared: std::function copies its target
+  auto animation = naming_the_file(path, [&] { return std::make_shared<gltf::GltfAnimation>(path, options, &w); });
   if (!animation->animated()) return {};
-  return [animation](double seconds) { return animation->scene_at(seconds); };
+  return [animation, path](double seconds) { return naming_the_file(path, [&] { return animation->scene_at(seconds); }); };
 }
 
 }  // namespace pathspace
