@@ -22,9 +22,13 @@ TEST(CliFuzzCorpus, EveryInputGivesItsOutcome) {
     bytes << in.rdbuf();
     const std::string name = e.path().filename().string();
     const std::string outcome = pathspace::fuzz::parse_cli_words(pathspace::fuzz::cli_words(bytes.str()));
-    if (name.rfind("valid_", 0) == 0) EXPECT_EQ(outcome, "parsed") << name;
-    if (name.rfind("usage_", 0) == 0) EXPECT_EQ(outcome, "usage") << name;
-    if (name.rfind("help_", 0) == 0) EXPECT_EQ(outcome, "help") << name;
+    if (name.rfind("valid_", 0) == 0) {
+      EXPECT_EQ(outcome, "parsed") << name;
+    } else if (name.rfind("usage_", 0) == 0) {
+      EXPECT_EQ(outcome, "usage") << name;
+    } else if (name.rfind("help_", 0) == 0) {
+      EXPECT_EQ(outcome, "help") << name;
+    }
     ++files;
   }
   EXPECT_GE(files, 10u);

@@ -46,15 +46,9 @@
 // which matters for --write-every (docs/benchmarks.md, "Checkpoints and periodic outputs").
 #define STBIW_ZLIB_COMPRESS pathspace_png_deflate
 // Debian's stb_image.h calls memcpy with a null source and length 0 on some damaged PNGs: undefined
-// but harmless, and third-party. Under clang's UBSan (the fuzz build) that one check is switched
-// off for stb's functions only, so fuzzing goes on past it (docs/testing.md, "Fuzzing").
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((no_sanitize("nonnull-attribute"))), apply_to = function)
-#endif
+// but harmless, and third-party. Sanitizer and fuzz builds compile this file without UBSan's
+// nonnull check (src/pathspace/CMakeLists.txt; docs/testing.md, "Fuzzing").
 #include <stb_image.h>
-#if defined(__clang__)
-#pragma clang attribute pop
-#endif
 #include <zlib.h>
 // The zlib level of the PNG being encoded on this thread (ImageEncoding: fast = Z_BEST_SPEED).
 static thread_local int pathspace_png_level = Z_DEFAULT_COMPRESSION;
