@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pathspace/filters/vertex_buffer_file.h"
+#include "pathspace/gpu/cuda_event_timer.h"
 #include "pathspace/gpu/cuda_hashed_filter.h"
 #include "pathspace/gpu/cuda_vertex_buffer.h"
 
@@ -24,29 +25,6 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
 }
-
-class Timer {
- public:
-  Timer() {
-    PS_CUDA_CHECK(cudaEventCreate(&a_));
-    PS_CUDA_CHECK(cudaEventCreate(&b_));
-  }
-  ~Timer() {
-    cudaEventDestroy(a_);
-    cudaEventDestroy(b_);
-  }
-  void start() { PS_CUDA_CHECK(cudaEventRecord(a_)); }
-  double stop_ms() {
-    PS_CUDA_CHECK(cudaEventRecord(b_));
-    PS_CUDA_CHECK(cudaEventSynchronize(b_));
-    float ms = 0.f;
-    PS_CUDA_CHECK(cudaEventElapsedTime(&ms, a_, b_));
-    return double(ms);
-  }
-
- private:
-  cudaEvent_t a_ = nullptr, b_ = nullptr;
-};
 
 // One 32-byte read-modify-write per vertex into a random cell (no atomics: the memory system's limit
 // for the access pattern of accumulation, without the cost of the atomics themselves).
@@ -127,12 +105,12 @@ Row run_file(const std::string& path, int runs) {
   const size_t half = size_t(row.bytes / 2);
   gpu::DeviceBuffer<uint8_t> from(half), to(half);
   from.fill_bytes(1);
-  Timer timer;
+  gpu::CudaEventTimer timer;
   std::vector<double> copy, rmw;
   for (int k = 0; k < runs + 5; ++k) {
     timer.start();
     PS_CUDA_CHECK(cudaMemcpyAsync(to.data(), from.data(), half, cudaMemcpyDeviceToDevice));
-    const double ms = timer.stop_ms();
+    const double ms = timer.lap();
     if (k >= 5) copy.push_back(ms);
   }
   row.copy_ms = median(copy);
@@ -144,7 +122,7 @@ Row run_file(const std::string& path, int runs) {
     timer.start();
     random_rmw_kernel<<<unsigned((n + 255) / 256), 256>>>(table.data(), row.cells - 1, n);
     PS_CUDA_CHECK_LAUNCH("random_rmw_kernel");
-    const double ms = timer.stop_ms();
+    const double ms = timer.lap();
     if (k >= 5) rmw.push_back(ms);
   }
   row.rmw_ms = median(rmw);

@@ -12,6 +12,7 @@
 #include "pathspace/base/error.h"
 #include "pathspace/filters/hashed_filter_keys.h"
 #include "pathspace/filters/hashed_filter_steps.h"
+#include "pathspace/filters/hashed_filter_limits.h"
 #include "pathspace/filters/local_voxel_cache.h"
 #include "pathspace/hashing/voxel_key_batch.h"
 #include "pathspace/parallel/parallel_for.h"
@@ -54,12 +55,9 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
     : settings_(settings),
       width_(camera.width),
       height_(camera.height),
-      table_(uint64_t(std::max(1.0, double(settings.table_factor) * double(pixels))), settings.max_probes),
+      table_(hashed_filter_table_cells(settings, pixels), settings.max_probes),
       camera_(camera) {
-  if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
-  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
-      settings.key.direction_bins > kMaxKeyBins)
-    throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
+  check_hashed_filter_settings(settings);
   // The projected size of one pixel at distance 1 (sec. 4: "s-times the projected size of a pixel").
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
   if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);

@@ -26,17 +26,22 @@ class CudaEventTimer {
     stream_ = stream;
     PS_CUDA_CHECK(cudaEventRecord(previous_, stream_));
   }
-  // Milliseconds since start() or the previous lap, added to *sum_ms (and returned).
-  double lap(double* sum_ms) {
+  // Milliseconds since start() or the previous lap.
+  double lap() {
     PS_CUDA_CHECK(cudaEventRecord(now_, stream_));
     PS_CUDA_CHECK(cudaEventSynchronize(now_));
     float ms = 0.f;
     PS_CUDA_CHECK(cudaEventElapsedTime(&ms, previous_, now_));
-    *sum_ms += double(ms);
     cudaEvent_t t = previous_;
     previous_ = now_;
     now_ = t;
     return double(ms);
+  }
+  // The same, added to *sum_ms.
+  double lap(double* sum_ms) {
+    const double ms = lap();
+    *sum_ms += ms;
+    return ms;
   }
 
  private:

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/filters/hashed_filter_limits.h"
 #include "pathspace/filters/overflow_settling.h"
 
 namespace pathspace::gpu {
@@ -221,14 +222,6 @@ __global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table,
 
 unsigned blocks_for(size_t n) { return unsigned((n + kBlock - 1) / kBlock); }
 
-uint64_t table_cells(const HashedFilterSettings& s, size_t pixels) {
-  uint64_t want = uint64_t(std::max(1.0, double(s.table_factor) * double(pixels)));
-  if (want < uint64_t(kFingerprintsPerLine)) want = kFingerprintsPerLine;
-  uint64_t n = 1;
-  while (n < want) n <<= 1;
-  if (n > (uint64_t(1) << 31)) throw Error("the voxel hash table is limited to 2^31 cells");
-  return n;
-}
 
 // Events of one pass, released with it.
 struct PassEvents {
@@ -256,19 +249,14 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, const P
 
 CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float pixel_angle, size_t pixels)
     : settings_(settings) {
-  // HashedFilter's checks, in its words.
-  if (!(settings.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
-  if (settings.key.normal_bins < 1 || settings.key.direction_bins < 1 || settings.key.normal_bins > kMaxKeyBins ||
-      settings.key.direction_bins > kMaxKeyBins)
-    throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
-  if (settings.max_probes < 1) throw Error("the probe limit must be at least 1");
+  check_hashed_filter_settings(settings);  // HashedFilter's checks
   if (settings.temporal.enabled())
     throw Error("the GPU hashed filter keeps no table across passes: --temporal is not supported with --device cuda");
   if (settings.debug_images)
     throw Error("the GPU hashed filter writes no debug images: --aov is not supported with --device cuda");
   settings_.key.pixel_angle = pixel_angle;  // as HashedFilter: sec. 4, s times the projected pixel size
   steps_ = pathspace::step_settings(settings_);
-  cells_ = table_cells(settings_, pixels);
+  cells_ = hashed_filter_table_cells(settings_, pixels);  // HashedFilter's table size
   fingerprints_.resize(cells_);
   cells_buffer_.resize(cells_);
   if (settings_.multi_level) {

@@ -25,17 +25,9 @@ T* allocate_lines(uint64_t count) {
 
 void VoxelHashTable::FreeDeleter::operator()(void* p) const { std::free(p); }
 
-uint64_t next_power_of_two(uint64_t x) {
-  uint64_t p = 1;
-  while (p < x) p <<= 1;
-  return p;
-}
-
 VoxelHashTable::VoxelHashTable(uint64_t cells, int max_probes) {
   if (max_probes < 1) throw Error("the probe limit must be at least 1");
-  const uint64_t n = next_power_of_two(cells < kFingerprintsPerLine ? kFingerprintsPerLine : cells);
-  // The filter keeps each vertex's cell as a signed 32-bit index (negative: not in the table).
-  if (n > (uint64_t(1) << 31)) throw Error("the voxel hash table is limited to 2^31 cells");
+  const uint64_t n = voxel_table_cells(cells);
   fingerprints_.reset(allocate_lines<uint32_t>(n));
   cells_.reset(allocate_lines<VoxelCell>(n));
   view_.fingerprints = fingerprints_.get();

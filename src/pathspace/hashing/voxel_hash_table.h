@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "pathspace/base/error.h"
 #include "pathspace/hashing/voxel_hash_table_view.h"
 
 namespace pathspace {
@@ -42,6 +43,19 @@ class VoxelHashTable {
   VoxelHashTableView view_;
 };
 
-uint64_t next_power_of_two(uint64_t x);
+inline uint64_t next_power_of_two(uint64_t x) {
+  uint64_t p = 1;
+  while (p < x) p <<= 1;
+  return p;
+}
+
+// The size of a table asked for `requested` cells: a power of two, at least one cache line of
+// fingerprints. Throws pathspace::Error beyond 2^31 cells (the filters keep each vertex's cell as a
+// signed 32-bit index; negative: not in the table).
+inline uint64_t voxel_table_cells(uint64_t requested) {
+  const uint64_t n = next_power_of_two(requested < kFingerprintsPerLine ? kFingerprintsPerLine : requested);
+  if (n > (uint64_t(1) << 31)) throw Error("the voxel hash table is limited to 2^31 cells");
+  return n;
+}
 
 }  // namespace pathspace

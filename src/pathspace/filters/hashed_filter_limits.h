@@ -1,0 +1,32 @@
+// What both hashed filters (HashedFilter on the CPU, gpu/cuda_hashed_filter.h on the GPU) check of
+// their settings, and the table size they derive from them, in one place: the GPU filter's output
+// equals the CPU's bit for bit only with the same table. Header-only (no TBB), so the standalone
+// GPU benchmark (bench/cuda) compiles it.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "pathspace/base/error.h"
+#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/hashing/voxel_hash_table.h"
+
+namespace pathspace {
+
+// Throws pathspace::Error naming the option.
+inline void check_hashed_filter_settings(const HashedFilterSettings& s) {
+  if (!(s.key.psf_scale > 0.f)) throw Error("the filter scale (--psf-scale) must be positive");
+  if (s.key.normal_bins < 1 || s.key.direction_bins < 1 || s.key.normal_bins > kMaxKeyBins || s.key.direction_bins > kMaxKeyBins)
+    throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
+  if (s.max_probes < 1) throw Error("the probe limit must be at least 1");
+}
+
+// Cells of the table (each level's) for an image of `pixels` pixels: table_factor per pixel,
+// rounded up to a power of two (voxel_table_cells).
+inline uint64_t hashed_filter_table_cells(const HashedFilterSettings& s, size_t pixels) {
+  return voxel_table_cells(uint64_t(std::max(1.0, double(s.table_factor) * double(pixels))));
+}
+
+}  // namespace pathspace
