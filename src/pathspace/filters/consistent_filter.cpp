@@ -36,36 +36,9 @@ uint64_t morton3(uint32_t x, uint32_t y, uint32_t z) { return spread21(x) | spre
 
 bool finite(const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 
-// The binary weights of sec. 2.1, w_ij in {0, 1}. Vertices of other layers or other places in
-// their paths estimate other quantities and are never averaged.
-struct Similarity {
-  const ConsistentFilterSettings& s;
-
-  bool operator()(const ConsistentFilter::CellVertex& a, const ConsistentFilter::CellVertex& b) const {
-    if (a.layer != b.layer || a.selected != b.selected) return false;
-    if ((s.weights & kWeightNormal) && dot(a.normal, b.normal) < s.normal_threshold) return false;
-    if (s.weights & kWeightAlbedo) {
-      const Rgb d = a.throughput - b.throughput;
-      if (std::fabs(d.r) > s.albedo_threshold || std::fabs(d.g) > s.albedo_threshold || std::fabs(d.b) > s.albedo_threshold)
-        return false;
-      if (a.layer != kLayerDiffuse && dot(a.incident, b.incident) < s.direction_threshold) return false;
-    }
-    if (s.weights & kWeightVisibility) {
-      if (a.visible_lights != b.visible_lights) return false;
-      if (!similar_lengths(a.open_distance, b.open_distance, s.visibility_threshold)) return false;
-    }
-    return true;
-  }
-
-  // Hemisphere rays (sec. 2.1): an escaping ray (infinite length) matches only another one.
-  static bool similar_lengths(float a, float b, float threshold) {
-    if (a == b) return true;
-    if (std::isinf(a) || std::isinf(b)) return false;
-    return std::fabs(a - b) <= threshold * std::max(a, b);
-  }
-};
-
-ConsistentFilter::CellVertex cell_vertex(const VertexBuffer& b, size_t i) {
+// What the binary weights of sec. 2.1 (w_ij in {0, 1}) compare. Vertices of other layers or other
+// places in their paths estimate other quantities and are never averaged (consistent_gather.h).
+SimilarityKey similarity_key(const VertexBuffer& b, size_t i) {
   return {b.shading_normal[i], b.incident[i], b.throughput[i], b.visible_lights[i], b.open_distance[i], b.layer[i], b.selected[i]};
 }
 
@@ -86,10 +59,9 @@ void ConsistentFilter::begin_frame(const PerspectiveCamera& camera) {
 size_t ConsistentFilter::bytes_per_record() {
   // The grid's records (and their compacted copy) and slots, the slot index, each vertex's data in
   // batch order (weights' data, contribution, radius, and a copy of the radius for the median) and
-  // in cell order (weights' data, radius), the two contribution arrays of the iteration and the
-  // queries' data.
+  // in cell order (the gather's arrays, radius) and the two contribution arrays of the iteration.
   return 2 * sizeof(GridRecord) + 2 * sizeof(GridSlot) + sizeof(uint32_t) + sizeof(BatchVertex) + sizeof(float) +
-         sizeof(CellVertex) + sizeof(float) + 3 * sizeof(Rgb);
+         GatherData::bytes_per_record() + sizeof(float) + 2 * sizeof(Rgb);
 }
 
 FilterNeeds ConsistentFilter::needs() const {
@@ -167,11 +139,11 @@ void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, st
   values->assign(slots, Rgb());
   found->assign(slots, 0);
   const size_t linked = batch_radius_scale_ > 0.0 ? grid_.compacted_records() : 0;
-  const GridRecord* base = linked ? &grid_.record(0) : nullptr;
-  const Similarity similar{settings_};
+  const SimilarityWeights weights(settings_);
   std::atomic<uint64_t> queries{0}, empty{0};
   parallel_for(q.paths(), 1024, [&](size_t begin, size_t end) {
     uint64_t local_queries = 0, local_empty = 0;
+    CellRangeCache cache;
     for (size_t path = begin; path < end; ++path)
       for (int r = 0; r < q.count[path]; ++r) {
         const size_t i = q.slot(path, r);
@@ -182,20 +154,12 @@ void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, st
           continue;
         }
         // Eq. 1 around a point that is not one of the data points (fig. 5): no central contribution.
-        const CellVertex me = cell_vertex(q, i);
-        double sum[3] = {0.0, 0.0, 0.0};
-        uint32_t count = 0;
-        grid_.for_each_in_radius(q.position[i], radius, [&](const GridRecord& rec, float) {
-          const size_t d = size_t(&rec - base);
-          if (!finite(query_data_[d]) || !similar(me, cell_vertex_[d])) return;
-          sum[0] += query_data_[d].r, sum[1] += query_data_[d].g, sum[2] += query_data_[d].b;
-          ++count;
-        });
-        if (count == 0) {
+        const GatherSum sum = gather_.gather(grid_, GatherQuery{q.position[i], radius, similarity_key(q, i)}, weights, &cache);
+        if (sum.count == 0) {
           ++local_empty;
           continue;
         }
-        (*values)[i] = Rgb(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
+        (*values)[i] = Rgb(float(sum.r / sum.count), float(sum.g / sum.count), float(sum.b / sum.count));
         (*found)[i] = 1;
       }
     queries += local_queries;
@@ -218,7 +182,7 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
       const size_t i = slots[k];
       const float r = float(double(initial_radius(b, i)) * radius_scale);
       const bool usable = all_finite(b.position[i]) && std::isfinite(r) && r > 0.f;
-      batch_vertex_[k] = {cell_vertex(b, i), b.contribution[i], usable ? r : 0.f};
+      batch_vertex_[k] = {similarity_key(b, i), b.contribution[i], usable ? r : 0.f};
     }
   });
   std::vector<float> valid_radii;
@@ -240,14 +204,14 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
   // hits 10% slower (docs/benchmarks.md).
   const size_t linked = grid_.compacted_records();
   const GridRecord* base = linked ? &grid_.record(0) : nullptr;
-  cell_vertex_.resize(linked);
+  gather_.resize(linked);
   cell_radius_.resize(linked);
   in_.resize(linked);
   out_.resize(linked);
   parallel_for(linked, 4096, [&](size_t begin, size_t end) {
     for (size_t c = begin; c < end; ++c) {
       const BatchVertex& v = batch_vertex_[base[c].payload];
-      cell_vertex_[c] = v.vertex;
+      gather_.set(c, base[c].position, v.key);
       cell_radius_[c] = v.radius;
       in_[c] = v.contribution;
     }
@@ -267,15 +231,18 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
   });
   std::sort(cell_order_.begin(), cell_order_.end());
   cell_begin_.push_back(uint32_t(linked));
-  const Similarity similar{settings_};
+  const SimilarityWeights weights(settings_);
   std::atomic<uint32_t> largest{0};
   std::atomic<uint64_t> averaged{0};
   const int iterations = std::max(1, settings_.iterations);
   for (int iteration = 0; iteration < iterations; ++iteration) {
-    if (settings_.aa_paths > 0 && iteration == iterations - 1) query_data_ = in_;
+    // After the last iteration, what the query-only paths average: the buffer in_ swaps into out_,
+    // which is left alone until the next batch sets its values.
+    gather_.set_values(in_);
     parallel_for(cells, 64, [&](size_t begin, size_t end) {
       uint32_t local_largest = 0;
       uint64_t local_averaged = 0;
+      CellRangeCache cache;
       for (size_t q = begin; q < end; ++q)
       for (size_t c = cell_begin_[cell_order_[q].second], last = cell_begin_[cell_order_[q].second + 1]; c < last; ++c) {
         if (!finite(in_[c])) {
@@ -283,22 +250,15 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
           continue;
         }
         // Eq. 1 with binary weights: the mean over the similar vertices in the ball, x_i included.
-        double sum[3] = {0.0, 0.0, 0.0};
-        uint32_t count = 0;
-        grid_.for_each_in_radius(base[c].position, cell_radius_[c], [&](const GridRecord& rec, float) {
-          const size_t d = size_t(&rec - base);
-          if (!finite(in_[d]) || !similar(cell_vertex_[c], cell_vertex_[d])) return;
-          sum[0] += in_[d].r, sum[1] += in_[d].g, sum[2] += in_[d].b;
-          ++count;
-        });
-        if (count == 0) {  // not even itself (a degenerate vertex): keep its own value
+        const GatherSum sum = gather_.gather(grid_, GatherQuery{gather_.position(c), cell_radius_[c], gather_.key(c)}, weights, &cache);
+        if (sum.count == 0) {  // not even itself (a degenerate vertex): keep its own value
           out_[c] = in_[c];
           continue;
         }
         // Divided, not multiplied by 1 / count: the mean of equal values is then that value exactly.
-        out_[c] = Rgb(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
-        local_largest = std::max(local_largest, count);
-        local_averaged += count;
+        out_[c] = Rgb(float(sum.r / sum.count), float(sum.g / sum.count), float(sum.b / sum.count));
+        local_largest = std::max(local_largest, sum.count);
+        local_averaged += sum.count;
       }
       uint32_t seen = largest.load();
       while (local_largest > seen && !largest.compare_exchange_weak(seen, local_largest)) {}

@@ -33,6 +33,7 @@
 
 #include "pathspace/camera/perspective_camera.h"
 #include "pathspace/filters/consistent_filter_settings.h"
+#include "pathspace/filters/consistent_gather.h"
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/hashgrid/hash_grid.h"
 
@@ -72,16 +73,8 @@ class ConsistentFilter final : public PathSpaceFilter {
   size_t batch_memory_bytes() const { return batch_bytes_; }
   static size_t bytes_per_record();
 
-  // What the weights compare, per vertex, stored in the grid's cell order.
-  struct CellVertex {
-    Vec3 normal, incident;
-    Rgb throughput;
-    uint32_t visible_lights = 0;
-    float open_distance = 0.f;
-    uint8_t layer = 0, selected = 0;
-  };
   struct BatchVertex {
-    CellVertex vertex;
+    SimilarityKey key;
     Rgb contribution;
     float radius = 0.f;
   };
@@ -104,12 +97,11 @@ class ConsistentFilter final : public PathSpaceFilter {
   // Scratch, reused between batches.
   HashGrid grid_;
   std::vector<BatchVertex> batch_vertex_;  // per batch vertex
-  std::vector<CellVertex> cell_vertex_;    // per grid record, in cell order
+  GatherData gather_;                      // per grid record, in cell order: what eq. 1 reads
   std::vector<float> cell_radius_;
   std::vector<uint32_t> cell_begin_;                       // first record of each cell, then the end
   std::vector<std::pair<uint64_t, uint32_t>> cell_order_;  // (Morton code, cell), sorted
   std::vector<Rgb> in_, out_;
-  std::vector<Rgb> query_data_;  // per grid record: what queries average (the last iteration's input)
 };
 
 }  // namespace pathspace

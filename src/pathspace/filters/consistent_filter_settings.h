@@ -25,8 +25,8 @@ struct ConsistentFilterSettings {
   float visibility_threshold = 0.25f;  // hemisphere rays: largest |l_i - l_j| / max(l_i, l_j)
   int iterations = 1;              // iterated averaging, fig. 2
   int aa_paths = 0;                // extra query-only camera paths per pixel and pass (sec. 3, fig. 7)
-  double batch_memory_mb = 0.0;
-  CausticSettings caustics;        // sec. 2.3: photon-mapped caustics (off: 0 photons)    // memory for one batch's filtering; 0: an eighth of the physical memory
+  double batch_memory_mb = 0.0;    // memory for one batch's filtering; 0: an eighth of the physical memory
+  CausticSettings caustics;        // sec. 2.3: photon-mapped caustics (off: 0 photons)
 };
 
 }  // namespace pathspace

@@ -126,6 +126,7 @@ class HashGrid {
           compacted_[i].next = i + 1 < end ? i + 1 : kNoRecord;
         }
         slots_[s].head = begin;
+        slots_[s].count = end - begin;
       }
     });
     records_.swap(compacted_);

@@ -24,7 +24,7 @@ struct GridRecord {
 struct GridSlot {
   uint64_t key = kEmptyCellKey;
   uint32_t head = kNoRecord;
-  uint32_t unused = 0;
+  uint32_t count = 0;  // after HashGrid::compact(): the cell's records, [head, head + count); else 0
 };
 
 // Written atomically by inserts, read by the host after the build (never a silent failure).
@@ -95,6 +95,22 @@ struct HashGridView {
       if (slot.key == kEmptyCellKey) return kNoRecord;
     }
     return kNoRecord;
+  }
+
+  // After HashGrid::compact(): the records of the cell with this key are [*begin, *end) (empty if
+  // none), from the slot alone.
+  PS_HD void find_cell(uint64_t key, uint32_t* begin, uint32_t* end) const {
+    const uint32_t home = uint32_t(hash_cell_key(key)) & slot_mask;
+    for (uint32_t i = 0; i < max_probes; ++i) {
+      const GridSlot& slot = slots[probe_slot(home, i, probing, slot_mask)];
+      if (slot.key == key) {
+        *begin = slot.head;
+        *end = slot.head + slot.count;
+        return;
+      }
+      if (slot.key == kEmptyCellKey) break;
+    }
+    *begin = *end = 0;
   }
 
   // Every record in the cells a ball of `radius` around p can touch, without a distance test (for
