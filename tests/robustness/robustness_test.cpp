@@ -75,21 +75,40 @@ TEST_F(Robustness, HugeLensRadiusIsAUsageError) {
 }
 
 TEST_F(Robustness, HugePbrtGeometryIsAnInputError) {
-  const std::map<std::string, std::string> shapes = {
-      {"radius", "Shape \"sphere\" \"float radius\" 1e20\n"},
-      {"translate", "Translate 1e20 0 0\nShape \"sphere\"\n"},
-      {"scale", "Scale 1e20 1e20 1e20\nShape \"sphere\"\n"},
-      {"coordinates", "Shape \"trianglemesh\" \"point3 P\" [ 0 0 0  1e20 0 0  0 1 0 ] \"integer indices\" [ 0 1 2 ]\n"}};
+  // The message points at the Shape statement (lines 1-4 camera, 5 light).
+  const std::map<std::string, std::pair<std::string, std::string>> shapes = {
+      {"radius", {"Shape \"sphere\" \"float radius\" 1e20\n", "huge.pbrt:6:1: "}},
+      {"translate", {"Translate 1e20 0 0\nShape \"sphere\"\n", "huge.pbrt:7:1: "}},
+      {"scale", {"Scale 1e20 1e20 1e20\nShape \"sphere\"\n", "huge.pbrt:7:1: "}},
+      {"coordinates", {"Shape \"trianglemesh\" \"point3 P\" [ 0 0 0  1e20 0 0  0 1 0 ] \"integer indices\" [ 0 1 2 ]\n", "huge.pbrt:6:1: "}}};
   for (const auto& [what, shape] : shapes) {
     SCOPED_TRACE(what);
-    write("huge.pbrt", std::string(kCamera) + kLight + shape);
-    expect(std::string("render huge.pbrt -o a.exr") + kQuick, 1, {"outside the supported range"});
+    write("huge.pbrt", std::string(kCamera) + kLight + shape.first);
+    expect(std::string("render huge.pbrt -o a.exr") + kQuick, 1, {shape.second, "outside the supported range"});
   }
 }
 
 TEST_F(Robustness, InvalidMaterialIsAnInputError) {
   write("neg.pbrt", std::string(kCamera) + kLight + "Material \"diffuse\" \"rgb reflectance\" [ -0.5 0.5 0.5 ]\nShape \"sphere\"\n");
-  expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"diffuse reflectance", "-0.5", ">= 0"});
+  expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"neg.pbrt:6:1: ", "diffuse reflectance", "-0.5", ">= 0"});
+}
+
+// Scene validation's messages carry the element's file:line:column in every format that has lines
+// (Mitsuba: the top-level element), and the file in those without (OBJ and its MTL).
+TEST_F(Robustness, InvalidValuesAreReportedWhereTheyWereWritten) {
+#if PATHSPACE_HAS_MITSUBA
+  write("neg.xml",
+        "<scene version=\"3.0.0\">\n"
+        "  <emitter type=\"point\"><point name=\"position\" x=\"0\" y=\"0\" z=\"4\"/><rgb name=\"intensity\" value=\"5, 5, 5\"/></emitter>\n"
+        "  <shape type=\"sphere\">\n"
+        "    <bsdf type=\"diffuse\"><rgb name=\"reflectance\" value=\"-0.5, 0.5, 0.5\"/></bsdf>\n"
+        "  </shape>\n"
+        "</scene>\n");
+  expect(std::string("render neg.xml -o a.exr") + kQuick, 1, {"neg.xml:3:3: ", "diffuse reflectance", "-0.5"});
+#endif
+  write("neg.mtl", "newmtl m\nKd -1 0.5 0.5\n");
+  write("neg.obj", "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+  expect(std::string("render neg.obj -o a.exr") + kQuick, 1, {"neg.obj: ", "diffuse reflectance", "-1"});
 }
 
 TEST_F(Robustness, NonFiniteTexelIsAnInputError) {

@@ -130,7 +130,9 @@ Scene load_scene_file(const std::string& path, const SceneLoadOptions& options, 
 
 Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
                  SceneFileSettings* settings) {
-  return naming_the_file(path, [&] { return load_scene_file(path, options, warnings, settings); });
+  Scene scene = naming_the_file(path, [&] { return load_scene_file(path, options, warnings, settings); });
+  scene.sources.set_fallback(FileLoc{path});  // what no statement's location covers
+  return scene;
 }
 
 std::function<Scene(double seconds)> load_scene_animation(const std::string& path, const SceneLoadOptions& options,
@@ -141,7 +143,11 @@ std::function<Scene(double seconds)> load_scene_animation(const std::string& pat
   // shared: std::function copies its target
   auto animation = naming_the_file(path, [&] { return std::make_shared<gltf::GltfAnimation>(path, options, &w); });
   if (!animation->animated()) return {};
-  return [animation, path](double seconds) { return naming_the_file(path, [&] { return animation->scene_at(seconds); }); };
+  return [animation, path](double seconds) {
+    Scene frame = naming_the_file(path, [&] { return animation->scene_at(seconds); });
+    frame.sources.set_fallback(FileLoc{path});
+    return frame;
+  };
 }
 
 }  // namespace pathspace

@@ -9,6 +9,7 @@
 
 #include "pathspace/scene/environment_image.h"
 #include "pathspace/scene/image_texture.h"
+#include "pathspace/scene/scene_sources.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
@@ -42,6 +43,7 @@ class Scene {
   // When set, infinite lights use this bounding sphere instead of the geometry's.
   bool has_bounds_override = false;
   BoundingSphere bounds_override;
+  SceneSources sources;  // where the elements came from (file:line:column), for messages
 
   uint32_t add_material(const Material& m);
   uint32_t add_texture(ImageTexture t);

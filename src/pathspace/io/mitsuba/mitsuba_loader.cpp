@@ -34,12 +34,15 @@ class Builder {
       const std::string tag = n.name();
       if (tag == "default") continue;  // read by Document
       if (tag == "texture" && !doc_.attr(n, "id").empty()) continue;  // found by Document for <ref>
+      // What this element added is reported at its location by scene validation.
+      const auto before = SceneSizes<Scene>::of(scene_);
       if (tag == "integrator") integrator(Object(doc_, n));
       else if (tag == "sensor") sensor(Object(doc_, n));
       else if (tag == "bsdf") define_bsdf(n);
       else if (tag == "shape") shape(Object(doc_, n));
       else if (tag == "emitter") emitter(Object(doc_, n));
       else w_->add(doc_.loc(n), "<" + tag + "> is not supported; ignored");
+      before.mark_since(&scene_, doc_.loc(n));
     }
     return finish(settings);
   }
@@ -63,6 +66,7 @@ class Builder {
     scene_.camera = make_file_camera(m.point(Vec3()), forward, right, up, fov_short, w, h);
     set_thin_lens(&scene_.camera, aperture_radius_, focus_distance_);  // validated in sensor()
     apply_camera_options(options_, false, w, h, &scene_);
+    if (has_sensor_) scene_.sources.set_camera(sensor_loc_);
     scene_.max_path_segments = max_segments_;
     const Bounds3 b = scene_.geometry_bounds();
     if (!b.empty()) scene_.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));

@@ -44,7 +44,10 @@ class Builder {
   }
 
   void handle(const Statement& st) {
+    // What this statement added is reported at its location by scene validation.
+    const auto before = SceneSizes<Scene>::of(scene_);
     dispatch(st);
+    before.mark_since(&scene_, st.loc);
     for (const Param& p : st.params)
       if (!p.used) warn(p.loc, st.title() + ": parameter \"" + p.type + " " + p.name + "\" is not supported; ignored");
   }
@@ -62,6 +65,7 @@ class Builder {
                                      world_from_camera.vector(Vec3(1, 0, 0)), world_from_camera.vector(Vec3(0, 1, 0)), fov_, w, h);
     set_thin_lens(&scene_.camera, lens_radius_, focal_distance_);  // validated in camera()
     apply_camera_options(options_, false, w, h, &scene_);
+    if (has_camera_) scene_.sources.set_camera(camera_loc_);
     scene_.max_path_segments = max_depth_ + 1;
     const Bounds3 b = scene_.geometry_bounds();
     if (!b.empty()) scene_.ray_epsilon = std::max(1e-4f, 5e-5f * length(b.hi - b.lo));
