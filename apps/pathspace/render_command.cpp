@@ -70,6 +70,14 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(checked_real("lens-radius", 0.0, kMaxSceneCoordinate));
   cmd->add_option("--focus-distance", o->focus_distance, "Distance of the plane in focus along the view axis (default: the scene's)")
       ->check(checked_real("focus-distance", 1e-30, kMaxSceneCoordinate));
+  cmd->add_option("-D,--define", o->defines,
+                  "Mitsuba scene files: the scene parameter NAME ($NAME in the file) is VALUE, in place of the file's <default> (repeatable)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false)  // one value per -D (the scene may follow), every -D kept
+      ->check([](const std::string& v) {
+        const size_t eq = v.find('=');
+        return eq == std::string::npos || eq == 0 ? std::string("expected NAME=VALUE, got '" + v + "'") : std::string();
+      });
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
   cmd->add_option("--device", o->device,

@@ -22,6 +22,7 @@ struct RenderOptions {
   float lens_radius = -1.f;    // thin lens radius in scene units (0: pinhole); < 0: the scene's
   float focus_distance = 0.f;  // distance of the focus plane; 0: the scene's
   bool substitute_missing_textures = false;  // pbrt: neutral stand-ins for missing images (warnings)
+  std::vector<std::string> defines;          // Mitsuba: "NAME=VALUE" scene parameters (-D)
   std::string integrator = "pt";
   uint32_t spp = 0;        // 0: unset
   double time_s = 0.0;     // 0: unset

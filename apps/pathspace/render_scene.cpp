@@ -64,9 +64,15 @@ PreparedScene prepare_scene(const RenderOptions& o) {
   load_options.camera_up = parse_vec3(o.camera_up, "--camera-up");
   if (o.fov > 0.f) load_options.fov_degrees = o.fov;
   load_options.substitute_missing_textures = o.substitute_missing_textures;
+  for (const std::string& d : o.defines) {
+    const size_t eq = d.find('=');
+    const std::string name = d.substr(0, eq);
+    if (!is_scene_parameter_name(name)) throw UsageError("-D " + d + ": a parameter name is made of letters, digits and '_'");
+    load_options.defines.emplace_back(name, d.substr(eq + 1));
+  }
   if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
-                     o.substitute_missing_textures))
-    throw UsageError("--camera-pos, --camera-target, --camera-up, --fov and --substitute-missing-textures apply to scene files only");
+                     o.substitute_missing_textures || !o.defines.empty()))
+    throw UsageError("--camera-pos, --camera-target, --camera-up, --fov, --substitute-missing-textures and -D apply to scene files only");
   const Resolution res = parse_resolution(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   if (from_file) {

@@ -93,6 +93,22 @@ TEST_F(Robustness, InvalidMaterialIsAnInputError) {
   expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"neg.pbrt:6:1: ", "diffuse reflectance", "-0.5", ">= 0"});
 }
 
+// render -D NAME=VALUE: Mitsuba parameters from the command line; misuse is a usage error.
+TEST_F(Robustness, SceneParametersFromTheCommandLine) {
+#if PATHSPACE_HAS_MITSUBA
+  write("p.xml",
+        "<scene version=\"3.0.0\">\n"
+        "  <emitter type=\"point\"><point name=\"position\" x=\"0\" y=\"0\" z=\"4\"/><rgb name=\"intensity\" value=\"$power\"/></emitter>\n"
+        "  <shape type=\"sphere\"/>\n"
+        "</scene>\n");
+  expect(std::string("render p.xml -o a.exr") + kQuick, 1, {"p.xml:2:", "undefined parameter '$power'", "-D power=VALUE"});
+  expect(std::string("render p.xml -D power -o a.exr") + kQuick, 2, {"expected NAME=VALUE", "power"});
+  expect(std::string("render p.xml -D p-ower=1 -o a.exr") + kQuick, 2, {"-D p-ower=1", "letters, digits"});
+  expect(std::string("render -D power=5,5,5 p.xml -D unused=1 -o a.exr") + kQuick, 0, {}, {"a.exr"});
+#endif
+  expect(std::string("render cornell-box -D power=1 -o a.exr") + kQuick, 2, {"-D apply to scene files only"});
+}
+
 // Scene validation's messages carry the element's file:line:column in every format that has lines
 // (Mitsuba: the top-level element), and the file in those without (OBJ and its MTL).
 TEST_F(Robustness, InvalidValuesAreReportedWhereTheyWereWritten) {

@@ -177,6 +177,33 @@ TEST(MitsubaLoader, DefaultsAndSubstitution) {
   expect_error(scene3("<default name=\"x\"/>"), "scene.xml:2:1:", "has no value");
 }
 
+// Parameters from outside (render -D NAME=VALUE) take the place of the file's <default>s, define
+// names the file has no <default> for, and the last -D of a name wins.
+TEST(MitsubaLoader, DefinesFromOutside) {
+  const std::string sensor =
+      "<default name=\"w\" value=\"32\"/><sensor type=\"perspective\"><film type=\"hdrfilm\"><integer name=\"width\" value=\"$w\"/>"
+      "<integer name=\"height\" value=\"$h\"/></film></sensor>";
+  const auto load_with = [&](const std::vector<std::pair<std::string, std::string>>& defines) {
+    SceneLoadOptions o;
+    o.defines = defines;
+    std::vector<std::string> warnings;
+    LoadWarnings w(&warnings);
+    return mitsuba::load_mitsuba_string(scene3(sensor), "scene.xml", ".", o, &w, nullptr);
+  };
+  Scene s = load_with({{"h", "20"}});
+  EXPECT_EQ(s.camera.width, 32);  // the file's <default>
+  EXPECT_EQ(s.camera.height, 20);
+  s = load_with({{"h", "20"}, {"w", "40"}, {"w", "48"}});
+  EXPECT_EQ(s.camera.width, 48);
+  try {
+    load_with({{"w", "40"}});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no -D h=VALUE"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load_with({{"a b", "1"}}), Error);
+}
+
 // The thinlens sensor in both namings sets the camera's lens without a warning; both parameters are
 // required (Mitsuba 0.6 requires them; Mitsuba 3's focus_distance default 0 is degenerate).
 TEST(MitsubaLoader, ThinLensSensor) {

@@ -3,6 +3,8 @@
 // environment (with a warning), and the camera frames the bounding sphere unless options give one.
 #include "pathspace/io/scene_loader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -85,6 +87,11 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
 }
 
+bool is_scene_parameter_name(const std::string& name) {
+  return !name.empty() &&
+         std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 namespace {
 // Every error of loading `path` names a file: one raised without a location by code the loaders
 // share (the camera framing of apply_camera_options, say) gets the scene file's.
@@ -104,6 +111,8 @@ Scene load_scene_file(const std::string& path, const SceneLoadOptions& options, 
                       SceneFileSettings* settings) {
   LoadWarnings w(warnings);
   const std::string ext = scene_file_extension(path);
+  if (!options.defines.empty() && ext != ".xml")
+    w.add(FileLoc{path}, "-D NAME=VALUE sets Mitsuba scene parameters; ignored for this file");
   if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
   if (ext == ".xml") return mitsuba::load_mitsuba_file(path, options, &w, settings);
   if (ext == ".gltf" || ext == ".glb") return gltf::load_gltf_file(path, options, &w);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pathspace/scene/scene.h"
@@ -21,6 +22,9 @@ struct SceneLoadOptions {
   // constant white environment (radiance 1 times the light's scale), each with a warning. Off: every
   // missing file is listed in one Error.
   bool substitute_missing_textures = false;
+  // Mitsuba: scene parameters given from outside (`render -D NAME=VALUE`), used for `$NAME` before
+  // the file's <default>; other formats ignore them with a warning.
+  std::vector<std::pair<std::string, std::string>> defines;
 };
 
 // What a scene file suggests for the render besides the scene itself.
@@ -28,6 +32,10 @@ struct SceneFileSettings {
   int spp = 0;             // pbrt Sampler "pixelsamples"; 0: none given
   std::string image_name;  // pbrt Film "filename"; empty: none given
 };
+
+// A scene parameter's name (Mitsuba's $name and <default name>, `render -D NAME=VALUE`): letters,
+// digits and '_'.
+bool is_scene_parameter_name(const std::string& name);
 
 // True when the path has an extension load_scene understands.
 bool is_scene_file(const std::string& path);

@@ -1,7 +1,9 @@
 // Mitsuba XML document: parsing, locations, parameters (see mitsuba_xml.h). Parameters follow
-// Mitsuba 3: a <default> only applies when no value was given from outside (the loader passes none
-// yet), and an unknown $name is an error rather than silently left in place.
+// Mitsuba 3: a <default> only applies when no value was given from outside (`render -D NAME=VALUE`),
+// and an unknown $name is an error rather than silently left in place.
 #include "pathspace/io/mitsuba/mitsuba_xml.h"
+
+#include "pathspace/io/scene_loader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -52,7 +54,12 @@ std::vector<double> parse_numbers(const std::string& text, const FileLoc& loc) {
   return out;
 }
 
-Document::Document(const std::string& bytes, std::string name) : name_(std::move(name)) {
+Document::Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines)
+    : name_(std::move(name)) {
+  for (const auto& [key, value] : defines) {
+    if (!is_scene_parameter_name(key)) throw Error("-D " + key + "=...: a parameter name is made of letters, digits and '_'");
+    params_[key] = value;  // the last -D of a name wins, as on a command line
+  }
   line_starts_.push_back(0);
   for (size_t i = 0; i < bytes.size(); ++i)
     if (bytes[i] == '\n') line_starts_.push_back(i + 1);
@@ -62,10 +69,9 @@ Document::Document(const std::string& bytes, std::string name) : name_(std::move
   if (!scene_) throw Error(FileLoc{name_}, "no <scene> element at the top level");
   for (const pugi::xml_node& d : scene_.children("default")) {
     const std::string key = d.attribute("name").value();
-    if (key.empty() || !std::all_of(key.begin(), key.end(), is_ident))
-      throw Error(loc(d), "<default> needs a name made of letters, digits and '_'");
+    if (!is_scene_parameter_name(key)) throw Error(loc(d), "<default> needs a name made of letters, digits and '_'");
     if (!d.attribute("value")) throw Error(loc(d), "<default name=\"" + key + "\"> has no value");
-    params_.emplace(key, d.attribute("value").value());  // the first definition wins
+    params_.emplace(key, d.attribute("value").value());  // -D, then the first definition wins
   }
   for (const pugi::xml_node& t : scene_.children("texture")) {
     const std::string id = attr(t, "id");
@@ -100,7 +106,8 @@ std::string Document::substitute(const std::string& value, const pugi::xml_node&
     while (j < value.size() && is_ident(value[j])) ++j;
     const std::string key = value.substr(i + 1, j - i - 1);
     const auto it = params_.find(key);
-    if (it == params_.end()) throw Error(loc(node), "undefined parameter '$" + key + "' (no <default name=\"" + key + "\" .../>)");
+    if (it == params_.end())
+      throw Error(loc(node), "undefined parameter '$" + key + "' (no <default name=\"" + key + "\" .../> and no -D " + key + "=VALUE)");
     out += it->second;
     i = j;
   }

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pathspace/base/error.h"
@@ -17,7 +18,8 @@ namespace pathspace::mitsuba {
 class Document {
  public:
   // Parses `bytes` (the text of file `name`); an XML syntax error is an Error at file:line:column.
-  Document(const std::string& bytes, std::string name);
+  // `defines` are parameters given from outside: they take the place of the file's <default>s.
+  Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines = {});
   Document(const Document&) = delete;
   Document& operator=(const Document&) = delete;
 
