@@ -453,6 +453,25 @@ TEST(MitsubaLoader, MeshFiles) {
   expect_error(scene3("<shape type=\"obj\"/>"), "scene.xml:2:1:", "needs a filename", dir.path.string());
 }
 
+// <path value="..."/>: relative file names are looked up in the scene's folder first, then in each
+// search folder in file order (relative to the scene's folder), as Mitsuba's file resolver does.
+TEST(MitsubaLoader, SearchPaths) {
+  TempDir dir("mitsuba");
+  std::filesystem::create_directories(dir.path / "meshes" / "more");
+  std::ofstream(dir.file("meshes/more/quad.obj")) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  std::ofstream(dir.file("meshes/tri.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(dir.file("tri.obj")) << "v 0 0 5\nv 1 0 5\nv 0 1 5\nf 1 2 3\n";  // the scene's folder comes first
+  const std::string shapes = "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/></shape>\n"
+                             "<shape type=\"obj\"><string name=\"filename\" value=\"tri.obj\"/></shape>";
+  const Loaded r = load(scene3("<path value=\"meshes\"/><path value=\"meshes/more\"/>\n" + shapes), dir.path.string());
+  ASSERT_EQ(r.scene.triangles.size(), 2u + 1u + 2u);
+  EXPECT_EQ(r.scene.positions[r.scene.triangles[2].v[0]].z, 5.f);
+  EXPECT_EQ(find_warning(r.warnings, "<path>"), "");  // read, not ignored
+  // Without the search folder the mesh is not found, and the message names where it looked.
+  expect_error(scene3(shapes), "scene.xml:2:1:", "quad.obj", dir.path.string());
+  expect_error(scene3("<path/>"), "scene.xml:2:1:", "<path> needs a value", dir.path.string());
+}
+
 TEST(MitsubaLoader, Emitters) {
   TempDir dir("mitsuba");
   Image env(4, 2);

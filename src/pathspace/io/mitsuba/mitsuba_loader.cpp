@@ -41,6 +41,7 @@ class Builder {
       else if (tag == "bsdf") define_bsdf(n);
       else if (tag == "shape") shape(Object(doc_, n));
       else if (tag == "emitter") emitter(Object(doc_, n));
+      else if (tag == "path") {}  // read by Document (file resolution)
       else w_->add(doc_.loc(n), "<" + tag + "> is not supported; ignored");
       before.mark_since(&scene_, doc_.loc(n));
     }
@@ -238,8 +239,7 @@ class Builder {
   // lights/environment_map.h), radiance = scale * image.
   void envmap(const Object& o) {
     const std::string file = o.get_string("filename", "");
-    std::filesystem::path path(file);
-    if (path.is_relative()) path = std::filesystem::path(folder_) / path;
+    const std::filesystem::path path = doc_.resolve_file(file, folder_);
     std::error_code ec;
     if (file.empty() || !std::filesystem::is_regular_file(path, ec))
       throw Error(o.find("filename") ? doc_.loc(o.find("filename")->node) : o.loc(),

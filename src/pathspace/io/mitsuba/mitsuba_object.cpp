@@ -150,8 +150,7 @@ Rgb Object::texture_rgb(const pugi::xml_node& node, const std::string& name, con
   const Object tex(*doc_, node);
   if (tex.type() == "bitmap") {
     const std::string file = tex.get_string("filename", "");
-    std::filesystem::path path(file);
-    if (path.is_relative()) path = std::filesystem::path(folder) / path;
+    const std::filesystem::path path = doc_->resolve_file(file, folder);
     std::error_code ec;
     if (file.empty() || !std::filesystem::is_regular_file(path, ec))
       throw Error(loc, "texture file '" + file + "' not found (looked for " + path.string() + ")");

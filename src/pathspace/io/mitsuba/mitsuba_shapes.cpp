@@ -129,9 +129,7 @@ LocalMesh uv_sphere() {
 std::filesystem::path resolve(const Object& o, const std::string& folder) {
   const std::string file = o.get_string("filename", "");
   if (file.empty()) throw Error(o.loc(), o.title() + " needs a filename");
-  std::filesystem::path p(file);
-  if (p.is_relative()) p = std::filesystem::path(folder) / p;
-  return p;
+  return o.doc().resolve_file(file, folder);
 }
 
 LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w) {

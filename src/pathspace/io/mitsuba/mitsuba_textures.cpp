@@ -23,8 +23,7 @@ TextureUvTransform uv_transform(const Object& tex, LoadWarnings* w) {
 int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding* binding, LoadWarnings* w) {
   const FileLoc loc = tex.loc();
   const std::string file = tex.get_string("filename", "");
-  std::filesystem::path path(file);
-  if (path.is_relative()) path = std::filesystem::path(folder) / path;
+  const std::filesystem::path path = tex.doc().resolve_file(file, folder);
   std::error_code ec;
   if (file.empty() || !std::filesystem::is_regular_file(path, ec))
     throw Error(loc, "texture file '" + file + "' not found (looked for " + path.string() + ")");

@@ -73,6 +73,11 @@ Document::Document(const std::string& bytes, std::string name, const std::vector
     if (!d.attribute("value")) throw Error(loc(d), "<default name=\"" + key + "\"> has no value");
     params_.emplace(key, d.attribute("value").value());  // -D, then the first definition wins
   }
+  for (const pugi::xml_node& p : scene_.children("path")) {
+    const std::string value = attr(p, "value");
+    if (value.empty()) throw Error(loc(p), "<path> needs a value (a folder)");
+    search_paths_.push_back(value);
+  }
   for (const pugi::xml_node& t : scene_.children("texture")) {
     const std::string id = attr(t, "id");
     if (!id.empty()) textures_.emplace(id, t);
@@ -117,6 +122,20 @@ std::string Document::substitute(const std::string& value, const pugi::xml_node&
 std::string Document::attr(const pugi::xml_node& node, const char* key, const std::string& fallback) const {
   const pugi::xml_attribute a = node.attribute(key);
   return a ? substitute(a.value(), node) : fallback;
+}
+
+std::filesystem::path Document::resolve_file(const std::string& name, const std::string& folder) const {
+  namespace fs = std::filesystem;
+  const fs::path p(name);
+  if (p.is_absolute()) return p;
+  const fs::path here = fs::path(folder) / p;
+  std::error_code ec;
+  if (fs::exists(here, ec)) return here;
+  for (const std::string& dir : search_paths_) {
+    fs::path candidate = fs::path(dir).is_absolute() ? fs::path(dir) / p : fs::path(folder) / dir / p;
+    if (fs::exists(candidate, ec)) return candidate;
+  }
+  return here;
 }
 
 pugi::xml_node Document::texture(const std::string& id) const {

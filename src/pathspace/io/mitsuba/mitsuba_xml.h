@@ -6,6 +6,7 @@
 
 #include <pugixml.hpp>
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -36,6 +37,11 @@ class Document {
   std::string prop_name(const pugi::xml_node& node) const;
   // The top-level <texture id="..."> with this id, for <ref name="reflectance" id="..."/>; null if none.
   pugi::xml_node texture(const std::string& id) const;
+  // Where a file name of the scene (mesh, texture, environment map) points: as given when absolute;
+  // else `folder`/name when that exists, else the first folder of the scene's <path value="..."/>
+  // elements (in file order, relative to `folder`) that holds it, else `folder`/name (for the
+  // not-found message), as Mitsuba's file resolver does.
+  std::filesystem::path resolve_file(const std::string& name, const std::string& folder) const;
 
  private:
   FileLoc loc_at(size_t offset) const;
@@ -47,6 +53,7 @@ class Document {
   std::vector<size_t> line_starts_;
   std::map<std::string, std::string> params_;
   std::map<std::string, pugi::xml_node> textures_;
+  std::vector<std::string> search_paths_;  // <path value="..."/>
   bool legacy_ = false;
 };
 
