@@ -472,6 +472,34 @@ TEST(MitsubaLoader, SearchPaths) {
   expect_error(scene3("<path/>"), "scene.xml:2:1:", "<path> needs a value", dir.path.string());
 }
 
+// <include filename="..."/>: the included file's scene elements take the include's place (found
+// like any file name), nested includes too, and each keeps its own file:line:column in messages.
+TEST(MitsubaLoader, Includes) {
+  TempDir dir("mitsuba");
+  std::filesystem::create_directories(dir.path / "parts");
+  std::ofstream(dir.file("parts/light.xml")) << "<scene version=\"3.0.0\">\n"
+                                                "  <emitter type=\"point\"><rgb name=\"intensity\" value=\"$power\"/></emitter>\n"
+                                                "  <include filename=\"parts/shape.xml\"/>\n"
+                                                "</scene>\n";
+  std::ofstream(dir.file("parts/shape.xml")) << "<scene version=\"3.0.0\">\n\n"
+                                                "  <shape type=\"sphere\"><float name=\"radius\" value=\"$radius\"/></shape>\n"
+                                                "</scene>\n";
+  const std::string main = "<scene version=\"3.0.0\">\n<default name=\"power\" value=\"7\"/>\n"
+                           "<default name=\"radius\" value=\"2\"/>\n<include filename=\"parts/light.xml\"/>\n</scene>\n";
+  const Loaded r = load(main, dir.path.string());
+  ASSERT_EQ(r.scene.lights.size(), 1u);
+  EXPECT_EQ(r.scene.lights[0].value, Rgb(7.f));
+  ASSERT_EQ(r.scene.spheres.size(), 1u);
+  EXPECT_EQ(r.scene.spheres[0].radius, 2.f);
+  // An error in an included file is reported there.
+  const std::string bad = "<scene version=\"3.0.0\">\n<default name=\"power\" value=\"7\"/>\n"
+                          "<default name=\"radius\" value=\"-1\"/>\n<include filename=\"parts/light.xml\"/>\n</scene>\n";
+  expect_error(bad, (dir.path / "parts" / "shape.xml").string() + ":3:3:", "radius", dir.path.string());
+  expect_error(scene3("<include filename=\"none.xml\"/>"), "scene.xml:2:1:", "included file 'none.xml' not found", dir.path.string());
+  std::ofstream(dir.file("self.xml")) << "<scene version=\"3.0.0\"><include filename=\"self.xml\"/></scene>\n";
+  expect_error(scene3("<include filename=\"self.xml\"/>"), (dir.path / "self.xml").string() + ":1:", "more than 256", dir.path.string());
+}
+
 TEST(MitsubaLoader, Emitters) {
   TempDir dir("mitsuba");
   Image env(4, 2);

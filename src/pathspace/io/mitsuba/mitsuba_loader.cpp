@@ -279,7 +279,7 @@ class Builder {
 
 Scene load_mitsuba_string(const std::string& text, const std::string& name, const std::string& folder,
                           const SceneLoadOptions& options, LoadWarnings* warnings, SceneFileSettings* settings) {
-  const Document doc(text, name, options.defines);
+  const Document doc(text, name, options.defines, folder);
   Scene scene = Builder(doc, options, warnings, folder).run(settings);
   scene.name = name;
   return scene;

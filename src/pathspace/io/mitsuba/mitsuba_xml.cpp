@@ -3,6 +3,7 @@
 // and an unknown $name is an error rather than silently left in place.
 #include "pathspace/io/mitsuba/mitsuba_xml.h"
 
+#include "pathspace/io/file_bytes.h"
 #include "pathspace/io/scene_loader.h"
 
 #include <algorithm>
@@ -54,30 +55,53 @@ std::vector<double> parse_numbers(const std::string& text, const FileLoc& loc) {
   return out;
 }
 
-Document::Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines)
-    : name_(std::move(name)) {
+namespace {
+
+std::vector<size_t> line_starts_of(const std::string& bytes) {
+  std::vector<size_t> starts = {0};
+  for (size_t i = 0; i < bytes.size(); ++i)
+    if (bytes[i] == '\n') starts.push_back(i + 1);
+  return starts;
+}
+
+FileLoc loc_in(const std::string& name, const std::vector<size_t>& line_starts, size_t offset) {
+  const auto it = std::upper_bound(line_starts.begin(), line_starts.end(), offset);
+  const size_t line = size_t(it - line_starts.begin());  // 1-based: the count of line starts <= offset
+  return FileLoc{name, int(line), int(offset - line_starts[line - 1]) + 1};
+}
+
+// Where pugixml parsed `node` in its own document: offset_debug points at the element name; the
+// '<' before it is where editors put the cursor.
+FileLoc node_loc(const std::string& name, const std::vector<size_t>& line_starts, const pugi::xml_node& node) {
+  const ptrdiff_t off = node.offset_debug();
+  if (off < 0) return FileLoc{name};
+  return loc_in(name, line_starts, size_t(off > 0 ? off - 1 : 0));
+}
+
+constexpr int kMaxIncludes = 256;  // in all, nested ones included: a cycle ends here with an error
+
+}  // namespace
+
+Document::Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines,
+                   std::string folder)
+    : name_(std::move(name)), folder_(std::move(folder)) {
   for (const auto& [key, value] : defines) {
     if (!is_scene_parameter_name(key)) throw Error("-D " + key + "=...: a parameter name is made of letters, digits and '_'");
     params_[key] = value;  // the last -D of a name wins, as on a command line
   }
-  line_starts_.push_back(0);
-  for (size_t i = 0; i < bytes.size(); ++i)
-    if (bytes[i] == '\n') line_starts_.push_back(i + 1);
+  line_starts_ = line_starts_of(bytes);
   const pugi::xml_parse_result r = doc_.load_buffer(bytes.data(), bytes.size(), pugi::parse_default, pugi::encoding_utf8);
   if (!r) throw Error(loc_at(size_t(std::max<ptrdiff_t>(0, r.offset))), std::string("XML syntax error: ") + r.description());
   scene_ = doc_.child("scene");
   if (!scene_) throw Error(FileLoc{name_}, "no <scene> element at the top level");
-  for (const pugi::xml_node& d : scene_.children("default")) {
-    const std::string key = d.attribute("name").value();
-    if (!is_scene_parameter_name(key)) throw Error(loc(d), "<default> needs a name made of letters, digits and '_'");
-    if (!d.attribute("value")) throw Error(loc(d), "<default name=\"" + key + "\"> has no value");
-    params_.emplace(key, d.attribute("value").value());  // -D, then the first definition wins
-  }
+  read_defaults();
   for (const pugi::xml_node& p : scene_.children("path")) {
     const std::string value = attr(p, "value");
     if (value.empty()) throw Error(loc(p), "<path> needs a value (a folder)");
     search_paths_.push_back(value);
   }
+  expand_includes();
+  read_defaults();  // the included files' own, after the including file's
   for (const pugi::xml_node& t : scene_.children("texture")) {
     const std::string id = attr(t, "id");
     if (!id.empty()) textures_.emplace(id, t);
@@ -86,17 +110,66 @@ Document::Document(const std::string& bytes, std::string name, const std::vector
   legacy_ = !version.empty() && (version[0] == '0' || version[0] == '1') && version.size() > 1 && version[1] == '.';
 }
 
-FileLoc Document::loc_at(size_t offset) const {
-  const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-  const size_t line = size_t(it - line_starts_.begin());  // 1-based: the count of line starts <= offset
-  return FileLoc{name_, int(line), int(offset - line_starts_[line - 1]) + 1};
+void Document::read_defaults() {
+  for (const pugi::xml_node& d : scene_.children("default")) {
+    const std::string key = d.attribute("name").value();
+    if (!is_scene_parameter_name(key)) throw Error(loc(d), "<default> needs a name made of letters, digits and '_'");
+    if (!d.attribute("value")) throw Error(loc(d), "<default name=\"" + key + "\"> has no value");
+    params_.emplace(key, d.attribute("value").value());  // -D, then the first definition wins
+  }
 }
 
+void Document::expand_includes() {
+  int count = 0;
+  for (pugi::xml_node n = scene_.first_child(); n;) {
+    if (n.type() != pugi::node_element || std::string(n.name()) != "include") {
+      n = n.next_sibling();
+      continue;
+    }
+    const FileLoc at = loc(n);
+    if (++count > kMaxIncludes) throw Error(at, "more than " + std::to_string(kMaxIncludes) + " <include>s (does a file include itself?)");
+    const std::string file = attr(n, "filename");
+    if (file.empty()) throw Error(at, "<include> needs a filename");
+    const std::filesystem::path path = resolve_file(file, folder_);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw Error(at, "included file '" + file + "' not found (looked for " + path.string() + ")");
+    auto inc = std::make_unique<Included>();
+    inc->name = path.string();
+    const std::string bytes = read_file_bytes(inc->name);
+    inc->line_starts = line_starts_of(bytes);
+    const pugi::xml_parse_result r = inc->doc.load_buffer(bytes.data(), bytes.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!r)
+      throw Error(loc_in(inc->name, inc->line_starts, size_t(std::max<ptrdiff_t>(0, r.offset))), std::string("XML syntax error: ") + r.description());
+    const pugi::xml_node inc_scene = inc->doc.child("scene");
+    if (!inc_scene) throw Error(FileLoc{inc->name}, "no <scene> element at the top level (included at " + at.to_string() + ")");
+    // Its elements take the place of the <include>, each copied node mapped to where it was written.
+    for (const pugi::xml_node& child : inc_scene.children()) {
+      if (child.type() != pugi::node_element) continue;
+      const pugi::xml_node copy = scene_.insert_copy_before(child, n);
+      std::vector<std::pair<pugi::xml_node, pugi::xml_node>> stack = {{child, copy}};
+      while (!stack.empty()) {
+        const auto [from, to] = stack.back();
+        stack.pop_back();
+        copied_locs_[to.internal_object()] = node_loc(inc->name, inc->line_starts, from);
+        for (pugi::xml_node a = from.first_child(), b = to.first_child(); a && b; a = a.next_sibling(), b = b.next_sibling())
+          stack.emplace_back(a, b);
+      }
+    }
+    included_.push_back(std::move(inc));
+    scene_.remove_child(n);
+    // Scan again from the start, so that the included file's own includes are expanded too (top-level
+    // children only: cheap).
+    n = scene_.first_child();
+  }
+}
+
+FileLoc Document::loc_at(size_t offset) const { return loc_in(name_, line_starts_, offset); }
+
 FileLoc Document::loc(const pugi::xml_node& node) const {
-  const ptrdiff_t off = node.offset_debug();
-  if (off < 0) return FileLoc{name_};
-  // offset_debug points at the element name; report the '<' before it, where editors put the cursor.
-  return loc_at(size_t(off > 0 ? off - 1 : 0));
+  const auto copied = copied_locs_.find(node.internal_object());
+  if (copied != copied_locs_.end()) return copied->second;
+  return node_loc(name_, line_starts_, node);
 }
 
 std::string Document::substitute(const std::string& value, const pugi::xml_node& node) const {

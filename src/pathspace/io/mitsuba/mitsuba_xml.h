@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,9 +20,13 @@ namespace pathspace::mitsuba {
 
 class Document {
  public:
-  // Parses `bytes` (the text of file `name`); an XML syntax error is an Error at file:line:column.
-  // `defines` are parameters given from outside: they take the place of the file's <default>s.
-  Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines = {});
+  // Parses `bytes` (the text of file `name` in `folder`); an XML syntax error is an Error at
+  // file:line:column. `defines` are parameters given from outside: they take the place of the
+  // file's <default>s. Top-level <include filename="..."/> elements are replaced by the children of
+  // the included file's <scene> (found like any file name, resolve_file), whose nodes keep their own
+  // file:line:column.
+  Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines = {},
+           std::string folder = ".");
   Document(const Document&) = delete;
   Document& operator=(const Document&) = delete;
 
@@ -46,6 +52,15 @@ class Document {
  private:
   FileLoc loc_at(size_t offset) const;
   std::string substitute(const std::string& value, const pugi::xml_node& node) const;
+  void read_defaults();
+  void expand_includes();
+
+  // An included file: its parsed text and line starts, kept for the locations of its copied nodes.
+  struct Included {
+    std::string name;
+    std::vector<size_t> line_starts;
+    pugi::xml_document doc;
+  };
 
   pugi::xml_document doc_;
   pugi::xml_node scene_;
@@ -54,6 +69,9 @@ class Document {
   std::map<std::string, std::string> params_;
   std::map<std::string, pugi::xml_node> textures_;
   std::vector<std::string> search_paths_;  // <path value="..."/>
+  std::string folder_;
+  std::vector<std::unique_ptr<Included>> included_;
+  std::unordered_map<const void*, FileLoc> copied_locs_;  // node (internal object) -> where it was written
   bool legacy_ = false;
 };
 
