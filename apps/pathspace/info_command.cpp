@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pathspace/checkpoint/checkpoint_file.h"
+#include "pathspace/io/scene_loader.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/gpu/gpu_info.h"
 #include "pathspace/integrators/device_registry.h"
@@ -11,6 +12,7 @@
 #include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render.h"
+#include "scene_summary.h"
 
 namespace pathspace::cli {
 
@@ -166,18 +168,25 @@ void print_checkpoint(const std::string& path, bool json) {
 }  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
-  CLI::App* cmd = app.add_subcommand("info", "List built-in scenes, integrators, filters and the build");
+  CLI::App* cmd = app.add_subcommand("info", "List built-in scenes, integrators, filters and the build, or describe a checkpoint or scene file");
   cmd->add_flag("--scenes", options->scenes, "List the built-in scenes (name and id)");
   cmd->add_flag("--integrators", options->integrators, "List the integrators and filters with their options");
-  cmd->add_option("checkpoint", options->checkpoint, "A checkpoint file (render --checkpoint): print what it holds")->check(CLI::ExistingFile);
-  cmd->add_flag("--json", options->json, "With --integrators: print the integrator and filter table as JSON; with a checkpoint: its header");
+  cmd->add_option("file", options->file,
+                  "A checkpoint (render --checkpoint) or scene file (.pbrt, .xml, .gltf, .glb, .obj, .ply): print what it holds; for a "
+                  "scene, what the loader approximated or ignored, with file:line:column")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--json", options->json,
+                "With --integrators: print the integrator and filter table as JSON; with a checkpoint: its header; with a scene: its summary");
   cmd->add_flag("--markdown", options->markdown, "With --integrators: print the table as the Markdown of docs/cli.md");
   return cmd;
 }
 
 int run_info_command(const InfoOptions& options) {
-  if (!options.checkpoint.empty()) {
-    print_checkpoint(options.checkpoint, options.json);
+  if (!options.file.empty()) {
+    if (is_scene_file(options.file))
+      print_scene_summary(options.file, options.json);
+    else
+      print_checkpoint(options.file, options.json);
     return 0;
   }
   if (options.markdown) {

@@ -1,5 +1,5 @@
 // `pathspace info`: lists the built-in scenes, the integrators and filters with their options (from
-// the registry, as text or --json for tools), the build, and what a checkpoint file holds.
+// the registry, as text or --json for tools), the build, and what a checkpoint or scene file holds.
 #pragma once
 
 #include <string>
@@ -13,7 +13,7 @@ struct InfoOptions {
   bool integrators = false;
   bool json = false;
   bool markdown = false;
-  std::string checkpoint;  // a checkpoint file to describe (render --checkpoint)
+  std::string file;  // a checkpoint (render --checkpoint) or scene file to describe
 };
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options);

@@ -1,0 +1,100 @@
+#include "scene_summary.h"
+
+#include <map>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "pathspace/base/error.h"
+#include "pathspace/base/printable.h"
+#include "pathspace/io/scene_loader.h"
+#include "pathspace/scene/scene.h"
+#include "pathspace/scene/scene_validation.h"
+
+namespace pathspace::cli {
+
+namespace {
+
+const char* light_kind(LightType t) {
+  switch (t) {
+    case LightType::area_triangle: return "area (triangles)";
+    case LightType::area_sphere: return "area (spheres)";
+    case LightType::point: return "point";
+    case LightType::directional: return "directional";
+    case LightType::environment: return "environment";
+    case LightType::spot: return "spot";
+  }
+  return "unknown";
+}
+
+// The material's kind as its lobes make it (a standard material may be diffuse, glossy, a mirror
+// or glass, or a sum of them).
+std::string material_kind(const Material& m) {
+  if (m.type == MaterialType::rough_conductor) return "rough conductor";
+  if (m.type == MaterialType::rough_dielectric) return "rough dielectric";
+  std::vector<std::string> lobes;
+  const auto non_zero = [](const Rgb& c) { return c.r > 0.f || c.g > 0.f || c.b > 0.f; };
+  if (non_zero(m.diffuse) || m.diffuse_texture >= 0) lobes.push_back("diffuse");
+  if (non_zero(m.glossy) || m.glossy_texture >= 0) lobes.push_back("glossy");
+  if (non_zero(m.specular) || m.specular_texture >= 0) lobes.push_back(m.ior > 0.f ? "glass" : "mirror");
+  return lobes.empty() ? "black" : fmt::format("{}", fmt::join(lobes, " + "));
+}
+
+}  // namespace
+
+void print_scene_summary(const std::string& path, bool json) {
+  std::vector<std::string> warnings;
+  SceneFileSettings settings;
+  Scene scene;
+  try {
+    scene = load_scene(path, SceneLoadOptions{}, &warnings, &settings);
+    validate_scene(scene, &warnings);
+  } catch (const Error&) {
+    for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
+    throw;
+  }
+  std::map<std::string, size_t> lights, materials;
+  for (const Light& l : scene.lights) ++lights[light_kind(l.type)];
+  for (const Material& m : scene.materials) ++materials[material_kind(m)];
+  size_t texels = 0;
+  for (const ImageTexture& t : scene.textures) texels += t.texels.size();
+  const PerspectiveCamera& c = scene.camera;
+  if (json) {
+    nlohmann::ordered_json j;
+    j["file"] = path;
+    j["vertices"] = scene.positions.size();
+    j["triangles"] = scene.triangles.size();
+    j["spheres"] = scene.spheres.size();
+    j["textures"] = scene.textures.size();
+    j["texels"] = texels;
+    j["environment_image"] = scene.environment_image.empty() ? nlohmann::json(nullptr)
+                                                             : nlohmann::json{scene.environment_image.width, scene.environment_image.height};
+    j["lights"] = lights;
+    j["materials"] = materials;
+    j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}};
+    j["file_spp"] = settings.spp;
+    j["max_path_segments"] = scene.max_path_segments;
+    j["warnings"] = warnings;
+    fmt::print("{}\n", j.dump(2));
+    return;
+  }
+  fmt::print("scene {}\n", path);
+  fmt::print("  geometry     {} triangles ({} vertices), {} spheres\n", scene.triangles.size(), scene.positions.size(), scene.spheres.size());
+  fmt::print("  textures     {} ({} texels){}\n", scene.textures.size(), texels,
+             scene.environment_image.empty()
+                 ? std::string()
+                 : fmt::format("; environment image {}x{}", scene.environment_image.width, scene.environment_image.height));
+  fmt::print("  lights       {}\n", scene.lights.size());
+  for (const auto& [kind, n] : lights) fmt::print("    {:<26} {}\n", kind, n);
+  fmt::print("  materials    {}\n", scene.materials.size());
+  for (const auto& [kind, n] : materials) fmt::print("    {:<26} {}\n", kind, n);
+  fmt::print("  camera       {}x{}{}\n", c.width, c.height, c.is_pinhole() ? "" : fmt::format(", thin lens radius {:g}", c.lens_radius));
+  fmt::print("  path length  at most {} segments{}\n", scene.max_path_segments,
+             settings.spp > 0 ? fmt::format("; the file suggests {} spp", settings.spp) : std::string());
+  fmt::print("  approximated or ignored ({} warning{}):\n", warnings.size(), warnings.size() == 1 ? "" : "s");
+  for (const std::string& w : warnings) fmt::print("    {}\n", printable(w));
+}
+
+}  // namespace pathspace::cli

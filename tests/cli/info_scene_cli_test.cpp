@@ -1,0 +1,51 @@
+// `pathspace info SCENE_FILE` (apps/pathspace/scene_summary.h): counts of what the scene file holds
+// as pathspace reads it, and what the loader approximated or ignored with its file:line:column; a
+// scene that does not load is the same error as for `render`.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <string>
+
+#include "cli_process.h"
+#include "support/temp_dir.h"
+
+namespace pathspace {
+namespace {
+
+const std::string kRoom = std::string(PATHSPACE_SOURCE_DIR) + "/scenes/textured-room/scene.pbrt";
+
+TEST(InfoScene, CountsAndWarningsWithTheirLocation) {
+  const testing::Run r = testing::run_pathspace("info '" + kRoom + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("32 triangles (64 vertices), 0 spheres"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("area (triangles)           2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("environment                1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the file suggests 64 spp"), std::string::npos) << r.out;
+  // The room's sky map is a pbrt-v3 lat-long map: approximated, at the statement's line.
+  EXPECT_NE(r.out.find("scene.pbrt:22:3: warning: environment map"), std::string::npos) << r.out;
+
+  const testing::Run j = testing::run_pathspace("info --json '" + kRoom + "'");
+  ASSERT_EQ(j.exit_code, 0) << j.out;
+  const nlohmann::json parsed = nlohmann::json::parse(j.out.substr(j.out.find('{')));
+  EXPECT_EQ(parsed["triangles"], 32);
+  EXPECT_EQ(parsed["lights"]["area (triangles)"], 2);
+  EXPECT_EQ(parsed["materials"]["diffuse"], 4);
+  EXPECT_EQ(parsed["warnings"].size(), 1u);
+}
+
+TEST(InfoScene, ABadSceneIsAnInputError) {
+  testing::TempDir dir("info-scene");
+  const std::string file = dir.file("bad.pbrt");
+  {
+    std::ofstream(file) << "LookAt 0 0 5 0 0 0 0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                           "LightSource \"point\" \"rgb I\" [1 1 1]\nShape \"sphere\" \"float radius\" 1e20\n";
+  }
+  const testing::Run r = testing::run_pathspace("info '" + file + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("bad.pbrt:5:1: the radius of sphere 0"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace pathspace
