@@ -16,6 +16,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "pathspace/io/file_bytes.h"
 #include "pathspace/io/texture_file.h"
 
 namespace pathspace {
@@ -66,6 +67,22 @@ void scan_statements(const std::string& path, LoadWarnings* w) {
   for (const auto& [at, i] : positive)
     if (i > vertices)
       throw Error(FileLoc{path, at, 1}, "face vertex index " + std::to_string(i) + " out of range (the file has " + std::to_string(vertices) + " vertices)");
+}
+
+// tinyobjloader's skin weights ("vw", its own extension) convert a joint id to int without a range
+// check, undefined behaviour for 1e10 or inf (fuzz_obj found it, tests/fuzz/corpus/obj). pathspace
+// has no skinning, so those statements are commented out, one byte each, before tinyobjloader
+// reads the text; scan_statements has already warned that they are ignored. Lines end at '\n' or
+// '\r' and a statement starts after spaces and tabs, as tinyobjloader reads them.
+void drop_skin_weights(std::string* text) {
+  std::string& t = *text;
+  for (size_t i = 0; i < t.size();) {
+    size_t j = i;
+    while (j < t.size() && (t[j] == ' ' || t[j] == '\t')) ++j;
+    if (j + 2 < t.size() && t[j] == 'v' && t[j + 1] == 'w' && (t[j + 2] == ' ' || t[j + 2] == '\t')) t[j] = '#';
+    while (i < t.size() && t[i] != '\n' && t[i] != '\r') ++i;
+    ++i;
+  }
 }
 
 // map_Kd / map_Ks (multiplied by Kd / Ks as MTL specifies; a black Kd or Ks counts as white, which
@@ -126,18 +143,24 @@ Material obj_material(const tinyobj::material_t& mt, const std::string& path, Sc
 
 void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene) {
   scan_statements(path, warnings);
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config) || !reader.Error().empty())
-    throw Error(FileLoc{path}, "cannot read OBJ: " + (reader.Error().empty() ? std::string("parse failed") : reader.Error()));
-  std::istringstream tw(reader.Warning());
+  std::string text = read_file_bytes(path);
+  drop_skin_weights(&text);
+  std::istringstream in(text);
+  // Material files next to the OBJ, as tinyobjloader's ObjReader::ParseFromFile finds them.
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  tinyobj::MaterialFileReader mtl_reader(folder.empty() ? std::string() : folder + "/");
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warning, error;
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &mtl_reader, /*triangulate=*/true,
+                        /*default_vcols_fallback=*/false) ||
+      !error.empty())
+    throw Error(FileLoc{path}, "cannot read OBJ: " + (error.empty() ? std::string("parse failed") : error));
+  std::istringstream tw(warning);
   for (std::string line; std::getline(tw, line);)
     if (!line.empty()) warnings->add(FileLoc{path}, line);
 
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  const auto& materials = reader.GetMaterials();
   std::vector<uint32_t> material_index;
   std::vector<Rgb> material_emission;
   TextureFiles texture_files;
@@ -180,7 +203,7 @@ void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene
     corner_vertices.emplace(key, v);
     return v;
   };
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     if (!shape.lines.indices.empty() || !shape.points.indices.empty())
       warnings->add(FileLoc{path}, "shape '" + shape.name + "': lines and points are not rendered");
     const tinyobj::mesh_t& mesh = shape.mesh;
