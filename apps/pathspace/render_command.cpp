@@ -78,6 +78,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
         const size_t eq = v.find('=');
         return eq == std::string::npos || eq == 0 ? std::string("expected NAME=VALUE, got '" + v + "'") : std::string();
       });
+  cmd->add_option("--animation", o->animation, "glTF scene files: the animation to play, by index or name (default: the first)")
+      ->type_name("N|NAME");
   cmd->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
                 "Scene files: replace missing image textures by mid grey 0.5 and a missing environment map by white 1 (warnings)");
   cmd->add_option("--device", o->device,

@@ -23,6 +23,7 @@ struct RenderOptions {
   float focus_distance = 0.f;  // distance of the focus plane; 0: the scene's
   bool substitute_missing_textures = false;  // pbrt: neutral stand-ins for missing images (warnings)
   std::vector<std::string> defines;          // Mitsuba: "NAME=VALUE" scene parameters (-D)
+  std::string animation;                     // glTF: the animation played (index or name); empty: the first
   std::string integrator = "pt";
   uint32_t spp = 0;        // 0: unset
   double time_s = 0.0;     // 0: unset

@@ -70,9 +70,11 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     if (!is_scene_parameter_name(name)) throw UsageError("-D " + d + ": a parameter name is made of letters, digits and '_'");
     load_options.defines.emplace_back(name, d.substr(eq + 1));
   }
+  load_options.animation = o.animation;
   if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
-                     o.substitute_missing_textures || !o.defines.empty()))
-    throw UsageError("--camera-pos, --camera-target, --camera-up, --fov, --substitute-missing-textures and -D apply to scene files only");
+                     o.substitute_missing_textures || !o.defines.empty() || !o.animation.empty()))
+    throw UsageError(
+        "--camera-pos, --camera-target, --camera-up, --fov, --substitute-missing-textures, -D and --animation apply to scene files only");
   const Resolution res = parse_resolution(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   if (from_file) {

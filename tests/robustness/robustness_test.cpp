@@ -106,7 +106,7 @@ TEST_F(Robustness, SceneParametersFromTheCommandLine) {
   expect(std::string("render p.xml -D p-ower=1 -o a.exr") + kQuick, 2, {"-D p-ower=1", "letters, digits"});
   expect(std::string("render -D power=5,5,5 p.xml -D unused=1 -o a.exr") + kQuick, 0, {}, {"a.exr"});
 #endif
-  expect(std::string("render cornell-box -D power=1 -o a.exr") + kQuick, 2, {"-D apply to scene files only"});
+  expect(std::string("render cornell-box -D power=1 -o a.exr") + kQuick, 2, {"-D and --animation apply to scene files only"});
 }
 
 // Scene validation's messages carry the element's file:line:column in every format that has lines

@@ -199,8 +199,36 @@ TEST(GltfAnimation, FirstAnimationPlaysOthersAreAWarning) {
   const std::string first = one_channel(0, "translation", in, a_out, "LINEAR"), second = one_channel(0, "translation", in, b_out, "LINEAR");
   const Animated a = load(dir, "two.gltf", triangle_file(b, first.substr(0, first.size() - 1) + "," + second.substr(1)));
   ASSERT_TRUE(a.scene_at);
-  EXPECT_TRUE(a.warned("only animations[0] is played; the other 1 animations are ignored"));
+  EXPECT_TRUE(a.warned("animations[0] ('') is played; the other 1 are not (--animation N or NAME chooses one)"));
   expect_near(vertex(a.scene_at(1.0), 0), Vec3(1, 0, 0));
+}
+
+// render --animation: another animation by index or by name; an unknown one is an error listing them.
+TEST(GltfAnimation, AnotherAnimationByIndexOrName) {
+  testing::TempDir dir("gltf-anim");
+  GltfBuilder b;
+  const int in = b.floats({0, 1}, "SCALAR"), a_out = b.floats({0, 0, 0, 1, 0, 0}, "VEC3"), b_out = b.floats({0, 0, 0, 0, 7, 0}, "VEC3");
+  const std::string first = one_channel(0, "translation", in, a_out, "LINEAR"), second = one_channel(0, "translation", in, b_out, "LINEAR");
+  const std::string animations = first.substr(0, first.size() - 1) + ",{\"name\":\"lift\"," + second.substr(2);
+  testing::write_bytes(dir.file("two.gltf"), triangle_file(b, animations));
+  for (const std::string& wanted : {std::string("1"), std::string("lift")}) {
+    SceneLoadOptions o;
+    o.animation = wanted;
+    std::vector<std::string> warnings;
+    const auto scene_at = load_scene_animation(dir.file("two.gltf"), o, &warnings);
+    ASSERT_TRUE(scene_at) << wanted;
+    expect_near(vertex(scene_at(1.0), 0), Vec3(0, 7, 0), wanted);
+    EXPECT_TRUE(warnings.empty()) << wanted << ": " << warnings.front();
+  }
+  SceneLoadOptions o;
+  o.animation = "5";
+  std::vector<std::string> warnings;
+  try {
+    load_scene_animation(dir.file("two.gltf"), o, &warnings);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--animation 5: no such animation (the file has 0 '', 1 'lift')"), std::string::npos) << e.what();
+  }
 }
 
 TEST(GltfAnimation, MorphWeightsAreAWarningAndStandStill) {

@@ -113,6 +113,8 @@ Scene load_scene_file(const std::string& path, const SceneLoadOptions& options, 
   const std::string ext = scene_file_extension(path);
   if (!options.defines.empty() && ext != ".xml")
     w.add(FileLoc{path}, "-D NAME=VALUE sets Mitsuba scene parameters; ignored for this file");
+  if (!options.animation.empty() && ext != ".gltf" && ext != ".glb")
+    w.add(FileLoc{path}, "--animation chooses a glTF animation; ignored for this file");
   if (ext == ".pbrt") return pbrt::load_pbrt_file(path, options, &w, settings);
   if (ext == ".xml") return mitsuba::load_mitsuba_file(path, options, &w, settings);
   if (ext == ".gltf" || ext == ".glb") return gltf::load_gltf_file(path, options, &w);

@@ -25,6 +25,9 @@ struct SceneLoadOptions {
   // Mitsuba: scene parameters given from outside (`render -D NAME=VALUE`), used for `$NAME` before
   // the file's <default>; other formats ignore them with a warning.
   std::vector<std::pair<std::string, std::string>> defines;
+  // glTF: the animation to play, by index ("2") or name; empty: the first (`render --animation`).
+  // Other formats ignore it with a warning.
+  std::string animation;
 };
 
 // What a scene file suggests for the render besides the scene itself.

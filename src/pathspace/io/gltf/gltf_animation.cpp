@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "pathspace/io/gltf/gltf_channels.h"
@@ -45,6 +46,27 @@ struct GltfAnimation::State {
   }
 };
 
+namespace {
+
+// --animation: an index into animations[] or an animation's name; empty: the first.
+size_t choose_animation(const Context& c, const tinygltf::Model& model, const std::string& wanted) {
+  if (wanted.empty()) return 0;
+  std::vector<std::string> names;
+  for (size_t i = 0; i < model.animations.size(); ++i) {
+    if (model.animations[i].name == wanted) return i;
+    names.push_back(std::to_string(i) + " '" + model.animations[i].name + "'");
+  }
+  if (std::all_of(wanted.begin(), wanted.end(), [](char ch) { return ch >= '0' && ch <= '9'; }) && wanted.size() < 10) {
+    const size_t i = size_t(std::stoul(wanted));
+    if (i < model.animations.size()) return i;
+  }
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  c.fail("--animation " + wanted + ": no such animation (the file has " + list + ")");
+}
+
+}  // namespace
+
 GltfAnimation::GltfAnimation(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings)
     : state_(std::make_unique<State>()) {
   State& s = *state_;
@@ -54,9 +76,13 @@ GltfAnimation::GltfAnimation(const std::string& path, const SceneLoadOptions& op
   read_model(path, &s.model, warnings);
   const Context c = s.context(warnings);
   if (!s.model.animations.empty()) {
-    s.channels = read_channels(c, 0);
-    if (s.model.animations.size() > 1)
-      c.warn("only animations[0] is played; the other " + std::to_string(s.model.animations.size() - 1) + " animations are ignored");
+    const size_t chosen = choose_animation(c, s.model, options.animation);
+    s.channels = read_channels(c, chosen);
+    if (s.model.animations.size() > 1 && options.animation.empty())
+      c.warn("animations[0] ('" + s.model.animations[0].name + "') is played; the other " +
+             std::to_string(s.model.animations.size() - 1) + " are not (--animation N or NAME chooses one)");
+  } else if (!options.animation.empty()) {
+    c.fail("--animation " + options.animation + ": the file has no animations");
   }
   Scene& scene = s.initial;
   scene.name = path;

@@ -17,7 +17,8 @@ namespace pathspace::gltf {
 
 class GltfAnimation {
  public:
-  // Reads the file and its first animation and builds the scene at t = 0 s; `warnings` gets what
+  // Reads the file and its animation (SceneLoadOptions::animation, default the first) and builds the
+  // scene at t = 0 s; `warnings` gets what
   // that reports (later times report nothing new). Malformed files and animation data are a
   // pathspace::Error naming the file.
   GltfAnimation(const std::string& path, const SceneLoadOptions& options, LoadWarnings* warnings);
