@@ -48,6 +48,13 @@
 // Debian's stb_image.h calls memcpy with a null source and length 0 on some damaged PNGs: undefined
 // but harmless, and third-party. Sanitizer and fuzz builds compile this file without UBSan's
 // nonnull check (src/pathspace/CMakeLists.txt; docs/testing.md, "Fuzzing").
+// stb reads only the formats docs/cli.md lists (PNG, JPG, TGA, HDR, BMP): its PNM reader overflows
+// an int on a long header number (undefined; found by fuzz_image, tests/fuzz/corpus/image/
+// crash_pnm_header_int_overflow), and PSD, PIC and GIF are formats no scene of ours uses.
+#define STBI_NO_PNM
+#define STBI_NO_PSD
+#define STBI_NO_PIC
+#define STBI_NO_GIF
 #include <stb_image.h>
 #include <zlib.h>
 // The zlib level of the PNG being encoded on this thread (ImageEncoding: fast = Z_BEST_SPEED).
