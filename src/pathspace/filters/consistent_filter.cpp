@@ -9,7 +9,6 @@
 #include <cstdint>
 
 #include "pathspace/filters/vertex_buffer.h"
-#include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -159,7 +158,7 @@ void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, st
           ++local_empty;
           continue;
         }
-        (*values)[i] = Rgb(float(sum.r / sum.count), float(sum.g / sum.count), float(sum.b / sum.count));
+        (*values)[i] = sum.mean();
         (*found)[i] = 1;
       }
     queries += local_queries;
@@ -255,8 +254,7 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
           out_[c] = in_[c];
           continue;
         }
-        // Divided, not multiplied by 1 / count: the mean of equal values is then that value exactly.
-        out_[c] = Rgb(float(sum.r / sum.count), float(sum.g / sum.count), float(sum.b / sum.count));
+        out_[c] = sum.mean();
         local_largest = std::max(local_largest, sum.count);
         local_averaged += sum.count;
       }

@@ -93,10 +93,10 @@ struct GatherRecordTest {
   }
 };
 
-// hit[j] = whether record b0 + j is in the ball, j < n, as one vectorised loop. Its own function
-// with t taken by value, so that the loop sees no store that could change t's fields, and the
-// arrays offset to b0 first (indices b0 + j in 32 bits could wrap, which keeps GCC from treating
-// the addresses as linear).
+// hit[j] = whether record b0 + j is in the ball, j < n, as one vectorised loop. Its own function,
+// with the query's fields copied into locals, so that the loop sees no store that could change
+// them, and the points offset to b0 first (indices b0 + j in 32 bits could wrap, which keeps GCC
+// from treating the addresses as linear).
 __attribute__((noinline)) static void test_distances(const GatherRecordTest& in, uint32_t b0, uint32_t n, int32_t* __restrict hit) {
   const GatherData::Point* points = in.points + b0;
   const Vec3 p = in.p;

@@ -45,6 +45,9 @@ struct GatherQuery {
 struct GatherSum {
   double r = 0.0, g = 0.0, b = 0.0;
   uint32_t count = 0;
+  // Eq. 1's average (count > 0). Divided, not multiplied by 1 / count: the mean of equal values is
+  // then that value exactly.
+  Rgb mean() const { return Rgb(float(r / count), float(g / count), float(b / count)); }
 };
 
 struct GatherRecordTest;  // consistent_gather.cpp
@@ -80,7 +83,6 @@ class GatherData {
   // The values the next gathers average (one iteration's input, kept by the caller until then);
   // non-finite ones are left out.
   void set_values(const std::vector<Rgb>& values);
-  size_t size() const { return points_.size(); }
   static size_t bytes_per_record();
 
   // What the in-ball test reads, in one 16-byte record: most records it reads fail it.
