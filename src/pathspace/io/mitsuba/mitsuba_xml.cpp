@@ -134,15 +134,14 @@ void Document::expand_includes() {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
       throw Error(at, "included file '" + file + "' not found (looked for " + path.string() + ")");
-    auto inc = std::make_unique<Included>();
-    inc->name = path.string();
-    const std::string bytes = read_file_bytes(inc->name);
-    inc->line_starts = line_starts_of(bytes);
-    const pugi::xml_parse_result r = inc->doc.load_buffer(bytes.data(), bytes.size(), pugi::parse_default, pugi::encoding_utf8);
-    if (!r)
-      throw Error(loc_in(inc->name, inc->line_starts, size_t(std::max<ptrdiff_t>(0, r.offset))), std::string("XML syntax error: ") + r.description());
-    const pugi::xml_node inc_scene = inc->doc.child("scene");
-    if (!inc_scene) throw Error(FileLoc{inc->name}, "no <scene> element at the top level (included at " + at.to_string() + ")");
+    // Parsed on its own; its nodes' locations are taken while they are copied, so it is not kept.
+    const std::string name = path.string(), bytes = read_file_bytes(name);
+    const std::vector<size_t> line_starts = line_starts_of(bytes);
+    pugi::xml_document included;
+    const pugi::xml_parse_result r = included.load_buffer(bytes.data(), bytes.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!r) throw Error(loc_in(name, line_starts, size_t(std::max<ptrdiff_t>(0, r.offset))), std::string("XML syntax error: ") + r.description());
+    const pugi::xml_node inc_scene = included.child("scene");
+    if (!inc_scene) throw Error(FileLoc{name}, "no <scene> element at the top level (included at " + at.to_string() + ")");
     // Its elements take the place of the <include>, each copied node mapped to where it was written.
     for (const pugi::xml_node& child : inc_scene.children()) {
       if (child.type() != pugi::node_element) continue;
@@ -151,12 +150,11 @@ void Document::expand_includes() {
       while (!stack.empty()) {
         const auto [from, to] = stack.back();
         stack.pop_back();
-        copied_locs_[to.internal_object()] = node_loc(inc->name, inc->line_starts, from);
+        copied_locs_[to.internal_object()] = node_loc(name, line_starts, from);
         for (pugi::xml_node a = from.first_child(), b = to.first_child(); a && b; a = a.next_sibling(), b = b.next_sibling())
           stack.emplace_back(a, b);
       }
     }
-    included_.push_back(std::move(inc));
     scene_.remove_child(n);
     // Scan again from the start, so that the included file's own includes are expanded too (top-level
     // children only: cheap).

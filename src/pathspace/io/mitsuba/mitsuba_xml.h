@@ -8,7 +8,6 @@
 
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <unordered_map>
 #include <string>
 #include <utility>
@@ -55,13 +54,6 @@ class Document {
   void read_defaults();
   void expand_includes();
 
-  // An included file: its parsed text and line starts, kept for the locations of its copied nodes.
-  struct Included {
-    std::string name;
-    std::vector<size_t> line_starts;
-    pugi::xml_document doc;
-  };
-
   pugi::xml_document doc_;
   pugi::xml_node scene_;
   std::string name_;
@@ -70,7 +62,6 @@ class Document {
   std::map<std::string, pugi::xml_node> textures_;
   std::vector<std::string> search_paths_;  // <path value="..."/>
   std::string folder_;
-  std::vector<std::unique_ptr<Included>> included_;
   std::unordered_map<const void*, FileLoc> copied_locs_;  // node (internal object) -> where it was written
   bool legacy_ = false;
 };
