@@ -38,7 +38,7 @@ TEST(SceneSources, ValidationErrorsStartWithTheLocation) {
   const uint32_t good = scene.add_material(Material{});
   Material bad;
   bad.diffuse = Rgb(-1.f, 0.f, 0.f);
-  const auto before = SceneSizes<Scene>::of(scene);
+  const auto before = SceneSizes::of(scene);
   scene.add_material(bad);
   before.mark_since(&scene, FileLoc{"s.pbrt", 9, 1});
   scene.add_sphere(Vec3(), 1.f, good);

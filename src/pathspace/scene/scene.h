@@ -85,4 +85,13 @@ class Scene {
   bool finalized_ = false;
 };
 
+// The sizes of a scene's arrays before a loader step; mark_since() then records every element the
+// step added as coming from the step's statement (scene_sources.h).
+struct SceneSizes {
+  size_t vertices = 0, spheres = 0, materials = 0, lights = 0, textures = 0;
+
+  static SceneSizes of(const Scene& s);
+  void mark_since(Scene* s, const FileLoc& at) const;
+};
+
 }  // namespace pathspace

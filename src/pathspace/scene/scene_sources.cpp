@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "pathspace/scene/scene.h"
+
 namespace pathspace {
 
 void SceneSources::mark(Kind kind, size_t begin, size_t end, const FileLoc& at) {
@@ -22,6 +24,18 @@ const FileLoc* SceneSources::find(Kind kind, size_t i) const {
 }
 
 const FileLoc* SceneSources::camera() const { return camera_.file.empty() ? fallback() : &camera_; }
+
+SceneSizes SceneSizes::of(const Scene& s) {
+  return {s.positions.size(), s.spheres.size(), s.materials.size(), s.lights.size(), s.textures.size()};
+}
+
+void SceneSizes::mark_since(Scene* s, const FileLoc& at) const {
+  s->sources.mark(SceneSources::kVertex, vertices, s->positions.size(), at);
+  s->sources.mark(SceneSources::kSphere, spheres, s->spheres.size(), at);
+  s->sources.mark(SceneSources::kMaterial, materials, s->materials.size(), at);
+  s->sources.mark(SceneSources::kLight, lights, s->lights.size(), at);
+  s->sources.mark(SceneSources::kTexture, textures, s->textures.size(), at);
+}
 
 bool SceneSources::empty() const {
   return camera_.file.empty() && fallback_.file.empty() && std::all_of(ranges_.begin(), ranges_.end(), [](const auto& r) { return r.empty(); });

@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cstddef>
-#include <utility>
 #include <vector>
 
 #include "pathspace/base/error.h"
@@ -42,24 +41,6 @@ class SceneSources {
 
   std::array<std::vector<Range>, kKinds> ranges_;
   FileLoc camera_, fallback_;
-};
-
-// Marks every element a loader step added: the sizes of the scene's arrays before the step, then
-// mark_since() with the statement's location after it.
-template <typename SceneT>
-struct SceneSizes {
-  size_t vertices = 0, spheres = 0, materials = 0, lights = 0, textures = 0;
-
-  static SceneSizes of(const SceneT& s) {
-    return {s.positions.size(), s.spheres.size(), s.materials.size(), s.lights.size(), s.textures.size()};
-  }
-  void mark_since(SceneT* s, const FileLoc& at) const {
-    s->sources.mark(SceneSources::kVertex, vertices, s->positions.size(), at);
-    s->sources.mark(SceneSources::kSphere, spheres, s->spheres.size(), at);
-    s->sources.mark(SceneSources::kMaterial, materials, s->materials.size(), at);
-    s->sources.mark(SceneSources::kLight, lights, s->lights.size(), at);
-    s->sources.mark(SceneSources::kTexture, textures, s->textures.size(), at);
-  }
 };
 
 }  // namespace pathspace

@@ -35,7 +35,7 @@ class Builder {
       if (tag == "default") continue;  // read by Document
       if (tag == "texture" && !doc_.attr(n, "id").empty()) continue;  // found by Document for <ref>
       // What this element added is reported at its location by scene validation.
-      const auto before = SceneSizes<Scene>::of(scene_);
+      const auto before = SceneSizes::of(scene_);
       if (tag == "integrator") integrator(Object(doc_, n));
       else if (tag == "sensor") sensor(Object(doc_, n));
       else if (tag == "bsdf") define_bsdf(n);

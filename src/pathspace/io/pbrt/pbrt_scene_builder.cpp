@@ -45,7 +45,7 @@ class Builder {
 
   void handle(const Statement& st) {
     // What this statement added is reported at its location by scene validation.
-    const auto before = SceneSizes<Scene>::of(scene_);
+    const auto before = SceneSizes::of(scene_);
     dispatch(st);
     before.mark_since(&scene_, st.loc);
     for (const Param& p : st.params)
