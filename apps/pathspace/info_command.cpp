@@ -12,30 +12,16 @@
 #include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render.h"
+#include "pathspace/session/option_catalog.h"
 #include "scene_summary.h"
 
 namespace pathspace::cli {
 
 namespace {
 
-nlohmann::ordered_json option_json(const OptionSpec& s) {
-  nlohmann::ordered_json j;
-  j["name"] = s.name;
-  j["type"] = option_type_name(s.type);
-  j["default"] = s.default_text;
-  if (s.type == OptionType::integer || s.type == OptionType::real) {
-    j["min"] = s.min;
-    j["max"] = s.max;
-  }
-  if (s.type == OptionType::choice) j["choices"] = s.choices;
-  j["help"] = s.help;
-  j["paper"] = s.paper;
-  return j;
-}
-
 nlohmann::ordered_json options_json(const SettingsSchema& schema) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const OptionSpec& s : schema.options) list.push_back(option_json(s));
+  for (const OptionSpec& s : schema.options) list.push_back(option_spec_json(s));
   return list;
 }
 

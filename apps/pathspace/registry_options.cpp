@@ -2,31 +2,14 @@
 
 #include <fmt/format.h>
 
-#include "pathspace/base/error.h"
-#include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
+#include "pathspace/session/option_catalog.h"
 
 namespace pathspace::cli {
 
 namespace {
 
 std::string join(const std::vector<std::string>& names) { return fmt::format("{}", fmt::join(names, ", ")); }
-
-void merge(std::vector<RegistryOption>* out, const OptionSpec& spec, const std::string& integrator, const std::string& filter) {
-  for (RegistryOption& o : *out) {
-    if (o.spec.name != spec.name) continue;
-    if (!o.spec.same_contract(spec))
-      throw Error(fmt::format("option --{} is defined with different types, ranges or defaults by {} and {}", spec.name,
-                              join(o.integrators), integrator.empty() ? filter : integrator));
-    if (!integrator.empty()) o.integrators.push_back(integrator);
-    if (!filter.empty()) o.filters.push_back(filter);
-    return;
-  }
-  RegistryOption o{spec, {}, {}, {}};
-  if (!integrator.empty()) o.integrators.push_back(integrator);
-  if (!filter.empty()) o.filters.push_back(filter);
-  out->push_back(std::move(o));
-}
 
 std::string value_hint(const OptionSpec& spec) {
   switch (spec.type) {
@@ -44,10 +27,7 @@ const char* short_alias(const std::string& name) { return name == "max-depth" ? 
 
 std::vector<RegistryOption> registry_options() {
   std::vector<RegistryOption> out;
-  for (const IntegratorEntry& e : integrator_registry().entries())
-    for (const OptionSpec& spec : e.schema.options) merge(&out, spec, e.name, "");
-  for (const FilterEntry& e : filter_registry().entries())
-    for (const OptionSpec& spec : e.schema.options) merge(&out, spec, "", e.name);
+  for (CatalogOption& o : option_catalog()) out.push_back({std::move(o.spec), std::move(o.integrators), std::move(o.filters), {}});
   const size_t all = integrator_registry().entries().size();
   for (RegistryOption& o : out) {
     if (!o.filters.empty())

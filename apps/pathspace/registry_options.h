@@ -22,8 +22,7 @@ struct RegistryOption {
   std::string group;  // the --help group
 };
 
-// Every option of the registry, once per name. Throws pathspace::Error when two entries define one
-// name with different contracts (type, range, choices, default).
+// Every option of the catalog (session/option_catalog.h), with its --help group.
 std::vector<RegistryOption> registry_options();
 
 class RegistryOptionParser {

@@ -33,7 +33,7 @@
 #include "render_frames.h"
 #include "render_resume.h"
 #include "render_scene.h"
-#include "render_stats_json.h"
+#include "pathspace/session/render_stats_json.h"
 #include "usage_error.h"
 
 namespace pathspace::cli {

@@ -18,7 +18,7 @@
 #include "interrupt_handler.h"
 #include "render_outputs.h"
 #include "render_scene.h"
-#include "render_stats_json.h"
+#include "pathspace/session/render_stats_json.h"
 #include "usage_error.h"
 #include "video_encoder.h"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pathspace/session/render_session.h"
-#include "render_stats_json.h"
+#include "pathspace/session/render_stats_json.h"
 
 namespace pathspace::cli {
 

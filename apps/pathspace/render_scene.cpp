@@ -40,13 +40,6 @@ std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
   return Vec3(c[0], c[1], c[2]);
 }
 
-// A positional scene argument names a file when it has a scene-file extension or names an existing
-// file that is not also a built-in scene name.
-bool names_scene_file(const std::string& scene) {
-  std::error_code ec;
-  return is_scene_file(scene) || (!find_builtin_scene(scene) && std::filesystem::is_regular_file(scene, ec));
-}
-
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
 }

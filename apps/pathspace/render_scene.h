@@ -30,8 +30,6 @@ struct PreparedScene {
 Resolution parse_resolution(const std::string& text);
 // "x,y,z" of --camera-pos and its kind; nullopt for an empty text.
 std::optional<Vec3> parse_vec3(const std::string& text, const char* option);
-// Whether the positional scene names a file rather than a built-in scene.
-bool names_scene_file(const std::string& scene);
 void print_warnings(const std::vector<std::string>& warnings);
 // Loads or builds the scene of `o` and applies its options (below); validation warnings are printed.
 PreparedScene prepare_scene(const RenderOptions& o);

@@ -2,7 +2,7 @@
 // output folders docs/figures and docs/study-pclt hold no Markdown except the hand-written
 // docs/study-pclt/README.md) and checks, line by line:
 //  * repository paths: in prose, any token starting with a top-level folder (src/, tests/, apps/,
-//    bench/, docs/, scripts/, scenes/, cmake/, tools/, .ci/); in code spans, fenced blocks and
+//    bench/, docs/, scripts/, scenes/, cmake/, tools/, python/, examples/, .ci/); in code spans, fenced blocks and
 //    links also short forms whose first folder is one of src/pathspace/, tests/, bench/ or apps/
 //    (integrators/pt/pt_kernel.h = src/pathspace/integrators/pt/pt_kernel.h, unit/x_test.cpp =
 //    tests/unit/x_test.cpp), bare *.md names, and link targets. `*` is a wildcard, a <placeholder>
@@ -72,7 +72,7 @@ const std::set<std::string> kOtherToolsOptions = {
 
 // Folders at the repository root: a token starting with one of them is a repository path
 // wherever it appears.
-const char* const kTopFolders[] = {"src", "tests", "apps", "bench", "docs", "scripts", "scenes", "cmake", "tools", ".ci"};
+const char* const kTopFolders[] = {"src", "tests", "apps", "bench", "docs", "scripts", "scenes", "cmake", "tools", "python", "examples", ".ci"};
 // Folders whose sub-folders the documentation names without the prefix (in code and links only).
 const char* const kShortBases[] = {"src/pathspace", "tests", "bench", "apps", "src"};
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 
 #include "pathspace/io/file_bytes.h"
@@ -17,6 +18,7 @@
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/options/option_spec.h"
 #include "pathspace/io/ply_reader.h"
+#include "pathspace/scene/builtin_scenes.h"
 
 namespace pathspace {
 
@@ -85,6 +87,11 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   if (!(length(right) > 1e-6f)) throw Error("camera up vector is parallel to the view direction");
   c = make_file_camera(pos, forward, right, cross(normalize(right), normalize(forward)), fov, width, height);
   set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
+}
+
+bool names_scene_file(const std::string& name) {
+  std::error_code ec;
+  return is_scene_file(name) || (!find_builtin_scene(name) && std::filesystem::is_regular_file(name, ec));
 }
 
 bool is_scene_parameter_name(const std::string& name) {

@@ -43,6 +43,11 @@ bool is_scene_parameter_name(const std::string& name);
 // True when the path has an extension load_scene understands.
 bool is_scene_file(const std::string& path);
 
+// Whether a scene given by name (the CLI's positional scene, Python's Scene.load) names a file rather
+// than a built-in scene: it has a scene-file extension, or names an existing file that is not also a
+// built-in scene's name.
+bool names_scene_file(const std::string& name);
+
 Scene load_scene(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
                  SceneFileSettings* settings = nullptr);
 

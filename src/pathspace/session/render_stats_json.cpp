@@ -1,12 +1,12 @@
-#include "render_stats_json.h"
+#include "pathspace/session/render_stats_json.h"
 
 #include <nlohmann/json.hpp>
 
 #include "pathspace/session/render.h"
 
-namespace pathspace::cli {
+namespace pathspace {
 
-std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run) {
+nlohmann::ordered_json render_stats_object(const RenderStats& stats, const RenderRunInfo& run) {
   nlohmann::ordered_json j;
   j["scene"] = run.scene;
   j["integrator"] = stats.integrator;
@@ -28,7 +28,11 @@ std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run
   j["outputs"] = run.outputs;
   j["filter"] = stats.filter;
   j["statistics"] = statistics_json(stats.details);
-  return j.dump(2) + "\n";
+  return j;
+}
+
+std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run) {
+  return render_stats_object(stats, run).dump(2) + "\n";
 }
 
 nlohmann::ordered_json statistics_json(const Statistics& statistics) {
@@ -46,4 +50,4 @@ nlohmann::ordered_json statistics_json(const Statistics& statistics) {
   return details;
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace

@@ -1,4 +1,5 @@
-// The JSON written by `pathspace render --stats FILE`: what ran, how long, how fast (docs/cli.md).
+// The statistics of a render as JSON: what `pathspace render --stats FILE` writes (docs/cli.md) and
+// what the Python bindings return as RenderResult.stats (docs/python.md): what ran, how long, how fast.
 #pragma once
 
 #include <string>
@@ -7,8 +8,9 @@
 
 #include "pathspace/session/render_session.h"
 
-namespace pathspace::cli {
+namespace pathspace {
 
+// What the statistics say about the render besides the session's own counters.
 struct RenderRunInfo {
   std::string scene;
   int width = 0, height = 0;
@@ -16,8 +18,10 @@ struct RenderRunInfo {
   std::string outputs;  // comma-separated output files
 };
 
+nlohmann::ordered_json render_stats_object(const RenderStats& stats, const RenderRunInfo& run);
+// The same, indented, with a final newline.
 std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run);
 // The integrator's and filter's typed statistics: name -> number (text or histogram bins).
 nlohmann::ordered_json statistics_json(const Statistics& statistics);
 
-}  // namespace pathspace::cli
+}  // namespace pathspace
