@@ -17,6 +17,11 @@ identical() {
   launch "$n" "$bin" render "$@" -q -j 1 -o "$work/many.exr" --variance-out "$work/many-var.exr" --stats "$work/many.json"
   cmp "$work/one.exr" "$work/many.exr" || fail "image differs from the single-process render: $*"
   cmp "$work/one-var.exr" "$work/many-var.exr" || fail "variance differs from the single-process render: $*"
+  # Debug images (AOVs), where the options ask for them.
+  for aov in "$work"/one.aov-*; do
+    [ -e "$aov" ] || continue
+    cmp "$aov" "$work/many.${aov#"$work"/one.}" || fail "$(basename "$aov") differs: $*"
+  done
   grep -q '"ranks"' "$work/many.json" || fail "--stats has no per-rank table"
 }
 
@@ -38,7 +43,7 @@ case $case in
   identical_pt_hashed) identical 2 "${small[@]}" -i pt --filter hashed -s 5 ;;
   identical_pt_consistent) identical 2 "${small[@]}" -i pt --filter consistent -s 5 ;;
   identical_lt) identical 2 "${small[@]}" -i lt -s 5 ;;
-  identical_bpt) identical 2 "${small[@]}" -i bpt -s 5 ;;
+  identical_bpt) identical 2 "${small[@]}" -i bpt --bpt-strategy-images 3 -s 5 ;;
   identical_sppm) identical 2 "${small[@]}" -i sppm -s 5 ;;
   identical_pclt) identical 2 "${small[@]}" -i pclt -s 5 ;;
   identical_pt_3_ranks) identical 3 "${small[@]}" -i pt -s 7 ;;

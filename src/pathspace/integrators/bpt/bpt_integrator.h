@@ -99,6 +99,8 @@ class BptIntegrator final : public Integrator {
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
   void hand_over(ProcessGroup& group) override { buffers_.hand_over(group); }
+  // The strategy images are averages over all passes, wherever they were rendered.
+  void skip_pass(uint32_t, size_t) override { ++passes_; }
   // Per-strategy images "bpt-sS-tT" (means over the passes so far) when settings.strategy_images > 0.
   std::vector<NamedImage> aovs() const override;
 
