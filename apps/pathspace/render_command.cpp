@@ -26,6 +26,7 @@
 #include "pathspace/scene/scene_validation.h"
 #include "distinct_files.h"
 #include "interrupt_handler.h"
+#include "job_group.h"
 #include "number_options.h"
 #include "periodic_writer.h"
 #include "progress_reporter.h"
@@ -143,40 +144,65 @@ namespace {
 
 
 
-// The render itself: `resumed` is the checkpoint being continued, or null.
+// What mpirun cannot do yet (docs/distributed.md): these need every rank to agree on when to write.
+void check_distributable(const RenderOptions& o) {
+  for (const auto& [given, option] : {std::pair{!o.frames.empty(), "--frames"}, std::pair{o.write_every > 0.0, "--write-every"},
+                                      std::pair{o.checkpoint_every > 0.0, "--checkpoint-every"}})
+    if (given) throw UsageError(std::string(option) + " is not supported in a distributed render (mpirun) yet", "see docs/distributed.md");
+}
+
+// The render itself: `resumed` is the checkpoint being continued, or null. Under mpirun (job_group)
+// every rank renders its passes and rank 0 alone prints and writes.
 int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resumed) {
+  const std::shared_ptr<ProcessGroup> group = job_group();
+  const bool root = !group || group->rank() == 0;
   // Validate everything before the (possibly long) render.
-  const RenderConfig config = check_render_options(o, cmd);
+  RenderConfig config;
+  agreed_step(group.get(), [&] {
+    config = check_render_options(o, cmd);
+    if (group) check_distributable(o);
+  });
   if (!o.frames.empty()) return render_frame_sequence(o, config);
-  if (resumed && o.spp == 0 && o.time_s <= 0.0)
-    throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
-  const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
-  const bool from_file = names_scene_file(scene_name);
-  const BuiltinSceneInfo* builtin = from_file ? nullptr : find_builtin_scene(scene_name);
-  if (!from_file && !builtin) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
+  const bool quiet = o.quiet || !root;
   OutputPlan plan;
-  plan.images = image_output_paths(o.outputs, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
-  plan.variance = o.variance_path;
-  plan.stats = o.stats_path;
-  std::vector<NamedFile> files, inputs;
-  for (const std::string& path : plan.images) files.push_back({"-o", path}), check_image_path("-o", path);
-  if (!plan.variance.empty()) files.push_back({"--variance-out", plan.variance}), check_image_path("--variance-out", plan.variance);
-  if (!plan.stats.empty()) files.push_back({"--stats", plan.stats}), check_output_writable(plan.stats);
-  if (from_file) inputs.push_back({"the scene file", scene_name});
-  // The new checkpoint may replace the resumed one (atomically); no other output may.
-  if (!o.resume.empty()) inputs.push_back({"--resume", o.resume});
-  check_distinct_files(files, inputs);
-  if (!o.checkpoint.empty()) {
-    check_output_writable(o.checkpoint);
-    std::vector<NamedFile> all = files;
-    all.push_back({"--checkpoint", o.checkpoint});
-    check_distinct_files(all, from_file ? std::vector<NamedFile>{inputs.front()} : std::vector<NamedFile>{});
-  }
+  agreed_step(group.get(), [&] {
+    if (resumed && o.spp == 0 && o.time_s <= 0.0)
+      throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
+    const std::string scene_name = o.scene.empty() ? kDefaultSceneName : o.scene;
+    const bool from_file = names_scene_file(scene_name);
+    const BuiltinSceneInfo* builtin = from_file ? nullptr : find_builtin_scene(scene_name);
+    if (!from_file && !builtin) throw UsageError("unknown scene '" + scene_name + "'", "run 'pathspace info --scenes' for the list, or pass a .pbrt/.xml/.gltf/.glb/.ply/.obj file");
+    plan.images = image_output_paths(o.outputs, from_file ? std::filesystem::path(scene_name).stem().string() : std::string(builtin->name));
+    plan.variance = o.variance_path;
+    plan.stats = o.stats_path;
+    if (!root) return;  // only rank 0 writes
+    std::vector<NamedFile> files, inputs;
+    for (const std::string& path : plan.images) files.push_back({"-o", path}), check_image_path("-o", path);
+    if (!plan.variance.empty()) files.push_back({"--variance-out", plan.variance}), check_image_path("--variance-out", plan.variance);
+    if (!plan.stats.empty()) files.push_back({"--stats", plan.stats}), check_output_writable(plan.stats);
+    if (from_file) inputs.push_back({"the scene file", scene_name});
+    // The new checkpoint may replace the resumed one (atomically); no other output may.
+    if (!o.resume.empty()) inputs.push_back({"--resume", o.resume});
+    check_distinct_files(files, inputs);
+    if (!o.checkpoint.empty()) {
+      check_output_writable(o.checkpoint);
+      std::vector<NamedFile> all = files;
+      all.push_back({"--checkpoint", o.checkpoint});
+      check_distinct_files(all, from_file ? std::vector<NamedFile>{inputs.front()} : std::vector<NamedFile>{});
+    }
+  });
 
   InterruptHandler interrupt;
-  PreparedScene prepared = prepare_scene(o);
-  const auto image_options = canonical_image_options(cmd, prepared.key, config);
-  if (resumed) check_resume_options(resumed->info, image_options);
+  // Every rank reads the scene; one that cannot stops all of them with its message (agreed_step).
+  std::optional<PreparedScene> prepared_scene;
+  std::vector<std::pair<std::string, std::string>> image_options;
+  std::unique_ptr<RenderSession> session_ptr;
+  agreed_step(group.get(), [&] {
+    prepared_scene.emplace(prepare_scene(o));
+    image_options = canonical_image_options(cmd, prepared_scene->key, config);
+    if (resumed) check_resume_options(resumed->info, image_options);
+  });
+  PreparedScene& prepared = *prepared_scene;
   const int width = prepared.scene.camera.width, height = prepared.scene.camera.height;
   CheckpointInfo checkpoint_info;
   checkpoint_info.scene = prepared.label;
@@ -199,7 +225,14 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
 
   const int file_spp = prepared.file_spp;
   const std::string display_name = prepared.display_name, id = prepared.id;
-  RenderSession session(std::move(prepared.scene), config);
+  agreed_step(group.get(), [&] { session_ptr = std::make_unique<RenderSession>(std::move(prepared.scene), config); });
+  RenderSession& session = *session_ptr;
+  if (group) {
+    // The image options and this binary must match on every rank; the session adds its options and scene.
+    std::string identity = binary_identity() + " scene=" + prepared.key;
+    for (const auto& [name, value] : image_options) identity += " " + name + "=" + value;
+    session.join(group, identity);  // collective: every rank throws the same error
+  }
   if (resumed) session.restore_state(resumed->state);
   const uint32_t done = session.passes_done();
   const uint32_t spp = o.spp > 0 ? o.spp : (file_spp > 0 ? uint32_t(file_spp) : 16);
@@ -211,30 +244,38 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   const std::string* depth = o.registry.given().find("max-depth");
   plan.run.max_segments = depth ? std::stoi(*depth) : session.scene().max_path_segments;
 
-  ProgressReporter progress(stdout, uint64_t(width) * uint64_t(height), o.quiet);
-  if (!o.quiet) {
+  ProgressReporter progress(stdout, uint64_t(width) * uint64_t(height), quiet);
+  if (!quiet) {
     fmt::print("pathspace: {} ({}), {}x{}, {}", display_name, id, width, height, o.integrator);
+    if (group) fmt::print(", {} processes", group->size());
     if (resumed) fmt::print(", resumed from {} at {} passes", o.resume, done);
     fmt::print("\n");
   }
-  PeriodicWriter periodic(plan, o.write_every, o.checkpoint, o.checkpoint_every, checkpoint_of);
+  PeriodicWriter periodic(plan, o.write_every, root ? o.checkpoint : std::string(), o.checkpoint_every, checkpoint_of);
   interrupt.watch(&session);
   progress.watch(session);
-  if (passes > 0 || o.time_s > 0.0) {
-    const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
-    session.run(limit, [&](const RenderProgress& p) {
-      progress.update(p);
-      periodic.after_pass(session);
-    });
+  try {
+    if (passes > 0 || o.time_s > 0.0) {
+      const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
+      session.run(limit, [&](const RenderProgress& p) {
+        progress.update(p);
+        periodic.after_pass(session);
+      });
+    }
+  } catch (const std::exception& e) {
+    // The others may be waiting in the exchange for this rank: end the job.
+    if (group) abort_job(fmt::format("rank {}: {}", group->rank(), e.what()), 1);
+    throw;
   }
   interrupt.watch(nullptr);
   progress.finish();
   periodic.finish();
 
   if (interrupt.signal() != 0 && session.passes_done() == 0) {
-    fmt::print(stderr, "pathspace render: interrupted by {} before the first pass; nothing written\n", signal_name(interrupt.signal()));
+    if (root) fmt::print(stderr, "pathspace render: interrupted by {} before the first pass; nothing written\n", signal_name(interrupt.signal()));
     return interrupt.exit_code();
   }
+  if (!root) return interrupt.signal() != 0 ? interrupt.exit_code() : 0;
   // The outputs and the checkpoint as one set: they always hold the same passes.
   const RenderSnapshot result = session.snapshot();
   ExtraOutput checkpoint;
@@ -247,11 +288,11 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
                stats.spp, stats.spp - done, fmt::join(written, ", "));
     return interrupt.exit_code();
   }
-  if (!o.quiet) {
+  if (!quiet) {
     fmt::print("{} spp in {:.2f} s: {:.2f} Mrays/s, {:.3g} paths/s, {} threads", stats.spp, stats.wall_s, stats.mrays_per_s(),
                stats.paths_per_s(), stats.threads);
     if (stats.dropped_samples) fmt::print(", {} NaN/Inf samples dropped", stats.dropped_samples);
-    fmt::print("\n{}{}wrote {}\n", format_statistics(stats.details), periodic.summary(), fmt::join(written, ", "));
+    fmt::print("\n{}{}{}wrote {}\n", format_rank_table(stats), format_statistics(stats.details), periodic.summary(), fmt::join(written, ", "));
   }
   return 0;
 }

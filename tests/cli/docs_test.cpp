@@ -68,6 +68,13 @@ const std::set<std::string> kOtherToolsOptions = {
     "--vertices",                // scripts/gpu-check
     "--benchmark_",              // Google Benchmark: --benchmark_filter, --benchmark_out, ...
     "--gtest_",                  // GoogleTest: --gtest_filter, ...
+    "--allow-run-as-root",       // mpirun (docs/distributed.md)
+    "--oversubscribe",           // mpirun
+    "--hostfile",                // mpirun
+    "--map-by",                  // mpirun
+    "--ntasks-per-node",         // srun
+    "--cpus-per-task",           // srun
+    "--nodes",                   // srun
 };
 
 // Folders at the repository root: a token starting with one of them is a repository path

@@ -1,6 +1,7 @@
 #include "pathspace/film/film.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "pathspace/base/error.h"
@@ -59,6 +60,37 @@ void Film::load_state(StateReader& in) {
   in.get_vector("film.sum", &sum_, sum_.size());
   in.get_vector("film.sum_sq", &sum_sq_, sum_sq_.size());
   in.get_vector("film.count", &count_, count_.size());
+}
+
+}  // namespace pathspace
+
+namespace pathspace {
+
+namespace {
+constexpr size_t kPixelBytes = 6 * sizeof(double) + sizeof(uint32_t);
+}  // namespace
+
+std::vector<uint8_t> Film::pixel_bytes(size_t begin, size_t end) const {
+  const size_t n = end - begin;
+  std::vector<uint8_t> out(n * kPixelBytes);
+  uint8_t* p = out.data();
+  std::memcpy(p, &sum_[3 * begin], 3 * n * sizeof(double));
+  p += 3 * n * sizeof(double);
+  std::memcpy(p, &sum_sq_[3 * begin], 3 * n * sizeof(double));
+  p += 3 * n * sizeof(double);
+  std::memcpy(p, &count_[begin], n * sizeof(uint32_t));
+  return out;
+}
+
+void Film::set_pixel_bytes(size_t begin, size_t end, const std::vector<uint8_t>& bytes) {
+  const size_t n = end - begin;
+  if (end > count_.size() || bytes.size() != n * kPixelBytes) throw Error("film: a slice of the wrong size");
+  const uint8_t* p = bytes.data();
+  std::memcpy(&sum_[3 * begin], p, 3 * n * sizeof(double));
+  p += 3 * n * sizeof(double);
+  std::memcpy(&sum_sq_[3 * begin], p, 3 * n * sizeof(double));
+  p += 3 * n * sizeof(double);
+  std::memcpy(&count_[begin], p, n * sizeof(uint32_t));
 }
 
 }  // namespace pathspace

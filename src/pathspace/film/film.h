@@ -32,6 +32,12 @@ class Film {
   }
 
   uint32_t samples(uint32_t pixel) const { return count_[pixel]; }
+  // The sum of a pixel's samples. A film of one pass holds each pixel's one sample here exactly
+  // (0 + v), which is how a distributed render ships a pass (film_exchange.h).
+  Rgb sum(uint32_t pixel) const {
+    const double* s = &sum_[3 * size_t(pixel)];
+    return Rgb(float(s[0]), float(s[1]), float(s[2]));
+  }
   // Mean per pixel (black where no samples).
   Image mean() const;
   // Unbiased estimate of the variance of the pixel mean: s^2 / n.
@@ -40,6 +46,10 @@ class Film {
   // The per-pixel sums, sums of squares and counts (a restored film continues bit for bit).
   void save_state(StateWriter& out) const;
   void load_state(StateReader& in);
+  // Pixels [begin, end) as raw bytes (sums, squares, counts) and back: the slices of a distributed
+  // render are gathered onto rank 0 with these (film_exchange.h).
+  std::vector<uint8_t> pixel_bytes(size_t begin, size_t end) const;
+  void set_pixel_bytes(size_t begin, size_t end, const std::vector<uint8_t>& bytes);
 
  private:
   int width_, height_;

@@ -45,4 +45,10 @@ void SplatFilm::load_state(StateReader& in, const std::string& key) {
   in.get_vector(key + ".status", &status_, status_.size());
 }
 
+void SplatFilm::hand_over(ProcessGroup& group) {
+  group.all_sum(&sums_);
+  group.all_sum(&status_);
+  if (group.rank() != 0) clear();
+}
+
 }  // namespace pathspace

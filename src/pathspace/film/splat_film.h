@@ -10,6 +10,7 @@
 
 #include "pathspace/base/state_archive.h"
 #include "pathspace/film/film.h"
+#include "pathspace/parallel/process_group.h"
 #include "pathspace/math/rgb.h"
 #include "pathspace/parallel/atomics.h"
 
@@ -77,6 +78,9 @@ class SplatFilm {
   // Sums and status as sections "<key>.sums" and "<key>.status" (sizes must match when loading).
   void save_state(StateWriter& out, const std::string& key) const;
   void load_state(StateReader& in, const std::string& key);
+  // A distributed render (docs/distributed.md): rank 0 receives the sums of every rank (fixed point,
+  // so in any order) and the other ranks start again from zero, so handing over twice counts once.
+  void hand_over(ProcessGroup& group);
 
  private:
   int width_, height_;

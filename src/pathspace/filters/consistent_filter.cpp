@@ -132,6 +132,13 @@ void ConsistentFilter::end_pass() {
   pass_vertices_ = 0;
 }
 
+// The radius of the next pass depends on the paths filtered so far (eq. 2), wherever they were.
+// Switching off (sec. 2.2) is decided by the passes this process filtered; docs/distributed.md.
+void ConsistentFilter::skip_pass(uint64_t paths) {
+  paths_so_far_ += paths;
+  ++stats_.passes;
+}
+
 void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, std::vector<uint8_t>* found) {
   const auto start = std::chrono::steady_clock::now();
   const size_t slots = q.paths() * size_t(q.records_per_path());

@@ -59,6 +59,7 @@ class ConsistentFilter final : public PathSpaceFilter {
   size_t batch_paths(int records_per_path) const override;
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void end_pass() override;
+  void skip_pass(uint64_t paths) override;
   // A new frame: r0 follows the camera's pixel size; n of eq. 2 goes on counting.
   void begin_frame(const PerspectiveCamera& camera) override;
   void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;

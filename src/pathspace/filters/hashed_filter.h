@@ -51,6 +51,9 @@ class HashedFilter final : public PathSpaceFilter {
   HashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
 
   const char* name() const override { return "hashed"; }
+  std::string distribution_limit() const override {
+    return history_ ? "--temporal carries the voxel histories from pass to pass" : std::string();
+  }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void statistics(Statistics& out) const override;
   // The four debug images (voxel, count, level, probes) when settings.debug_images is on.

@@ -51,6 +51,11 @@ class PathSpaceFilter {
   virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) = 0;
   // After the last batch of a pass.
   virtual void end_pass() {}
+  // A pass of `paths` camera paths that another process of a distributed render filters
+  // (Integrator::skip_pass): advance what depends on the paths so far.
+  virtual void skip_pass(uint64_t /*paths*/) {}
+  // Integrator::distribution_limit of the filter's options.
+  virtual std::string distribution_limit() const { return {}; }
   // Queries of extra camera paths (FilterNeeds::query_paths) against the batch filtered last:
   // values[slot] receives the estimate at each valid record slot, found[slot] whether it had any
   // data to average (an empty query is not accumulated).

@@ -6,11 +6,13 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "pathspace/base/state_archive.h"
 #include "pathspace/film/film.h"
 #include "pathspace/film/image.h"
+#include "pathspace/parallel/process_group.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/stats/statistics.h"
 
@@ -24,6 +26,16 @@ class Integrator {
   virtual const char* name() const = 0;
   // Renders pass `pass` (one sample per pixel for PT) into film; adds to counters.
   virtual void render_pass(uint32_t pass, Film& film, PathCounters& counters) = 0;
+  // Pass `pass` is rendered by another process of a distributed render (docs/distributed.md): keep
+  // what the next pass reads as if this process had rendered it (the consistent filter's path
+  // count). Recurrences that are a function of the pass index alone (ProgressiveRadius) need nothing.
+  virtual void skip_pass(uint32_t /*pass*/, size_t /*pixels*/) {}
+  // At the end of a distributed run: what this process accumulated outside the film for aovs()
+  // (BPT's fixed-point strategy sums) goes to rank 0, and the other ranks start again from zero.
+  virtual void hand_over(ProcessGroup&) {}
+  // Why these options cannot be dealt to several processes (state that one pass hands to the next
+  // beyond skip_pass), or empty. A distributed render refuses them at start-up.
+  virtual std::string distribution_limit() const { return {}; }
   // Statistics beyond the common counters, accumulated over the passes so far, named
   // "<integrator or filter>.<what>" (e.g. "pclt.memory_bytes").
   virtual void statistics(Statistics&) const {}

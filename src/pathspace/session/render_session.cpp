@@ -75,6 +75,7 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
   if (limit.passes == 0 && !(limit.seconds >= 0.0)) throw Error("the time budget must not be negative");
   ThreadLimit thread_limit(config_.threads);
   threads_ = ThreadLimit::active();
+  if (group_ && group_->size() > 1) return run_distributed(limit, on_progress);
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const bool timed = limit.passes == 0 && limit.seconds > 0.0;
@@ -124,6 +125,27 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
 }
 
 void RenderSession::cancel() { cancel_.store(true); }
+
+void RenderSession::join(std::shared_ptr<ProcessGroup> group, const std::string& identity) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (passes_ > 0 || in_sequence_) throw Error("a render joins a process group before its first pass");
+  const std::string what = identity + " | " + config_.integrator + " " + config_.filter.name + " seed=" + std::to_string(config_.seed) +
+                           " | " + settings_fingerprint(config_) + " | " + scene_fingerprint(*scene_);
+  const uint64_t mine = fnv1a64(what.data(), what.size());
+  const std::vector<uint64_t> all = group->all_gather(mine);
+  for (size_t r = 1; r < all.size(); ++r)
+    if (all[r] != all[0])
+      throw Error("distributed render: rank " + std::to_string(r) + " has other options, scene or binary than rank 0 (fingerprint " +
+                  std::to_string(all[r]) + ", rank 0: " + std::to_string(all[0]) +
+                  "); run the same pathspace with the same options and scene files on every rank");
+  const std::string limit = integrator_->distribution_limit();
+  if (!limit.empty()) throw Error("distributed render: " + limit + "; render it in one process");
+  group_ = std::move(group);
+  exchange_ = std::make_unique<FilmExchange>(*group_, film_.pixel_count());
+  pass_film_ = Film(film_.width(), film_.height());
+  // A restored render's counters are the job's so far: rank 0 keeps them, so the ranks' sum is right.
+  if (group_->rank() != 0) counters_ = PathCounters{};
+}
 
 void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame) {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -176,6 +198,13 @@ RenderStats RenderSession::stats_locked() const {
   s.seed = config_.seed;
   s.frame = frame_;
   integrator_->statistics(s.details);
+  if (!ranks_.empty()) {
+    s.ranks = ranks_;
+    s.rays = job_counters_.rays;
+    s.shadow_rays = job_counters_.shadow_rays;
+    s.paths = job_counters_.paths;
+    s.dropped_samples = job_counters_.dropped;
+  }
   return s;
 }
 
@@ -247,6 +276,7 @@ void RenderSession::restore_state(const SessionState& state) {
   wall_s_ = wall_s;
   film_ = std::move(film);
   integrator_ = std::move(restored);
+  if (group_ && group_->rank() != 0) counters_ = PathCounters{};  // rank 0 keeps the job's totals (join)
 }
 
 PassProgress RenderSession::pass_progress() const {

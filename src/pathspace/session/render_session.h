@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "pathspace/film/film.h"
+#include "pathspace/film/film_exchange.h"
 #include "pathspace/film/image.h"
+#include "pathspace/parallel/process_group.h"
 #include "pathspace/session/render_config.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/stats/statistics.h"
@@ -56,6 +58,17 @@ struct PassProgress {
   double fraction = 0.0;  // of the data-parallel work started so far in the pass (parallel/work_progress.h)
 };
 
+// One process of a distributed render (docs/distributed.md), as rank 0 reports it.
+struct RankStats {
+  uint32_t passes = 0;  // rendered by this rank
+  int threads = 0;
+  double wall_s = 0.0;     // in passes and the exchange
+  double exchange_s = 0.0; // of which in the exchange and the stop agreement
+  uint64_t rays = 0;
+  uint64_t paths = 0;
+  uint64_t bytes_sent = 0;
+};
+
 // The common counters of every render, plus the integrator's and filter's own statistics.
 struct RenderStats {
   std::string integrator, filter;
@@ -68,7 +81,9 @@ struct RenderStats {
   int threads = 0;
   uint64_t seed = 0;   // the session's (a frame's passes use frame_seed(seed, frame))
   uint64_t frame = 0;  // of an animation (begin_frame); 0 for a still render
-  Statistics details;  // "<integrator or filter>.<what>" (Integrator::statistics)
+  Statistics details;  // "<integrator or filter>.<what>" (Integrator::statistics); rank 0's in a distributed render
+  // A distributed render, on rank 0: one entry per rank; the counters above are their totals.
+  std::vector<RankStats> ranks;
   double mrays_per_s() const { return wall_s > 0 ? double(rays) / wall_s * 1e-6 : 0.0; }
   double paths_per_s() const { return wall_s > 0 ? double(paths) / wall_s : 0.0; }
 };
@@ -105,7 +120,16 @@ class RenderSession {
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;
 
+  // Renders with the processes of `group` from now on (before the first run; docs/distributed.md):
+  // rank r renders passes r, r + R, ... and the films are reduced in pass order, so the image is
+  // bit-identical to one process's. Collective: every rank's options, seed and scene, plus
+  // `identity` (the caller's own: the binary, its image options), must agree, or every rank throws.
+  void join(std::shared_ptr<ProcessGroup> group, const std::string& identity);
+  // The rank of this process (0 without a group). Only rank 0 holds the whole film after a run.
+  int rank() const { return group_ ? group_->rank() : 0; }
+
   // Runs passes until `limit` or cancel(); calls on_progress after each pass (outside the lock).
+  // In a group: after each round of R passes, and collective; all ranks stop after the same round.
   RunResult run(const RunLimit& limit, const std::function<void(const RenderProgress&)>& on_progress = {});
   // Thread-safe. The current pass finishes, then run() returns. A cancel() while no run is going on
   // stops the next run before its first pass.
@@ -141,6 +165,9 @@ class RenderSession {
 
  private:
   RenderStats stats_locked() const;
+  RunResult run_distributed(const RunLimit& limit, const std::function<void(const RenderProgress&)>& on_progress);
+  // Rank 0 receives the film slices, the ranks' counters and the integrator's hand-over.
+  void gather_locked(double exchange_s);
   // Holds the lock for a reader (snapshot, stats, save_state); run() lets waiting readers go first.
   class ReaderLock {
    public:
@@ -172,6 +199,15 @@ class RenderSession {
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
   mutable std::atomic<int> readers_waiting_{0};
   std::atomic<bool> cancel_{false};
+  // Distributed rendering (join): the group, the slice exchange, this rank's pass of a round, and on
+  // rank 0 after a run every rank's statistics.
+  std::shared_ptr<ProcessGroup> group_;
+  std::unique_ptr<FilmExchange> exchange_;
+  Film pass_film_{0, 0};
+  uint32_t rank_passes_ = 0;
+  double rank_exchange_s_ = 0.0;
+  std::vector<RankStats> ranks_;
+  PathCounters job_counters_;  // every rank's, summed
   // The pass in progress (pass_progress): its 1-based index (0: none), start time and the work
   // counters when it started.
   std::atomic<uint32_t> running_pass_{0};

@@ -1,5 +1,6 @@
 #include "pathspace/session/render_stats_json.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "pathspace/session/render.h"
@@ -28,11 +29,31 @@ nlohmann::ordered_json render_stats_object(const RenderStats& stats, const Rende
   j["outputs"] = run.outputs;
   j["filter"] = stats.filter;
   j["statistics"] = statistics_json(stats.details);
+  // Only in a distributed render, so a single process's JSON is as before.
+  if (!stats.ranks.empty()) {
+    nlohmann::ordered_json ranks = nlohmann::ordered_json::array();
+    for (size_t r = 0; r < stats.ranks.size(); ++r) {
+      const RankStats& s = stats.ranks[r];
+      ranks.push_back({{"rank", r}, {"passes", s.passes}, {"threads", s.threads}, {"wall_time_s", s.wall_s},
+                       {"exchange_s", s.exchange_s}, {"rays", s.rays}, {"paths", s.paths}, {"bytes_sent", s.bytes_sent}});
+    }
+    j["ranks"] = ranks;
+  }
   return j;
 }
 
 std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run) {
   return render_stats_object(stats, run).dump(2) + "\n";
+}
+
+std::string format_rank_table(const RenderStats& stats) {
+  std::string out;
+  for (size_t r = 0; r < stats.ranks.size(); ++r) {
+    const RankStats& s = stats.ranks[r];
+    out += fmt::format("  rank {}: {} passes, {} threads, {:.2f} s ({:.2f} s exchanging), {:.3g} paths, {:.1f} MiB sent\n", r, s.passes,
+                       s.threads, s.wall_s, s.exchange_s, double(s.paths), double(s.bytes_sent) / 1048576.0);
+  }
+  return out;
 }
 
 nlohmann::ordered_json statistics_json(const Statistics& statistics) {

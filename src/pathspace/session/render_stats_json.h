@@ -23,5 +23,7 @@ nlohmann::ordered_json render_stats_object(const RenderStats& stats, const Rende
 std::string render_stats_json(const RenderStats& stats, const RenderRunInfo& run);
 // The integrator's and filter's typed statistics: name -> number (text or histogram bins).
 nlohmann::ordered_json statistics_json(const Statistics& statistics);
+// A distributed render's per-rank lines for the summary (docs/distributed.md); empty for one process.
+std::string format_rank_table(const RenderStats& stats);
 
 }  // namespace pathspace

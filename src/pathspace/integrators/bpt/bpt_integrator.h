@@ -37,6 +37,9 @@ class BptBuffers {
   // Sum over passes of strategy (s, t) for one pixel.
   Rgb strategy_sum(int s, int t, uint32_t pixel) const { return strategies_[size_t(bpt_strategy_index(s, t))].value(pixel); }
   uint64_t rejected_strategy_splats() const;
+  void hand_over(ProcessGroup& group) {
+    for (SplatFilm& f : strategies_) f.hand_over(group);
+  }
   // The per-strategy sums accumulate over passes: they are state of a continued render.
   void save_state(StateWriter& out) const;
   void load_state(StateReader& in);
@@ -95,6 +98,9 @@ class BptIntegrator final : public Integrator {
   void statistics(Statistics& out) const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
+  void hand_over(ProcessGroup& group) override { buffers_.hand_over(group); }
+  // The strategy images are averages over all passes, wherever they were rendered.
+  void skip_pass(uint32_t, size_t) override { ++passes_; }
   // Per-strategy images "bpt-sS-tT" (means over the passes so far) when settings.strategy_images > 0.
   std::vector<NamedImage> aovs() const override;
 

@@ -75,6 +75,13 @@ void PtIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters
   }
 }
 
+// One camera path per pixel goes through the filter in every pass.
+void PtIntegrator::skip_pass(uint32_t, size_t pixels) {
+  if (filter_) filter_->skip_pass(pixels);
+}
+
+std::string PtIntegrator::distribution_limit() const { return filter_ ? filter_->distribution_limit() : std::string(); }
+
 void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counters) {
   const size_t n = film.pixel_count();
   SharedCounters shared;

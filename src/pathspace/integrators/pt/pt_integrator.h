@@ -27,6 +27,8 @@ class PtIntegrator final : public Integrator {
   ~PtIntegrator() override;
   const char* name() const override { return "pt"; }
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
+  void skip_pass(uint32_t pass, size_t pixels) override;
+  std::string distribution_limit() const override;
   void statistics(Statistics& out) const override;
   std::vector<NamedImage> aovs() const override;
   void save_state(StateWriter& out) const override;

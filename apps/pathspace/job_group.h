@@ -1,0 +1,31 @@
+// The process group of a `pathspace render` started by mpirun or srun (docs/distributed.md), and the
+// CLI's rules for failures in one: a step every rank runs (reading the scene) ends with an agreement,
+// so one rank's error stops all of them with its message; a failure after that aborts the job.
+// Built without MPI (PATHSPACE_MPI off) or started alone, there is no group and nothing changes.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "pathspace/parallel/process_group.h"
+
+namespace pathspace::cli {
+
+// Null unless this process is one of several started by an MPI launcher (MPI is initialised on the
+// first call and finalised at exit).
+std::shared_ptr<ProcessGroup> job_group();
+
+// Runs `step` on every rank, then agrees (collectively) whether it failed anywhere: every rank then
+// throws the error of the lowest failing rank (a UsageError stays one), prefixed with its rank.
+void agreed_step(ProcessGroup* group, const std::function<void()>& step);
+
+// A failure on this rank alone while the others may be waiting for it: prints the message and ends
+// the whole job (MPI_Abort), so nothing hangs.
+[[noreturn]] void abort_job(const std::string& message, int exit_code);
+
+// A fingerprint of this executable's bytes (the options and the scene are compared by
+// RenderSession::join): ranks running different builds are refused at start-up.
+std::string binary_identity();
+
+}  // namespace pathspace::cli
