@@ -18,7 +18,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kChi2Tests = 47;
+constexpr int kChi2Tests = 66;
 const double kAlpha = testing::sidak(0.01, kChi2Tests);
 constexpr float kRelTolerance = 1e-3f;
 
@@ -133,6 +133,27 @@ TEST(BsdfChi2, RoughConductor) {
   }
 }
 
+Material beckmann(Material m) {
+  m.distribution = MicrofacetDistribution::beckmann;
+  return m;
+}
+
+TEST(BsdfChi2, BeckmannRoughConductor) {
+  for (const float alpha : {0.05f, 0.3f, 0.8f}) {  // 9 tests
+    const Material m = beckmann(make_rough_conductor(alpha, Rgb(0.2f, 0.9f, 1.1f), Rgb(3.9f, 2.4f, 2.2f)));
+    for (const float c : {0.95f, 0.5f, 0.05f})
+      check_sampling("beckmann_rough_conductor_" + std::to_string(alpha), m, incident(c));
+  }
+}
+
+TEST(BsdfChi2, BeckmannRoughDielectric) {
+  for (const float alpha : {0.1f, 0.5f}) {  // 10 tests
+    const Material m = beckmann(make_rough_dielectric(alpha, 1.5f));
+    for (const float c : {0.8f, 0.4f, 0.05f, -0.6f, -0.05f})
+      check_sampling("beckmann_rough_dielectric_" + std::to_string(alpha), m, incident(c));
+  }
+}
+
 void check_rough_dielectric(float ior) {
   for (const float alpha : {0.1f, 0.5f}) {  // 2 x 5 tests per ior
     const Material m = make_rough_dielectric(alpha, ior);
@@ -211,7 +232,9 @@ TEST(BsdfDelta, WeightsAndTotalInternalReflection) {
 TEST(BsdfReciprocity, ReflectionAndTransmission) {
   const Material materials[] = {make_phong(Rgb(0.3f), Rgb(0.5f), 12.f),
                                 make_rough_conductor(0.2f, Rgb(0.2f, 0.9f, 1.1f), Rgb(3.9f, 2.4f, 2.2f)),
-                                make_rough_dielectric(0.3f, 1.5f), make_rough_dielectric(0.05f, 1.f / 1.33f)};
+                                make_rough_dielectric(0.3f, 1.5f), make_rough_dielectric(0.05f, 1.f / 1.33f),
+                                beckmann(make_rough_conductor(0.2f, Rgb(0.2f, 0.9f, 1.1f), Rgb(3.9f, 2.4f, 2.2f))),
+                                beckmann(make_rough_dielectric(0.3f, 1.5f))};
   Pcg32 rng(17, 5);
   for (const Material& m : materials) {
     int nonzero = 0, transmissions = 0;
@@ -243,11 +266,14 @@ TEST(BsdfReciprocity, ReflectionAndTransmission) {
 // smooth: the mean sample weight (failures count 0) is <= 1 + 3 sigma and close to 1. Single
 // scattering loses the energy of rays that would reflect again; GGX's long tails make that
 // about 0.3% at normal incidence even for alpha = 0.05, and about 11% at cos = 0.05.
+// Beckmann's lighter tails lose less: the same bounds hold for it.
 TEST(BsdfEnergy, WhiteRoughConductorAlbedo) {
-  const Material m = make_rough_conductor(0.05f, Rgb(1.f), Rgb(1e4f));
   for (const float c : {1.f, 0.7f, 0.3f, 0.05f}) ASSERT_GT(fresnel_conductor_channel(c, 1.f, 1e4f), 0.9999f);
   Pcg32 rng(3, 3);
+  for (const MicrofacetDistribution dist : {MicrofacetDistribution::ggx, MicrofacetDistribution::beckmann})
   for (const float c : {0.95f, 0.5f, 0.2f, 0.05f}) {
+    Material m = make_rough_conductor(0.05f, Rgb(1.f), Rgb(1e4f));
+    m.distribution = dist;
     const Vec3 wo = incident(c);
     double sum = 0, sum_sq = 0;
     const int n = 200000;
@@ -260,7 +286,8 @@ TEST(BsdfEnergy, WhiteRoughConductorAlbedo) {
       sum_sq += w * w;
     }
     const double mean = sum / n, sigma = std::sqrt(std::max(0.0, sum_sq / n - mean * mean) / n);
-    std::printf("white conductor alpha 0.05 wo.z %.2f: albedo %.5f +- %.5f\n", c, mean, sigma);
+    std::printf("white conductor (%s) alpha 0.05 wo.z %.2f: albedo %.5f +- %.5f\n",
+                dist == MicrofacetDistribution::ggx ? "ggx" : "beckmann", c, mean, sigma);
     EXPECT_LE(mean, 1.0 + 3.0 * sigma + 1e-6);
     EXPECT_GT(mean, c >= 0.5f ? 0.99 : (c >= 0.2f ? 0.95 : 0.85));
   }

@@ -304,12 +304,14 @@ TEST(MitsubaLoader, Materials) {
   EXPECT_EQ(m[3].k, cu);
   EXPECT_LT(m[3].alpha, 1e-3f);
   EXPECT_FLOAT_EQ(m[4].alpha, 0.2f);
-  EXPECT_NE(find_warning(w, "m.xml:6:1: warning: <bsdf type=\"roughconductor\">: beckmann distribution approximated by GGX"), "");
+  EXPECT_EQ(m[4].distribution, MicrofacetDistribution::beckmann);  // Mitsuba's default distribution, no warning
+  EXPECT_EQ(find_warning(w, "distribution approximated"), "");
   EXPECT_EQ(m[5].type, MaterialType::standard);
   EXPECT_FLOAT_EQ(m[5].ior, 1.333f);
   EXPECT_EQ(m[5].specular, Rgb(0.9f, 0.8f, 0.7f));
   EXPECT_EQ(m[6].type, MaterialType::rough_dielectric);
   EXPECT_FLOAT_EQ(m[6].alpha, 0.3f);
+  EXPECT_EQ(m[6].distribution, MicrofacetDistribution::ggx);
   EXPECT_FLOAT_EQ(m[6].ior, 1.5f);
   EXPECT_FLOAT_EQ(m[7].ior, 1.5046f / 1.000277f);  // bk7 in air, Mitsuba's defaults
   EXPECT_NE(find_warning(w, "m.xml:9:1: warning: thindielectric approximated"), "");

@@ -37,6 +37,8 @@
 #include "pathspace/materials/fresnel.h"
 #include "pathspace/materials/material.h"
 #include "pathspace/materials/microfacet.h"
+#include "pathspace/materials/microfacet_beckmann.h"
+#include "pathspace/materials/microfacet_distribution.h"
 #include "pathspace/materials/rough_conductor.h"
 #include "pathspace/materials/rough_dielectric.h"
 #include "pathspace/materials/standard_material.h"
@@ -110,6 +112,12 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
     sum += bs.weight + bsdf_eval(m, wo, bs.wi, TransportMode::importance);
     acc += bsdf_pdf(m, wo, bs.wi, TransportMode::radiance);
   }
+  // Both microfacet distributions directly (the materials above use whichever their record names).
+  for (const MicrofacetDistribution dist : {MicrofacetDistribution::ggx, MicrofacetDistribution::beckmann}) {
+    const Vec3 mn = microfacet::sample_visible_normal(wo, 0.3f, dist, v);
+    acc += microfacet::d(mn, 0.3f, dist) + microfacet::g2(wo, bs.wi, 0.3f, dist) + microfacet::visible_normal_pdf(wo, mn, 0.3f, dist);
+  }
+  acc += microfacet::beckmann_d(wo, 0.2f) + microfacet::beckmann_lambda(wo, 0.2f) + microfacet::detail::erf_inverse(u.x - 0.5f);
   Rgb layers_f[kMaxBsdfLayers];
   bsdf_eval_layers(m, bsdf_layers(m), wo, bs.wi, TransportMode::radiance, layers_f);
   sum += layers_f[0] + shading_material(scene, hit.material, hit.uv).diffuse;

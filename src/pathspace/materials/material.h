@@ -11,17 +11,22 @@ namespace pathspace {
 
 enum class MaterialType : uint8_t {
   standard,          // sum of Lambert diffuse + normalised Phong + one smooth specular lobe (mirror or glass)
-  rough_conductor,   // GGX microfacet metal, visible-normal sampling
-  rough_dielectric,  // GGX microfacet glass (Walter et al. 2007), visible-normal sampling
+  rough_conductor,   // microfacet metal (GGX or Beckmann), visible-normal sampling
+  rough_dielectric,  // microfacet glass (Walter et al. 2007; GGX or Beckmann), visible-normal sampling
 };
 
 enum class TransportMode : uint8_t { radiance, importance };
+
+// The microfacet normal distribution of rough_conductor and rough_dielectric
+// (materials/microfacet_distribution.h).
+enum class MicrofacetDistribution : uint8_t { ggx, beckmann };
 
 struct Material {
   MaterialType type = MaterialType::standard;
   // Diffuse and Phong lobes are one-sided by default (zero from the back, as in the Cornell
   // scenes); two_sided mirrors them to the side of wo.
   bool two_sided = false;
+  MicrofacetDistribution distribution = MicrofacetDistribution::ggx;  // rough_conductor / rough_dielectric
 
   // standard
   Rgb diffuse;             // Lambert albedo rho_d
@@ -31,7 +36,7 @@ struct Material {
   float ior = 0.f;         // 0: the specular lobe is a mirror (no Fresnel); > 0: smooth dielectric
 
   // rough_conductor / rough_dielectric
-  float alpha = 0.1f;      // GGX roughness (alpha = perceptual roughness^2)
+  float alpha = 0.1f;      // microfacet roughness (GGX: alpha = perceptual roughness^2)
   Rgb eta{1.f, 1.f, 1.f};  // conductor: real part of the complex IOR (per channel)
   Rgb k;                   // conductor: imaginary part
   // rough_dielectric uses `ior` (inside / outside) and `specular` as the tint.

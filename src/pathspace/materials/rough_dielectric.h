@@ -1,15 +1,16 @@
-// GGX rough dielectric after Walter et al. 2007, "Microfacet Models for Refraction through Rough
-// Surfaces": reflection (eq. 20) plus transmission (eq. 21), the lobe chosen by the Fresnel term of
-// the sampled visible microfacet (Heitz 2018). wo and wi may lie on either side (wo.z < 0: inside the
-// glass, ior = n_inside / n_outside). `specular` tints both lobes. alpha < 1e-3 is clamped to 1e-3.
-// Transmission in TransportMode::radiance carries (eta_wo / eta_wi)^2 (Veach 1997 §5.2); the
-// importance-mode BSDF is the adjoint, f_importance(wo, wi) = f_radiance(wi, wo).
+// Rough dielectric (GGX or Beckmann, microfacet_distribution.h) after Walter et al. 2007,
+// "Microfacet Models for Refraction through Rough Surfaces": reflection (eq. 20) plus transmission
+// (eq. 21), the lobe chosen by the Fresnel term of the sampled visible microfacet (Heitz 2018). wo and
+// wi may lie on either side (wo.z < 0: inside the glass, ior = n_inside / n_outside). `specular`
+// tints both lobes. alpha < 1e-3 is clamped to 1e-3. Transmission in TransportMode::radiance carries
+// (eta_wo / eta_wi)^2 (Veach 1997 §5.2); the importance-mode BSDF is the adjoint,
+// f_importance(wo, wi) = f_radiance(wi, wo).
 #pragma once
 
 #include "pathspace/materials/bsdf_sample.h"
 #include "pathspace/materials/fresnel.h"
 #include "pathspace/materials/material.h"
-#include "pathspace/materials/microfacet.h"
+#include "pathspace/materials/microfacet_distribution.h"
 #include "pathspace/sampling/warps.h"
 
 namespace pathspace::rough_dielectric {
@@ -54,7 +55,7 @@ PS_INLINE Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi, TransportM
   const HalfVector hv = half_vector(m, wo, wi);
   if (!hv.valid) return {};
   const float alpha = microfacet::clamp_alpha(m.alpha);
-  const float dg = microfacet::ggx_d(hv.h, alpha) * microfacet::ggx_g2(wo, wi, alpha);
+  const float dg = microfacet::d(hv.h, alpha, m.distribution) * microfacet::g2(wo, wi, alpha, m.distribution);
   const float cos_oi = fabsf(wo.z * wi.z);
   if (hv.reflect) return m.specular * (hv.fresnel * dg / (4.f * cos_oi));
   // Walter eq. 21, with n_wi^2 divided out of numerator and denominator.
@@ -69,7 +70,7 @@ PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi, Transport
   const HalfVector hv = half_vector(m, wo, wi);
   if (!hv.valid) return 0.f;
   const float alpha = microfacet::clamp_alpha(m.alpha);
-  const float pdf_h = microfacet::ggx_visible_normal_pdf(wo, hv.h, alpha);
+  const float pdf_h = microfacet::visible_normal_pdf(wo, hv.h, alpha, m.distribution);
   if (hv.reflect) return hv.fresnel * pdf_h / (4.f * fabsf(dot(wo, hv.h)));
   return (1.f - hv.fresnel) * pdf_h * fabsf(dot(wi, hv.h)) / transmission_denominator(wo, wi, hv);
 }
@@ -77,7 +78,7 @@ PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi, Transport
 PS_INLINE bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u, TransportMode mode, BsdfSample* s) {
   if (fabsf(wo.z) < kMinCosine) return false;
   const float alpha = microfacet::clamp_alpha(m.alpha);
-  const Vec3 h = microfacet::ggx_sample_visible_normal(wo, alpha, u);
+  const Vec3 h = microfacet::sample_visible_normal(wo, alpha, m.distribution, u);
   const float cos_o = dot(wo, h);  // same sign as wo.z
   const float fresnel = fresnel_dielectric(cos_o, m.ior);
   Vec3 wi;

@@ -1,6 +1,6 @@
 // Mitsuba BSDF conversion (see mitsuba_materials.h). Roughness `alpha` is Mitsuba's microfacet
-// alpha directly (no remapping); Beckmann is approximated by GGX of the same alpha (warning), since
-// pathspace's microfacet materials are GGX only. Index of refraction = int_ior / ext_ior.
+// alpha directly (no remapping), with its `distribution` (Beckmann, Mitsuba's default, or GGX:
+// materials/microfacet_distribution.h). Index of refraction = int_ior / ext_ior.
 #include "pathspace/io/mitsuba/mitsuba_materials.h"
 
 #include <algorithm>
@@ -29,16 +29,17 @@ float eta_of(const Object& o, float int_default) {
   return eta;
 }
 
-// `microfacet`: the material really is a microfacet model, so the distribution matters (plastic's
-// Phong coat already follows Beckmann's exponent mapping).
-float alpha_of(const Object& o, LoadWarnings* w, bool microfacet = true) {
+// The roughness of a rough material, and its microfacet distribution (Mitsuba's default: Beckmann)
+// for the materials that are microfacet models (plastic's Phong coat already follows Beckmann's
+// exponent mapping and ignores it).
+float alpha_of(const Object& o, LoadWarnings* w, MicrofacetDistribution* distribution = nullptr) {
   const float a = float(o.get_float("alpha", 0.1));
   const float u = float(o.get_float("alpha_u", a)), v = float(o.get_float("alpha_v", a));
   if (u != v) w->add(o.loc(), o.title() + ": anisotropic roughness approximated by sqrt(alpha_u * alpha_v)");
   const std::string dist = o.get_string("distribution", "beckmann");
   if (dist != "ggx" && dist != "beckmann") throw Error(o.loc(), o.title() + ": distribution must be beckmann or ggx");
-  if (microfacet && dist != "ggx") w->add(o.loc(), o.title() + ": " + dist + " distribution approximated by GGX with the same alpha");
-  o.ignore({"sample_visible"});
+  if (distribution) *distribution = dist == "ggx" ? MicrofacetDistribution::ggx : MicrofacetDistribution::beckmann;
+  o.ignore({"sample_visible"});  // visible normals are always sampled
   const float alpha = std::sqrt(std::max(0.f, u) * std::max(0.f, v));
   if (!std::isfinite(alpha)) throw Error(o.loc(), o.title() + ": alpha must be finite");
   return alpha;
@@ -57,7 +58,9 @@ Material conductor(const Object& o, const std::string& folder, LoadWarnings* w) 
   k = o.get_rgb("k", k, folder, w);
   if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
     w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
-  Material m = make_rough_conductor(rough ? alpha_of(o, w) : 0.f, eta, k);
+  MicrofacetDistribution distribution = MicrofacetDistribution::ggx;
+  Material m = make_rough_conductor(rough ? alpha_of(o, w, &distribution) : 0.f, eta, k);
+  m.distribution = distribution;
   return m;
 }
 
@@ -70,8 +73,12 @@ Material dielectric(const Object& o, const std::string& folder, LoadWarnings* w)
     w->add(o.loc(), "thindielectric approximated by a smooth dielectric interface (a thin slab does not refract)");
     return make_glass(eta, tint);
   }
-  const float alpha = o.type() == "roughdielectric" ? alpha_of(o, w) : 0.f;
-  return alpha < 1e-3f ? make_glass(eta, tint) : make_rough_dielectric(alpha, eta, tint);
+  MicrofacetDistribution distribution = MicrofacetDistribution::ggx;
+  const float alpha = o.type() == "roughdielectric" ? alpha_of(o, w, &distribution) : 0.f;
+  if (alpha < 1e-3f) return make_glass(eta, tint);
+  Material m = make_rough_dielectric(alpha, eta, tint);
+  m.distribution = distribution;
+  return m;
 }
 
 // Same approximation as the pbrt loader's coateddiffuse: Lambert base * (1 - F0) under a mirror
@@ -80,7 +87,7 @@ Material plastic(const Object& o, const std::string& folder, TextureBinding* tex
   const float eta = eta_of(o, 1.49f);  // Mitsuba's default int_ior is "polypropylene"
   const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
   const Rgb coat = o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) * f0;
-  const float alpha = o.type() == "roughplastic" ? alpha_of(o, w, false) : 0.f;
+  const float alpha = o.type() == "roughplastic" ? alpha_of(o, w) : 0.f;
   Material m;
   m.diffuse = textured_rgb(o, "diffuse_reflectance", Rgb(0.5f), folder, textures, w, &m.diffuse_texture) * (1.f - f0);
   if (alpha < 1e-3f) {
