@@ -70,8 +70,7 @@ def render(scene, integrator="pt", *, spp=None, time=None, filter="none", seed=0
     threads      worker threads, 0: all cores (a process-wide limit while the render runs)
     device       'cpu', or 'cuda' where built and a GPU is present
     progress     True: a tqdm bar when tqdm is installed; a callable: called after every pass as
-                 progress(fraction, stats), fraction of spp or time done (0 for time-limited
-                 renders until the end); False: nothing
+                 progress(fraction, stats), fraction of spp or of time done; False: nothing
 
     The GIL is released while rendering, so renders in several threads run at once. Ctrl-C stops
     the render after the pass that is running and raises RenderInterrupted, whose .result holds
