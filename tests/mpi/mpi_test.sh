@@ -131,6 +131,9 @@ case $case in
     ls "$work"/one.aov-* > /dev/null || fail "no strategy images"
     same_images "${opts[@]}" resumed ;;
   kill_and_resume) kill_and_resume ;;
+  # Periodic writes gather the film and BPT's strategy images onto rank 0 mid-run (several times in
+  # 41 passes at 0.01 s); the final images must not change.
+  periodic_gathers_bpt) identical 3 "${small[@]}" -i bpt --bpt-strategy-images 3 -s 41 --write-every 0.01 ;;
   frames_pt) frames exact 3 7 cornell-moving-sphere -r 40x30 --seed 7 -i pt -s 2 ;;
   frames_consistent) frames exact 0 4 cornell-moving-sphere -r 40x30 --seed 7 -i pt --filter consistent -s 2 ;;
   frames_hashed_temporal) frames first_chunk 0 19 cornell-moving-light -r 40x30 --seed 7 -i pt --filter hashed --temporal hybrid ;;
