@@ -221,7 +221,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     // The image options and this binary must match on every rank; the session adds its options and scene.
     std::string identity = binary_identity() + " scene=" + prepared.key;
     for (const auto& [name, value] : image_options) identity += " " + name + "=" + value;
-    session.join(group, identity);  // collective: every rank throws the same error
+    agreed_step(group.get(), [&] { session.join(group, identity); });  // collective: every rank throws the same error
   }
   if (resumed) session.restore_state(resumed->state);
   const uint32_t done = session.passes_done();
