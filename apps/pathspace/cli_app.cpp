@@ -7,6 +7,7 @@
 
 #include "pathspace/base/printable.h"
 #include "pathspace/options/option_spec.h"
+#include "job_group.h"
 #include "usage_error.h"
 
 namespace pathspace::cli {
@@ -87,14 +88,14 @@ int run_cli(int argc, char** argv) {
   } catch (const UsageError& e) {
     const std::string command = cli.command_name();
     const std::string hint = e.hint().empty() ? "run '" + command + " --help' for usage" : e.hint();
-    fmt::print(stderr, "{}: error: {} ({})\n", command, one_line(e.what()), hint);
+    if (!error_printed_by_rank0()) fmt::print(stderr, "{}: error: {} ({})\n", command, one_line(e.what()), hint);
     return kExitUsage;
   } catch (const OptionError& e) {
     const std::string command = cli.command_name();
     fmt::print(stderr, "{}: error: {} (run '{} --help' for usage)\n", command, one_line(e.what()), command);
     return kExitUsage;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "{}: error: {}\n", cli.command_name(), one_line(e.what()));
+    if (!error_printed_by_rank0()) fmt::print(stderr, "{}: error: {}\n", cli.command_name(), one_line(e.what()));
     return kExitFailure;
   }
 }

@@ -15,12 +15,14 @@ namespace {
 
 std::atomic<int> g_signal{0};
 std::atomic<RenderSession*> g_session{nullptr};
+std::atomic<bool> g_speaks{true};  // false on the ranks of a distributed render other than 0
 struct sigaction g_previous_int, g_previous_term;
 
-static_assert(std::atomic<int>::is_always_lock_free && std::atomic<RenderSession*>::is_always_lock_free,
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<RenderSession*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
               "the signal handler may only touch lock-free atomics");
 
 void say(const char* text) {
+  if (!g_speaks.load()) return;
   const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
   (void)ignored;
 }
@@ -40,7 +42,8 @@ extern "C" void on_signal(int sig) {
 
 }  // namespace
 
-InterruptHandler::InterruptHandler() {
+InterruptHandler::InterruptHandler(bool speaks) {
+  g_speaks.store(speaks);
   g_signal.store(0);
   g_session.store(nullptr);
   struct sigaction action;

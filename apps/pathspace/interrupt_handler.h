@@ -14,7 +14,8 @@ namespace pathspace::cli {
 class InterruptHandler {
  public:
   // Installs the handlers (one InterruptHandler at a time); the destructor restores the previous ones.
-  InterruptHandler();
+  // `speaks`: print what a signal does (rank 0 of a distributed render only: mpirun signals every rank).
+  explicit InterruptHandler(bool speaks = true);
   ~InterruptHandler();
   InterruptHandler(const InterruptHandler&) = delete;
   InterruptHandler& operator=(const InterruptHandler&) = delete;

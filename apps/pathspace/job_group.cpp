@@ -35,6 +35,12 @@ std::shared_ptr<ProcessGroup> job_group() {
 #endif
 }
 
+namespace {
+bool g_error_printed_by_rank0 = false;
+}  // namespace
+
+bool error_printed_by_rank0() { return g_error_printed_by_rank0; }
+
 void agreed_step(ProcessGroup* group, const std::function<void()>& step) {
   if (!group) return step();
   std::exception_ptr failure;
@@ -53,6 +59,7 @@ void agreed_step(ProcessGroup* group, const std::function<void()>& step) {
     if (codes[r] != 0) first = int(r);
   if (first < 0) return;
   group->broadcast(first, &message);
+  g_error_printed_by_rank0 = group->rank() != 0;
   if (first == group->rank()) std::rethrow_exception(failure);
   const std::string text = fmt::format("rank {}: {}", first, message);
   if (codes[size_t(first)] == 2) throw UsageError(text);

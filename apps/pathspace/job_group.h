@@ -19,6 +19,9 @@ std::shared_ptr<ProcessGroup> job_group();
 // Runs `step` on every rank, then agrees (collectively) whether it failed anywhere: every rank then
 // throws the error of the lowest failing rank (a UsageError stays one), prefixed with its rank.
 void agreed_step(ProcessGroup* group, const std::function<void()>& step);
+// True on the ranks other than 0 once agreed_step threw: rank 0 prints that error for the job
+// (with the failing rank's number), the others only exit with its status.
+bool error_printed_by_rank0();
 
 // A failure on this rank alone while the others may be waiting for it: prints the message and ends
 // the whole job (MPI_Abort), so nothing hangs.

@@ -28,8 +28,17 @@ bool PeriodicWriter::due(Clock::time_point* last, double every) {
   return true;
 }
 
-void PeriodicWriter::after_pass(const RenderSession& session) {
-  if (due(&last_output_, output_every_) && !output_job_.busy())
+void PeriodicWriter::after_pass(RenderSession& session, bool gathered) {
+  if (session.distributed() && !gathered) {
+    if (output_pending_ || checkpoint_pending_) return;  // asked already
+    output_pending_ = due(&last_output_, output_every_) && !output_job_.busy();
+    checkpoint_pending_ = due(&last_checkpoint_, checkpoint_every_) && !checkpoint_job_.busy();
+    if (output_pending_ || checkpoint_pending_) session.request_gather();
+    return;
+  }
+  const bool output = session.distributed() ? std::exchange(output_pending_, false) : due(&last_output_, output_every_);
+  const bool checkpoint = session.distributed() ? std::exchange(checkpoint_pending_, false) : due(&last_checkpoint_, checkpoint_every_);
+  if (output && !output_job_.busy())
     output_job_.start([this, snap = session.snapshot()] {
       try {
         write_outputs(plan_, snap, OutputKind::periodic);
@@ -37,7 +46,7 @@ void PeriodicWriter::after_pass(const RenderSession& session) {
         warn("periodic output write failed", e);
       }
     });
-  if (due(&last_checkpoint_, checkpoint_every_) && !checkpoint_job_.busy())
+  if (checkpoint && !checkpoint_job_.busy())
     checkpoint_job_.start([this, info = checkpoint_info_(session), state = session.save_state()] {
       try {
         write_checkpoint(checkpoint_path_, info, state);

@@ -2,6 +2,8 @@
 // takes a snapshot (or the session's state) on the render thread when a write is due and hands the
 // encoding and writing to a background job (parallel/background_job.h). A write still running when
 // the next is due is skipped, so the render never waits for the disk; a failed write is a warning.
+// In a distributed render rank 0's clock decides: a due write asks the ranks to gather the film at
+// the next round boundary (RenderSession::request_gather) and is taken when it has been gathered.
 #pragma once
 
 #include <chrono>
@@ -20,8 +22,8 @@ class PeriodicWriter {
   // `plan` and `checkpoint_info` must outlive the writer; seconds <= 0 turns that kind off.
   PeriodicWriter(const OutputPlan& plan, double output_every, std::string checkpoint_path, double checkpoint_every,
                  std::function<CheckpointInfo(const RenderSession&)> checkpoint_info);
-  // After a pass (on the render thread, between passes).
-  void after_pass(const RenderSession& session);
+  // After a pass or round (on the render thread, between passes); `gathered`: RenderProgress::gathered.
+  void after_pass(RenderSession& session, bool gathered = false);
   // Waits for the writes in flight.
   void finish();
   // "periodic writes: ..." for the summary; empty when nothing was written.
@@ -37,6 +39,7 @@ class PeriodicWriter {
   std::function<CheckpointInfo(const RenderSession&)> checkpoint_info_;
   Clock::time_point last_output_ = Clock::now(), last_checkpoint_ = Clock::now();
   BackgroundJob output_job_, checkpoint_job_;
+  bool output_pending_ = false, checkpoint_pending_ = false;  // due, waiting for the gathered film
 };
 
 }  // namespace pathspace::cli

@@ -144,13 +144,6 @@ namespace {
 
 
 
-// What mpirun cannot do yet (docs/distributed.md): these need every rank to agree on when to write.
-void check_distributable(const RenderOptions& o) {
-  for (const auto& [given, option] : {std::pair{!o.frames.empty(), "--frames"}, std::pair{o.write_every > 0.0, "--write-every"},
-                                      std::pair{o.checkpoint_every > 0.0, "--checkpoint-every"}})
-    if (given) throw UsageError(std::string(option) + " is not supported in a distributed render (mpirun) yet", "see docs/distributed.md");
-}
-
 // The render itself: `resumed` is the checkpoint being continued, or null. Under mpirun (job_group)
 // every rank renders its passes and rank 0 alone prints and writes.
 int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resumed) {
@@ -158,10 +151,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   const bool root = !group || group->rank() == 0;
   // Validate everything before the (possibly long) render.
   RenderConfig config;
-  agreed_step(group.get(), [&] {
-    config = check_render_options(o, cmd);
-    if (group) check_distributable(o);
-  });
+  agreed_step(group.get(), [&] { config = check_render_options(o, cmd); });
   if (!o.frames.empty()) return render_frame_sequence(o, config);
   const bool quiet = o.quiet || !root;
   OutputPlan plan;
@@ -192,7 +182,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     }
   });
 
-  InterruptHandler interrupt;
+  InterruptHandler interrupt(root);
   // Every rank reads the scene; one that cannot stops all of them with its message (agreed_step).
   std::optional<PreparedScene> prepared_scene;
   std::vector<std::pair<std::string, std::string>> image_options;
@@ -231,7 +221,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     // The image options and this binary must match on every rank; the session adds its options and scene.
     std::string identity = binary_identity() + " scene=" + prepared.key;
     for (const auto& [name, value] : image_options) identity += " " + name + "=" + value;
-    session.join(group, identity);  // collective: every rank throws the same error
+    agreed_step(group.get(), [&] { session.join(group, identity); });  // collective: every rank throws the same error
   }
   if (resumed) session.restore_state(resumed->state);
   const uint32_t done = session.passes_done();
@@ -251,15 +241,16 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     if (resumed) fmt::print(", resumed from {} at {} passes", o.resume, done);
     fmt::print("\n");
   }
-  PeriodicWriter periodic(plan, o.write_every, root ? o.checkpoint : std::string(), o.checkpoint_every, checkpoint_of);
+  // Rank 0 alone writes, and its clock decides when (PeriodicWriter).
+  PeriodicWriter periodic(plan, root ? o.write_every : 0.0, root ? o.checkpoint : std::string(), root ? o.checkpoint_every : 0.0, checkpoint_of);
   interrupt.watch(&session);
   progress.watch(session);
   try {
     if (passes > 0 || o.time_s > 0.0) {
       const RunLimit limit = o.time_s > 0.0 ? RunLimit::for_seconds(o.time_s) : RunLimit::for_passes(passes);
       session.run(limit, [&](const RenderProgress& p) {
-        progress.update(p);
-        periodic.after_pass(session);
+        if (!p.gathered) progress.update(p);
+        periodic.after_pass(session, p.gathered);
       });
     }
   } catch (const std::exception& e) {

@@ -2,11 +2,13 @@
 
 #include <csignal>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pathspace/base/printable.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/camera_path_file.h"
 #include "pathspace/io/scene_loader.h"
@@ -16,6 +18,7 @@
 #include "distinct_files.h"
 #include "frame_pattern.h"
 #include "interrupt_handler.h"
+#include "job_group.h"
 #include "render_outputs.h"
 #include "render_scene.h"
 #include "pathspace/session/render_stats_json.h"
@@ -86,35 +89,45 @@ std::function<Scene(double)> file_animation(const PreparedScene& prepared) {
 }  // namespace
 
 int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
-  check_sequence_options(o);
-  const FrameRange range = parse_frames(o.frames);
+  // Under mpirun each rank renders a chunk of the frames as a sequence of its own and writes them;
+  // rank 0 writes --stats and --video once every rank is done (docs/distributed.md).
+  const std::shared_ptr<ProcessGroup> group = job_group();
+  const bool root = !group || group->rank() == 0;
+  const bool quiet = o.quiet || !root;
+  FrameRange range;
   const uint32_t spp = o.spp > 0 ? o.spp : 1;
   std::string ffmpeg;
-  if (!o.video.empty()) {
-    ffmpeg = find_ffmpeg();
-    if (ffmpeg.empty()) throw Error("--video needs the ffmpeg program, which is not on PATH (scripts/install-deps installs it)");
-    check_output_writable(o.video);
-  }
-
-  PreparedScene prepared = prepare_scene(o);
+  std::optional<PreparedScene> prepared_scene;
+  std::vector<std::string> images;
+  agreed_step(group.get(), [&] {
+    check_sequence_options(o);
+    range = parse_frames(o.frames);
+    if (!o.video.empty() && root) {
+      ffmpeg = find_ffmpeg();
+      if (ffmpeg.empty()) throw Error("--video needs the ffmpeg program, which is not on PATH (scripts/install-deps installs it)");
+      check_output_writable(o.video);
+    }
+    prepared_scene.emplace(prepare_scene(o));
+    images = image_output_paths(o.outputs, prepared_scene->display_name + "-%04d");
+    std::vector<NamedFile> files;
+    for (const std::string& pattern : images) {
+      check_frame_pattern("-o", pattern);
+      files.push_back({"-o", frame_path(pattern, range.first)});
+      check_image_path("-o", files.back().path);
+    }
+    if (!o.variance_path.empty()) {
+      check_frame_pattern("--variance-out", o.variance_path);
+      files.push_back({"--variance-out", frame_path(o.variance_path, range.first)});
+    }
+    if (!o.stats_path.empty() && root) files.push_back({"--stats", o.stats_path}), check_output_writable(o.stats_path);
+    if (!o.video.empty()) files.push_back({"--video", o.video});
+    std::vector<NamedFile> inputs;
+    if (!prepared_scene->file.empty()) inputs.push_back({"the scene file", prepared_scene->file});
+    if (!o.camera_path.empty()) inputs.push_back({"--camera-path", o.camera_path});
+    check_distinct_files(files, inputs);
+  });
+  PreparedScene& prepared = *prepared_scene;
   const BuiltinSceneInfo* builtin = prepared.file.empty() ? find_builtin_scene(prepared.label) : nullptr;
-  std::vector<std::string> images = image_output_paths(o.outputs, prepared.display_name + "-%04d");
-  std::vector<NamedFile> files;
-  for (const std::string& pattern : images) {
-    check_frame_pattern("-o", pattern);
-    files.push_back({"-o", frame_path(pattern, range.first)});
-    check_image_path("-o", files.back().path);
-  }
-  if (!o.variance_path.empty()) {
-    check_frame_pattern("--variance-out", o.variance_path);
-    files.push_back({"--variance-out", frame_path(o.variance_path, range.first)});
-  }
-  if (!o.stats_path.empty()) files.push_back({"--stats", o.stats_path}), check_output_writable(o.stats_path);
-  if (!o.video.empty()) files.push_back({"--video", o.video});
-  std::vector<NamedFile> inputs;
-  if (!prepared.file.empty()) inputs.push_back({"the scene file", prepared.file});
-  if (!o.camera_path.empty()) inputs.push_back({"--camera-path", o.camera_path});
-  check_distinct_files(files, inputs);
 
   Animation animation;
   animation.fps = o.fps;
@@ -150,33 +163,56 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
     }
   }
 
-  if (!o.quiet)
-    fmt::print("pathspace: {} ({}), {}x{}, {}, frames {} to {} at {} spp\n", prepared.display_name, prepared.id, width, height,
+  if (!quiet) {
+    fmt::print("pathspace: {} ({}), {}x{}, {}, frames {} to {} at {} spp", prepared.display_name, prepared.id, width, height,
                o.integrator, range.first, range.last, spp);
-  InterruptHandler interrupt;
+    if (group) fmt::print(", {} processes", group->size());
+    fmt::print("\n");
+  }
+  InterruptHandler interrupt(root);
   RenderRunInfo run{prepared.display_name, width, height, 0, ""};
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   // Each frame's scene validation warnings (the session's), printed the first time they appear;
   // prepare_scene printed those of the still scene.
   std::set<std::string> printed(prepared.validation_warnings.begin(), prepared.validation_warnings.end());
-  const uint64_t rendered = render_frames(
-      animation, config, range, spp,
-      [&](const FrameResult& f) {
-        for (const std::string& w : f.scene_warnings)
-          if (printed.insert(w).second) print_warnings({w});
-        if (interrupt.signal() != 0 && f.snapshot.stats.spp < spp) return false;  // an unfinished frame is not written
-        OutputPlan plan;
-        for (const std::string& p : images) plan.images.push_back(frame_path(p, f.frame));
-        if (!temporary_pngs.empty()) plan.images.push_back(frame_path(png_pattern, f.frame));
-        if (!o.variance_path.empty()) plan.variance = frame_path(o.variance_path, f.frame);
-        plan.run = run;
-        write_outputs(plan, f.snapshot, OutputKind::final);
-        frames.push_back(frame_entry(f, animation));
-        if (!o.quiet) fmt::print("frame {}: {:.3f} s{}\n", f.frame, f.render_seconds, frame_summary(f.snapshot.stats.details));
-        return interrupt.signal() == 0;
-      },
-      [&](RenderSession& session) { interrupt.watch(&session); });
+  const FrameChunk chunk = group ? FrameChunk{group->rank(), group->size()} : FrameChunk{};
+  uint64_t rendered = 0;
+  try {
+    rendered = render_frames(
+        animation, config, range, spp,
+        [&](const FrameResult& f) {
+          for (const std::string& w : f.scene_warnings)
+            if (printed.insert(w).second) fmt::print(stderr, "{}\n", printable(w));  // by the rank rendering the frame
+          if (interrupt.signal() != 0 && f.snapshot.stats.spp < spp) return false;  // an unfinished frame is not written
+          OutputPlan plan;
+          for (const std::string& p : images) plan.images.push_back(frame_path(p, f.frame));
+          if (!temporary_pngs.empty()) plan.images.push_back(frame_path(png_pattern, f.frame));
+          if (!o.variance_path.empty()) plan.variance = frame_path(o.variance_path, f.frame);
+          plan.run = run;
+          write_outputs(plan, f.snapshot, OutputKind::final);
+          frames.push_back(frame_entry(f, animation));
+          // Every rank's frames are its own: each prints its lines.
+          if (!o.quiet) fmt::print("frame {}: {:.3f} s{}\n", f.frame, f.render_seconds, frame_summary(f.snapshot.stats.details));
+          return interrupt.signal() == 0;
+        },
+        [&](RenderSession& session) { interrupt.watch(&session); }, chunk);
+  } catch (const std::exception& e) {
+    // Rank 0 waits for the others' frames at the end: a failure on one rank ends the job.
+    if (group) abort_job(fmt::format("rank {}: {}", group->rank(), e.what()), 1);
+    throw;
+  }
   interrupt.watch(nullptr);
+  if (group) {
+    // Rank 0 receives every rank's frame entries (the chunks are in rank order, so frames stay in
+    // order); once it has them, every frame file is written.
+    const std::string mine = frames.dump();
+    const std::vector<std::vector<uint8_t>> all = group->gather(std::vector<uint8_t>(mine.begin(), mine.end()));
+    if (!root) return interrupt.signal() != 0 ? interrupt.exit_code() : 0;
+    frames = nlohmann::ordered_json::array();
+    for (const std::vector<uint8_t>& bytes : all)
+      for (const auto& entry : nlohmann::ordered_json::parse(std::string(bytes.begin(), bytes.end()))) frames.push_back(entry);
+    rendered = frames.size();
+  }
 
   if (!o.stats_path.empty()) {
     nlohmann::ordered_json j;
@@ -198,7 +234,7 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
     fmt::print(stderr, "pathspace render: interrupted after {} of {} frames\n", frames.size(), range.count());
     return interrupt.exit_code();
   }
-  if (!o.quiet) fmt::print("{} frames written\n", rendered);
+  if (!quiet) fmt::print("{} frames written\n", rendered);
   return 0;
 }
 

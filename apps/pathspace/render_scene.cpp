@@ -11,6 +11,7 @@
 #include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene_validation.h"
+#include "job_group.h"
 #include "number_options.h"
 #include "usage_error.h"
 
@@ -40,7 +41,9 @@ std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
   return Vec3(c[0], c[1], c[2]);
 }
 
+// Under mpirun every rank reads the same scene and notices the same: rank 0 alone prints it.
 void print_warnings(const std::vector<std::string>& warnings) {
+  if (const std::shared_ptr<ProcessGroup> group = job_group(); group && group->rank() != 0) return;
   for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
 }
 
@@ -80,7 +83,8 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     try {
       p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
     } catch (const Error&) {
-      print_warnings(warnings);  // what was noticed before the error can explain it
+      // What was noticed before the error can explain it (on every rank: the error may be this rank's).
+      for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
       throw;
     }
     print_warnings(warnings);

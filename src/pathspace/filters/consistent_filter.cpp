@@ -87,6 +87,11 @@ float ConsistentFilter::initial_radius(const VertexBuffer& b, size_t i) const {
 
 void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
   const auto start = std::chrono::steady_clock::now();
+  if (!in_pass_) {
+    in_pass_ = true;
+    pass_start_stats_ = stats_;
+    pass_paths_ = 0;
+  }
   *filtered = buffer.contribution;  // every slot keeps its own value unless averaged below
   const size_t paths = buffer.paths();
   uint32_t max_neighbours = 0;
@@ -115,6 +120,7 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
     vertices = buffer.total_records();
   }
   paths_so_far_ += paths;
+  pass_paths_ += paths;
   stats_.vertices += vertices;
   pass_vertices_ += vertices;
   pass_max_neighbours_ = std::max(pass_max_neighbours_, max_neighbours);
@@ -123,6 +129,8 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
 
 void ConsistentFilter::end_pass() {
   ++stats_.passes;
+  in_pass_ = false;
+  pass_report_ = stats_.switched_off_after == 0 ? 1 | (pass_vertices_ > 0 ? 2 : 0) | uint64_t(pass_max_neighbours_) << 2 : 0;
   if (stats_.switched_off_after == 0) {
     stats_.max_neighbours_last = pass_max_neighbours_;
     // Sec. 2.2: no ball holds more than its own vertex, so averaging has ended.
@@ -133,10 +141,37 @@ void ConsistentFilter::end_pass() {
 }
 
 // The radius of the next pass depends on the paths filtered so far (eq. 2), wherever they were.
-// Switching off (sec. 2.2) is decided by the passes this process filtered; docs/distributed.md.
+// Switching off (sec. 2.2) is agreed after each round (agree_round).
 void ConsistentFilter::skip_pass(uint64_t paths) {
   paths_so_far_ += paths;
   ++stats_.passes;
+}
+
+// Replays end_pass's decision over the round's passes in pass order. All ranks began the round in
+// the same state; a pass after the one that switched filtering off was filtered here but must not
+// be: its statistics and paths are taken back and the session renders it again (at most once per
+// rank and render).
+bool ConsistentFilter::agree_round(const std::vector<uint64_t>& reports, int mine) {
+  const size_t n = reports.size();
+  for (size_t i = 0; i < n; ++i) {
+    if ((reports[i] & 1) == 0) return false;  // filtering was off for the whole round already
+    const uint32_t largest = uint32_t(reports[i] >> 2);
+    stats_.max_neighbours_last = largest;
+    stats_.switched_off_after = 0;
+    if ((reports[i] & 2) == 0 || largest > 1) continue;
+    // stats_.passes counts the whole round on every rank: pass i of the round is pass count passes - n + i + 1.
+    stats_.switched_off_after = uint32_t(stats_.passes - n + i + 1);
+    if (mine <= int(i)) return false;
+    const ConsistentFilterStats agreed = stats_;
+    stats_ = pass_start_stats_;
+    stats_.passes = agreed.passes - 1;  // the render again counts it
+    stats_.switched_off_after = agreed.switched_off_after;
+    stats_.max_neighbours_last = agreed.max_neighbours_last;
+    paths_so_far_ -= pass_paths_;
+    pass_report_ = 0;
+    return true;
+  }
+  return false;
 }
 
 void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, std::vector<uint8_t>* found) {

@@ -60,6 +60,12 @@ class ConsistentFilter final : public PathSpaceFilter {
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void end_pass() override;
   void skip_pass(uint64_t paths) override;
+  // A distributed render agrees on the switch-off (sec. 2.2) pass by pass, as one process takes it.
+  bool reports_passes() const override { return true; }
+  uint64_t pass_report() const override { return pass_report_; }
+  bool agree_round(const std::vector<uint64_t>& reports, int mine) override;
+  // n of eq. 2 and the switch-off carry across frames: a chunk of frames is exact only after all before.
+  uint32_t frame_warm_up() const override { return UINT32_MAX; }  // Integrator::kAllFrames
   // A new frame: r0 follows the camera's pixel size; n of eq. 2 goes on counting.
   void begin_frame(const PerspectiveCamera& camera) override;
   void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
@@ -95,6 +101,12 @@ class ConsistentFilter final : public PathSpaceFilter {
   uint32_t pass_max_neighbours_ = 0;
   uint64_t pass_vertices_ = 0;
   double batch_radius_scale_ = 0.0;  // r / r0 of the batch filtered last (0: none to query)
+  // For agree_round: the statistics before the pass in progress or last filtered, its paths, and
+  // what it reports (bit 0: filtering was on; bit 1: it had vertices; above: its largest ball count).
+  bool in_pass_ = false;
+  ConsistentFilterStats pass_start_stats_;
+  uint64_t pass_paths_ = 0;
+  uint64_t pass_report_ = 0;
   // Scratch, reused between batches.
   HashGrid grid_;
   std::vector<BatchVertex> batch_vertex_;  // per batch vertex

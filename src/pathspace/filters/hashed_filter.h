@@ -54,6 +54,11 @@ class HashedFilter final : public PathSpaceFilter {
   std::string distribution_limit() const override {
     return history_ ? "--temporal carries the voxel histories from pass to pass" : std::string();
   }
+  // Frames in chunks (docs/distributed.md): the voxel histories start from the 8 frames before a
+  // chunk, the cycle in which the hybrid's probes (1/8 of the pixels a frame) visit every pixel
+  // once; integration weights are then N/(N+1) >= 8/9. Without --temporal every pass starts afresh.
+  static constexpr uint32_t kTemporalWarmUpFrames = 8;
+  uint32_t frame_warm_up() const override { return history_ ? kTemporalWarmUpFrames : 0; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void statistics(Statistics& out) const override;
   // The four debug images (voxel, count, level, probes) when settings.debug_images is on.

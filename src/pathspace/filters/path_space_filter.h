@@ -54,6 +54,12 @@ class PathSpaceFilter {
   // A pass of `paths` camera paths that another process of a distributed render filters
   // (Integrator::skip_pass): advance what depends on the paths so far.
   virtual void skip_pass(uint64_t /*paths*/) {}
+  // Integrator::reports_passes, pass_report and agree_round of the filter.
+  virtual bool reports_passes() const { return false; }
+  virtual uint64_t pass_report() const { return 0; }
+  virtual bool agree_round(const std::vector<uint64_t>& /*reports*/, int /*mine*/) { return false; }
+  // Integrator::frame_warm_up of the filter.
+  virtual uint32_t frame_warm_up() const { return 0; }
   // Integrator::distribution_limit of the filter's options.
   virtual std::string distribution_limit() const { return {}; }
   // Queries of extra camera paths (FilterNeeds::query_paths) against the batch filtered last:

@@ -33,6 +33,18 @@ class Integrator {
   // At the end of a distributed run: what this process accumulated outside the film for aovs()
   // (BPT's fixed-point strategy sums) goes to rank 0, and the other ranks start again from zero.
   virtual void hand_over(ProcessGroup&) {}
+  // A rank other than 0 of a distributed render that restored a checkpoint: drop what hand_over sums
+  // (rank 0 holds the restored part and hands it over), so the restored passes count once.
+  virtual void forget_handed_over() {}
+  // A distributed render of passes whose work depends on an earlier pass's outcome (the consistent
+  // filter's switch-off, sec. 2.2): after each round the ranks all-gather pass_report() of the pass
+  // each rendered, and agree_round() gets them in pass order (`first`: the round's first pass index;
+  // `mine`: this rank's position in the round, -1 for none). It returns true when an earlier pass of
+  // the round changed what this rank's pass does: its state is then as before that pass, and the
+  // session renders it again. false from reports_passes(): nothing to agree (no collective).
+  virtual bool reports_passes() const { return false; }
+  virtual uint64_t pass_report() const { return 0; }
+  virtual bool agree_round(uint32_t /*first*/, const std::vector<uint64_t>& /*reports*/, int /*mine*/) { return false; }
   // Why these options cannot be dealt to several processes (state that one pass hands to the next
   // beyond skip_pass), or empty. A distributed render refuses them at start-up.
   virtual std::string distribution_limit() const { return {}; }
@@ -49,6 +61,11 @@ class Integrator {
   // filter with its table, handed to the next frame's integrator (IntegratorContext::carried_filter).
   // Null: the next frame starts afresh.
   virtual std::shared_ptr<PathSpaceFilter> carried_filter() const { return nullptr; }
+  // Frames dealt to processes in chunks (render_frames, docs/distributed.md): how many frames before
+  // its chunk a process renders, unreported, so that what carried_filter() carries is warm. 0: each
+  // frame starts afresh, chunks are exact; kAllFrames: only every frame before gives that state.
+  static constexpr uint32_t kAllFrames = UINT32_MAX;
+  virtual uint32_t frame_warm_up() const { return 0; }
 };
 
 }  // namespace pathspace

@@ -27,12 +27,21 @@ struct FrameResult {
   double render_seconds = 0.0;
 };
 
+// Frames dealt to the processes of a distributed render (docs/distributed.md): process `rank` of
+// `ranks` takes a contiguous chunk of the range, chunks in rank order, sizes differing by at most
+// one; false when the range has fewer frames than `rank` + 1.
+struct FrameChunk {
+  int rank = 0, ranks = 1;
+};
+bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine);
+
 // Renders `range` with `passes` passes (samples per pixel) per frame. on_frame gets each frame as it
 // is done and returns false to stop the sequence; cancel() of the session it gets likewise stops it
 // after the current pass (that frame is then still reported, with fewer passes).
-// Returns the number of frames rendered.
+// With a chunk, only the chunk's frames are reported, after Integrator::frame_warm_up frames before
+// it (within the range), which are rendered and not reported. Returns the number reported.
 uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
                        const std::function<bool(const FrameResult&)>& on_frame,
-                       const std::function<void(RenderSession&)>& on_session = {});
+                       const std::function<void(RenderSession&)>& on_session = {}, FrameChunk chunk = {});
 
 }  // namespace pathspace

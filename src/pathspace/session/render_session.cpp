@@ -126,6 +126,8 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
 
 void RenderSession::cancel() { cancel_.store(true); }
 
+void RenderSession::request_gather() { gather_requested_.store(true); }
+
 void RenderSession::join(std::shared_ptr<ProcessGroup> group, const std::string& identity) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (passes_ > 0 || in_sequence_) throw Error("a render joins a process group before its first pass");
@@ -143,8 +145,15 @@ void RenderSession::join(std::shared_ptr<ProcessGroup> group, const std::string&
   group_ = std::move(group);
   exchange_ = std::make_unique<FilmExchange>(*group_, film_.pixel_count());
   pass_film_ = Film(film_.width(), film_.height());
-  // A restored render's counters are the job's so far: rank 0 keeps them, so the ranks' sum is right.
-  if (group_->rank() != 0) counters_ = PathCounters{};
+  keep_restored_on_rank0();
+}
+
+// A restored render's counters and hand_over sums are the job's so far: rank 0 keeps them, so the
+// ranks' sum counts them once.
+void RenderSession::keep_restored_on_rank0() {
+  if (!group_ || group_->rank() == 0) return;
+  counters_ = PathCounters{};
+  integrator_->forget_handed_over();
 }
 
 void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame) {
@@ -177,6 +186,11 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
 uint64_t RenderSession::frame() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return frame_;
+}
+
+uint32_t RenderSession::frame_warm_up() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return integrator_->frame_warm_up();
 }
 
 uint32_t RenderSession::passes_done() const {
@@ -235,7 +249,8 @@ SessionState RenderSession::save_state() const {
   out.put_string("session.settings", settings_fingerprint(config_));
   out.put_string("session.scene", scene_fingerprint(*scene_));
   out.put("session.passes", passes_);
-  out.put("session.counters", counters_);
+  // After a distributed run's gather, rank 0 saves the job's counters (rank 0 keeps them on resume).
+  out.put("session.counters", ranks_.empty() ? counters_ : job_counters_);
   out.put("session.wall_s", wall_s_);
   film_.save_state(out);
   integrator_->save_state(out);
@@ -276,7 +291,7 @@ void RenderSession::restore_state(const SessionState& state) {
   wall_s_ = wall_s;
   film_ = std::move(film);
   integrator_ = std::move(restored);
-  if (group_ && group_->rank() != 0) counters_ = PathCounters{};  // rank 0 keeps the job's totals (join)
+  keep_restored_on_rank0();
 }
 
 PassProgress RenderSession::pass_progress() const {

@@ -48,6 +48,9 @@ struct RenderProgress {
   double fraction = 0.0;      // 0..1 of this run's passes or time budget; 0 until cancelled
   uint64_t rays = 0;          // in this run
   uint64_t paths = 0;
+  // A distributed render: this call follows request_gather(), rank 0's film now holds every pass so
+  // far (nothing was rendered since the previous call).
+  bool gathered = false;
 };
 
 // While a pass runs (RenderSession::pass_progress, from any thread).
@@ -134,6 +137,12 @@ class RenderSession {
   // Thread-safe. The current pass finishes, then run() returns. A cancel() while no run is going on
   // stops the next run before its first pass.
   void cancel();
+  // Thread-safe. A distributed run gathers the film (and what Integrator::hand_over sums) onto rank
+  // 0 at the next round boundary, when any rank asked, then calls on_progress with `gathered`: the
+  // periodic writes of rank 0 (the CLI's --write-every, --checkpoint-every). Without a group the
+  // film is always whole and this does nothing.
+  void request_gather();
+  bool distributed() const { return group_ && group_->size() > 1; }
 
   // Thread-safe; during a run it waits for the current pass to end (the run goes on).
   RenderSnapshot snapshot() const;
@@ -151,6 +160,8 @@ class RenderSession {
   // Between runs. A session that began a frame cannot save its state (checkpoints hold one frame).
   void begin_frame(std::shared_ptr<const Scene> scene, std::shared_ptr<const Accel> accel, uint64_t frame);
   uint64_t frame() const;
+  // Integrator::frame_warm_up of this session's integrator.
+  uint32_t frame_warm_up() const;
 
   uint32_t passes_done() const;
   // Lock-free: how far the pass in progress is. Its fraction counts the loops that have started,
@@ -168,6 +179,7 @@ class RenderSession {
   RunResult run_distributed(const RunLimit& limit, const std::function<void(const RenderProgress&)>& on_progress);
   // Rank 0 receives the film slices, the ranks' counters and the integrator's hand-over.
   void gather_locked(double exchange_s);
+  void keep_restored_on_rank0();
   // Holds the lock for a reader (snapshot, stats, save_state); run() lets waiting readers go first.
   class ReaderLock {
    public:
@@ -199,6 +211,7 @@ class RenderSession {
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
   mutable std::atomic<int> readers_waiting_{0};
   std::atomic<bool> cancel_{false};
+  std::atomic<bool> gather_requested_{false};
   // Distributed rendering (join): the group, the slice exchange, this rank's pass of a round, and on
   // rank 0 after a run every rank's statistics.
   std::shared_ptr<ProcessGroup> group_;

@@ -20,8 +20,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Reasons to stop, as bits of the agreement's maximum (any rank's reason stops all).
-constexpr uint64_t kStopCount = 1, kStopTime = 2, kStopCancel = 4;
+// Reasons to stop, as bits of the agreement's maximum (any rank's reason stops all), and a request
+// to gather the film onto rank 0 before the round (request_gather).
+constexpr uint64_t kStopCount = 1, kStopTime = 2, kStopCancel = 4, kStopAny = 7, kGather = 8;
 
 }  // namespace
 
@@ -33,24 +34,38 @@ RunResult RenderSession::run_distributed(const RunLimit& limit, const std::funct
   RunResult result;
   const PathCounters at_start = counters_;
   double exchange_s = 0.0;
+  RenderProgress last;
   while (true) {
     const uint32_t round = counted ? std::min<uint32_t>(uint32_t(ranks), limit.passes - result.passes) : uint32_t(ranks);
     // Every rank's clock and cancel() count; the maximum of the reasons is the same on every rank.
     const auto agree_start = Clock::now();
     std::vector<uint64_t> stop = {(counted && round == 0 ? kStopCount : 0) |
                                   (timed && result.passes > 0 && seconds_since(start) >= limit.seconds ? kStopTime : 0) |
-                                  (cancel_.exchange(false) ? kStopCancel : 0)};
+                                  (cancel_.exchange(false) ? kStopCancel : 0) | (gather_requested_.exchange(false) ? kGather : 0)};
     group_->all_max(&stop);
     exchange_s += seconds_since(agree_start);
-    if (stop[0] != 0) {
+    if ((stop[0] & kStopAny) != 0) {  // the gather at the end serves a pending request too
       result.cancelled = (stop[0] & kStopCancel) != 0;
       break;
+    }
+    if ((stop[0] & kGather) != 0) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        gather_locked(exchange_s);
+        exchange_s = 0.0;
+      }
+      if (on_progress) {
+        RenderProgress g = last;
+        g.gathered = true;
+        on_progress(g);
+      }
     }
     RenderProgress p;
     while (readers_waiting_.load() > 0) std::this_thread::yield();
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto pass_start = Clock::now();
+      PathCounters before_mine = counters_;
       for (uint32_t i = 0; i < round; ++i) {
         const uint32_t pass = passes_ + i;
         if (int(i) != me) {
@@ -62,10 +77,24 @@ RunResult RenderSession::run_distributed(const RunLimit& limit, const std::funct
         pass_work_done_ = work.done;
         pass_start_ns_ = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
         running_pass_ = pass + 1;
+        before_mine = counters_;
         pass_film_.clear();
         integrator_->render_pass(pass, pass_film_, counters_);
         running_pass_ = 0;
         ++rank_passes_;
+      }
+      if (integrator_->reports_passes()) {
+        const auto agree_start = Clock::now();
+        const int mine = me < int(round) ? me : -1;
+        std::vector<uint64_t> reports = group_->all_gather(mine >= 0 ? integrator_->pass_report() : 0);
+        reports.resize(round);
+        exchange_s += seconds_since(agree_start);
+        if (integrator_->agree_round(passes_, reports, mine)) {
+          // An earlier pass of the round changed what this one does (the integrator took it back).
+          counters_ = before_mine;
+          pass_film_.clear();
+          integrator_->render_pass(passes_ + uint32_t(mine), pass_film_, counters_);
+        }
       }
       const auto exchange_start = Clock::now();
       exchange_->add_round(pass_film_, int(round), &film_);
@@ -82,6 +111,7 @@ RunResult RenderSession::run_distributed(const RunLimit& limit, const std::funct
       p.passes_total = counted ? limit.passes : 0;
       p.elapsed_s = seconds_since(start);
       p.fraction = counted ? double(result.passes) / double(limit.passes) : timed ? std::min(1.0, p.elapsed_s / limit.seconds) : 0.0;
+      last = p;
       on_progress(p);
     }
   }

@@ -40,6 +40,9 @@ class BptBuffers {
   void hand_over(ProcessGroup& group) {
     for (SplatFilm& f : strategies_) f.hand_over(group);
   }
+  void forget_strategies() {
+    for (SplatFilm& f : strategies_) f.clear();
+  }
   // The per-strategy sums accumulate over passes: they are state of a continued render.
   void save_state(StateWriter& out) const;
   void load_state(StateReader& in);
@@ -99,6 +102,7 @@ class BptIntegrator final : public Integrator {
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
   void hand_over(ProcessGroup& group) override { buffers_.hand_over(group); }
+  void forget_handed_over() override { buffers_.forget_strategies(); }
   // The strategy images are averages over all passes, wherever they were rendered.
   void skip_pass(uint32_t, size_t) override { ++passes_; }
   // Per-strategy images "bpt-sS-tT" (means over the passes so far) when settings.strategy_images > 0.

@@ -29,11 +29,15 @@ class PtIntegrator final : public Integrator {
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override;
   void skip_pass(uint32_t pass, size_t pixels) override;
   std::string distribution_limit() const override;
+  bool reports_passes() const override { return filter_ && filter_->reports_passes(); }
+  uint64_t pass_report() const override { return filter_ ? filter_->pass_report() : 0; }
+  bool agree_round(uint32_t, const std::vector<uint64_t>& reports, int mine) override { return filter_ && filter_->agree_round(reports, mine); }
   void statistics(Statistics& out) const override;
   std::vector<NamedImage> aovs() const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
   std::shared_ptr<PathSpaceFilter> carried_filter() const override { return filter_; }
+  uint32_t frame_warm_up() const override { return filter_ ? filter_->frame_warm_up() : 0; }
 
   const VertexBuffer& vertex_buffer() const { return buffer_; }
   const PathSpaceFilter* filter() const { return filter_.get(); }
