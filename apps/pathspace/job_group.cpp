@@ -24,6 +24,15 @@ bool started_by_launcher() {
     if (std::getenv(name)) return true;
   return false;
 }
+
+#if !PATHSPACE_HAVE_MPI
+// The launcher's process count where it says (Open MPI, PMI); 1 otherwise.
+long launched_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* v = std::getenv(name)) return std::strtol(v, nullptr, 10);
+  return 1;
+}
+#endif
 }  // namespace
 
 std::shared_ptr<ProcessGroup> job_group() {
@@ -31,6 +40,12 @@ std::shared_ptr<ProcessGroup> job_group() {
   static const std::shared_ptr<ProcessGroup> group = started_by_launcher() ? mpi_world() : nullptr;
   return group && group->size() > 1 ? group : nullptr;
 #else
+  // Without MPI every process of an mpirun job would render the whole image alone and write the same
+  // files: refuse instead of doing that silently.
+  if (started_by_launcher() && launched_processes() > 1)
+    throw Error(fmt::format("started by an MPI launcher with {} processes, but this pathspace was built without MPI "
+                            "(PATHSPACE_MPI off): run it without mpirun, or rebuild with Open MPI (docs/distributed.md)",
+                            launched_processes()));
   return nullptr;
 #endif
 }
