@@ -230,9 +230,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     throw UsageError(fmt::format("--spp {}: the checkpoint holds {} samples per pixel already", spp, done),
                      "--spp is the total with --resume; give at least " + std::to_string(done));
   const uint32_t passes = resumed ? spp - done : spp;
-  plan.run = RenderRunInfo{display_name, width, height, 0, ""};
-  const std::string* depth = o.registry.given().find("max-depth");
-  plan.run.max_segments = depth ? std::stoi(*depth) : session.scene().max_path_segments;
+  plan.run = RenderRunInfo{display_name, width, height, max_segments_of(o.registry.given(), session.scene()), ""};
 
   ProgressReporter progress(stdout, uint64_t(width) * uint64_t(height), quiet);
   if (!quiet) {

@@ -18,10 +18,10 @@ Image image_of(const py::handle& object, const char* what) {
   const auto array = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(object);
   if (!array) throw py::type_error(std::string(what) + ": expected an array of numbers (height x width x 3)");
   const bool rgb = array.ndim() == 3 && array.shape(2) == 3;
-  if (!rgb && array.ndim() != 2)
-  {
+  if (!rgb && array.ndim() != 2) {
     std::string shape;
-    for (py::ssize_t d = 0; d < array.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(array.shape(d));
+    // Appended piecewise: `s += "x" + std::to_string(n)` trips GCC 12's false -Wstringop-overflow.
+    for (py::ssize_t d = 0; d < array.ndim(); ++d) shape.append(d ? ", " : "").append(std::to_string(array.shape(d)));
     throw py::value_error(std::string(what) + ": expected shape (height, width, 3) or (height, width), got (" + shape + ")");
   }
   const py::ssize_t h = array.shape(0), w = array.shape(1);

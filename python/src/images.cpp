@@ -11,32 +11,27 @@ namespace pathspace::python {
 
 namespace {
 
-// A path (str or os.PathLike) is read from its file; anything else is taken as an array.
-Image image_argument(const py::handle& value, const char* what) {
-  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) {
-    const std::string path = py::str(py::module_::import("os").attr("fspath")(value));
-    py::gil_scoped_release release;
-    return read_image(path);
-  }
-  return image_of(value, what);
+std::string path_argument(const py::handle& value) { return py::str(py::module_::import("os").attr("fspath")(value)); }
+
+// The image file at a path (str or os.PathLike), read without the GIL.
+Image read_path(const py::handle& path) {
+  const std::string p = path_argument(path);
+  py::gil_scoped_release release;
+  return read_image(p);
 }
 
-std::string path_argument(const py::handle& value) { return py::str(py::module_::import("os").attr("fspath")(value)); }
+// A path is read from its file; anything else is taken as an array.
+Image image_argument(const py::handle& value, const char* what) {
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return read_path(value);
+  return image_of(value, what);
+}
 
 }  // namespace
 
 void bind_images(py::module_& m) {
   m.def(
       "read_image",
-      [](const py::object& path) {
-        const std::string p = path_argument(path);
-        Image image;
-        {
-          py::gil_scoped_release release;
-          image = read_image(p);
-        }
-        return array_of(image);
-      },
+      [](const py::object& path) { return array_of(read_path(path)); },
       py::arg("path"),
       "Reads an image file (EXR, PFM, PNG; also JPG, HDR, TGA, BMP) as a float32 array (height, width, 3) of linear RGB "
       "(8-bit files are sRGB-decoded). Raises pathspace.Error naming the file.");

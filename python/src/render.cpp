@@ -130,8 +130,7 @@ RenderRequest request_of(PyScene& scene, const std::string& integrator, const st
   const uint32_t passes = spp ? *spp : (scene.file_spp() > 0 ? uint32_t(scene.file_spp()) : 16u);
   r.limit = time ? RunLimit::for_seconds(*time) : RunLimit::for_passes(passes);
   const std::shared_ptr<const Scene> s = scene.scene();
-  const std::string* depth = given.find("max-depth");
-  r.run = RenderRunInfo{scene.label(), s->camera.width, s->camera.height, depth ? std::stoi(*depth) : s->max_path_segments, ""};
+  r.run = RenderRunInfo{scene.label(), s->camera.width, s->camera.height, max_segments_of(given, *s), ""};
   return r;
 }
 

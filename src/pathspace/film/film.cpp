@@ -62,10 +62,6 @@ void Film::load_state(StateReader& in) {
   in.get_vector("film.count", &count_, count_.size());
 }
 
-}  // namespace pathspace
-
-namespace pathspace {
-
 namespace {
 constexpr size_t kPixelBytes = 6 * sizeof(double) + sizeof(uint32_t);
 }  // namespace

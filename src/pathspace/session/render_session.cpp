@@ -96,13 +96,7 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto pass_start = std::chrono::steady_clock::now();
-      const WorkProgress work = work_progress();
-      pass_work_started_ = work.started;
-      pass_work_done_ = work.done;
-      pass_start_ns_ = std::chrono::duration_cast<std::chrono::nanoseconds>(pass_start.time_since_epoch()).count();
-      running_pass_ = passes_ + 1;
-      integrator_->render_pass(passes_, film_, counters_);
-      running_pass_ = 0;
+      render_tracked_pass_locked(passes_, film_);
       ++passes_;
       wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - pass_start).count();
       p.session_passes = passes_;
@@ -122,6 +116,16 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
   }
   result.wall_s = elapsed();
   return result;
+}
+
+void RenderSession::render_tracked_pass_locked(uint32_t pass, Film& film) {
+  const WorkProgress work = work_progress();
+  pass_work_started_ = work.started;
+  pass_work_done_ = work.done;
+  pass_start_ns_ = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  running_pass_ = pass + 1;
+  integrator_->render_pass(pass, film, counters_);
+  running_pass_ = 0;
 }
 
 void RenderSession::cancel() { cancel_.store(true); }

@@ -177,6 +177,9 @@ class RenderSession {
  private:
   RenderStats stats_locked() const;
   RunResult run_distributed(const RunLimit& limit, const std::function<void(const RenderProgress&)>& on_progress);
+  // Renders pass `pass` into `film` with the lock held, published to pass_progress() while it runs
+  // (run() and run_distributed() alike).
+  void render_tracked_pass_locked(uint32_t pass, Film& film);
   // Rank 0 receives the film slices, the ranks' counters and the integrator's hand-over.
   void gather_locked(double exchange_s);
   void keep_restored_on_rank0();

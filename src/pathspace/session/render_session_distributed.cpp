@@ -10,7 +10,6 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/integrators/integrator.h"
-#include "pathspace/parallel/parallel_for.h"
 #include "pathspace/session/render_session.h"
 
 namespace pathspace {
@@ -72,15 +71,9 @@ RunResult RenderSession::run_distributed(const RunLimit& limit, const std::funct
           integrator_->skip_pass(pass, film_.pixel_count());
           continue;
         }
-        const WorkProgress work = work_progress();
-        pass_work_started_ = work.started;
-        pass_work_done_ = work.done;
-        pass_start_ns_ = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
-        running_pass_ = pass + 1;
         before_mine = counters_;
         pass_film_.clear();
-        integrator_->render_pass(pass, pass_film_, counters_);
-        running_pass_ = 0;
+        render_tracked_pass_locked(pass, pass_film_);
         ++rank_passes_;
       }
       if (integrator_->reports_passes()) {

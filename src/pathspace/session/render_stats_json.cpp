@@ -3,9 +3,15 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pathspace/scene/scene.h"
 #include "pathspace/session/render.h"
 
 namespace pathspace {
+
+int max_segments_of(const OptionValues& given, const Scene& scene) {
+  const std::string* depth = given.find("max-depth");
+  return depth ? std::stoi(*depth) : scene.max_path_segments;
+}
 
 nlohmann::ordered_json render_stats_object(const RenderStats& stats, const RenderRunInfo& run) {
   nlohmann::ordered_json j;

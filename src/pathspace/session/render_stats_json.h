@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathspace/options/option_values.h"
 #include "pathspace/session/render_session.h"
 
 namespace pathspace {
@@ -17,6 +18,9 @@ struct RenderRunInfo {
   int max_segments = 0;
   std::string outputs;  // comma-separated output files
 };
+
+// RenderRunInfo::max_segments: the path length limit given as --max-depth, else the scene's.
+int max_segments_of(const OptionValues& given, const Scene& scene);
 
 nlohmann::ordered_json render_stats_object(const RenderStats& stats, const RenderRunInfo& run);
 // The same, indented, with a final newline.
