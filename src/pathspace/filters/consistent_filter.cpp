@@ -21,18 +21,6 @@ size_t default_batch_bytes() {
   return physical / 8;
 }
 
-// Interleaves the low 21 bits of x, y and z (a Morton code): cells close in space get close codes.
-uint64_t spread21(uint32_t v) {
-  uint64_t x = v & 0x1fffff;
-  x = (x | x << 32) & 0x1f00000000ffffull;
-  x = (x | x << 16) & 0x1f0000ff0000ffull;
-  x = (x | x << 8) & 0x100f00f00f00f00full;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
-  x = (x | x << 2) & 0x1249249249249249ull;
-  return x;
-}
-uint64_t morton3(uint32_t x, uint32_t y, uint32_t z) { return spread21(x) | spread21(y) << 1 | spread21(z) << 2; }
-
 bool finite(const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 
 // What the binary weights of sec. 2.1 (w_ij in {0, 1}) compare. Vertices of other layers or other
@@ -267,7 +255,7 @@ void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uin
   parallel_for(cells, 4096, [&](size_t begin, size_t end) {
     for (size_t q = begin; q < end; ++q) {
       const CellCoord cc = grid_.geometry().cell_of(base[cell_begin_[q]].position);
-      cell_order_[q] = {morton3(uint32_t(cc.x), uint32_t(cc.y), uint32_t(cc.z)), uint32_t(q)};
+      cell_order_[q] = {morton_cell_order(cc), uint32_t(q)};
     }
   });
   std::sort(cell_order_.begin(), cell_order_.end());

@@ -28,6 +28,21 @@ PS_INLINE uint64_t pack_cell_key(int32_t x, int32_t y, int32_t z) {
 
 PS_INLINE uint64_t hash_cell_key(uint64_t key) { return mix64(key); }
 
+// A Morton code: the low 21 bits of x, y and z interleaved, so cells close in space get close codes
+// (an order of visiting cells in which neighbours stay in cache).
+PS_INLINE uint64_t spread21(uint32_t v) {
+  uint64_t x = v & kCellMask;
+  x = (x | x << 32) & 0x1f00000000ffffull;
+  x = (x | x << 16) & 0x1f0000ff0000ffull;
+  x = (x | x << 8) & 0x100f00f00f00f00full;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+PS_INLINE uint64_t morton_cell_order(const CellCoord& c) {
+  return spread21(uint32_t(c.x)) | spread21(uint32_t(c.y)) << 1 | spread21(uint32_t(c.z)) << 2;
+}
+
 struct GridGeometry {
   float cell_size = 1.f;
   float inv_cell_size = 1.f;

@@ -13,6 +13,7 @@
 #include "pathspace/base/error.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/parallel/parallel_for.h"
+#include "pathspace/parallel/parallel_sort.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace {
@@ -20,6 +21,9 @@ namespace pathspace {
 namespace {
 constexpr size_t kPixelGrain = 256;
 constexpr size_t kPhotonGrain = 256;
+// Photons traced and then deposited together: their hits (about 1.8 per photon, 40 bytes each)
+// stay within tens of megabytes whatever the photon count.
+constexpr uint64_t kPhotonBatch = uint64_t(1) << 18;
 // Separates the photon random stream from the camera stream (both are indexed from 0).
 constexpr uint64_t kPhotonStream = 0x70686f746f6e73ULL;
 
@@ -102,19 +106,16 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   gather.radius = r;
   gather.inv_quantum = reference_power_ > 0.f ? float(kFluxFixedScale / double(reference_power_)) : 0.f;
   gather.max_segments = max_segments_;
-  const uint64_t photon_seed = seed_ ^ kPhotonStream;
   if (reference_power_ > 0.f) {
-    parallel_for(size_t(photons_), kPhotonGrain, [&](size_t begin, size_t end) {
-      PathCounters local;
-      PhotonCounters pc;
-      for (size_t i = begin; i < end; ++i) {
-        const Sampler sampler(photon_seed, i, pass);
-        sppm_trace_photon(view_, accel_, sampler, s, gather, &local, &pc);
-      }
-      shared.add(local);
-      shared.deposits += pc.deposits;
-      shared.gathered += pc.gathered;
-    });
+    for (uint64_t first = 0; first < photons_; first += kPhotonBatch)
+    {
+      PathCounters walks;
+      PhotonCounters deposited;
+      trace_and_deposit_photons(pass, first, std::min<uint64_t>(kPhotonBatch, photons_ - first), gather, &walks, &deposited);
+      shared.add(walks);
+      shared.deposits += deposited.deposits;
+      shared.gathered += deposited.gathered;
+    }
   }
   // Back from record order to pixels (each pixel has at most one record).
   parallel_for(linked, kPixelGrain, [&](size_t begin, size_t end) {
@@ -154,6 +155,58 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   visible_points_ += shared.points;
   deposits_ += shared.deposits;
   gathered_ += shared.gathered;
+}
+
+// Photons in two steps: the walks first, keeping their non-delta hits, then the deposits in the
+// Morton order of the hits' grid cells. Traced in photon order, consecutive deposits land anywhere
+// in the scene and each one misses the cache for its cells' slots, records and visible points
+// (most of a pass's time at SPPM's default radius); sorted, consecutive deposits share their
+// cells. The flux sums are integers, so the order of deposits changes no bit of the image.
+void SppmIntegrator::trace_and_deposit_photons(uint32_t pass, uint64_t first, uint64_t count, const SppmGatherView& gather,
+                                               PathCounters* counters, PhotonCounters* photons) {
+  const uint64_t photon_seed = seed_ ^ kPhotonStream;
+  const size_t chunks = size_t((count + kPhotonGrain - 1) / kPhotonGrain);
+  if (chunk_hits_.size() < chunks) chunk_hits_.resize(chunks);
+  std::atomic<uint64_t> rays{0};
+  parallel_for(chunks, 1, [&](size_t c0, size_t c1) {
+    PathCounters local;
+    for (size_t c = c0; c < c1; ++c) {
+      std::vector<PhotonHit>& hits = chunk_hits_[c];
+      hits.clear();
+      const uint64_t end = std::min(first + count, first + (c + 1) * kPhotonGrain);
+      for (uint64_t i = first + c * kPhotonGrain; i < end; ++i)
+        sppm_walk_photon(view_, accel_, Sampler(photon_seed, i, pass), settings_, max_segments_, &local,
+                         [&](const PhotonHit& h) { hits.push_back(h); });
+    }
+    rays += local.rays;
+  });
+  counters->rays += rays;
+  std::vector<size_t> offset(chunks + 1, 0);
+  for (size_t c = 0; c < chunks; ++c) offset[c + 1] = offset[c] + chunk_hits_[c].size();
+  const size_t total = offset[chunks];
+  hits_.resize(total);
+  hit_order_.resize(total);
+  const GridGeometry& geometry = gather.grid.geometry;
+  parallel_for(chunks, 1, [&](size_t c0, size_t c1) {
+    for (size_t c = c0; c < c1; ++c)
+      for (size_t k = 0; k < chunk_hits_[c].size(); ++k) {
+        const size_t i = offset[c] + k;
+        hits_[i] = chunk_hits_[c][k];
+        hit_order_[i] = {morton_cell_order(geometry.cell_of(hits_[i].p)), uint32_t(i)};
+      }
+  });
+  parallel_sort(hit_order_.begin(), hit_order_.end());
+  std::atomic<uint64_t> gathered{0};
+  parallel_for(total, kPhotonGrain, [&](size_t begin, size_t end) {
+    uint64_t local = 0;
+    for (size_t i = begin; i < end; ++i) {
+      const PhotonHit& h = hits_[hit_order_[i].second];
+      local += sppm_deposit(view_, gather, h.p, h.wi, h.power, int(h.segments));
+    }
+    gathered += local;
+  });
+  photons->deposits += total;
+  photons->gathered += gathered;
 }
 
 void SppmIntegrator::statistics(Statistics& out) const {

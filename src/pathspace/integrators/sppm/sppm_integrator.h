@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "pathspace/hashgrid/hash_grid.h"
@@ -36,6 +37,9 @@ class SppmIntegrator final : public Integrator {
   uint64_t photons_per_pass() const { return photons_; }
 
  private:
+  void trace_and_deposit_photons(uint32_t pass, uint64_t first, uint64_t count, const SppmGatherView& gather,
+                                 PathCounters* counters, PhotonCounters* photons);
+
   SceneView view_;
   const Accel& accel_;
   SppmSettings settings_;
@@ -51,6 +55,10 @@ class SppmIntegrator final : public Integrator {
   std::vector<VisiblePoint> cell_points_;  // visible points in the grid's record order
   std::vector<uint64_t> cell_flux_;        // 3 per record, scattered back to flux_ per pixel
   HashGrid grid_;
+  // The photon pass's hits, per chunk of photons as traced, then in one array and its cell order.
+  std::vector<std::vector<PhotonHit>> chunk_hits_;
+  std::vector<PhotonHit> hits_;
+  std::vector<std::pair<uint64_t, uint32_t>> hit_order_;  // (Morton code of the hit's cell, hit)
 
   // Totals for statistics().
   uint64_t passes_ = 0, eye_paths_ = 0, photon_paths_ = 0, visible_points_ = 0, deposits_ = 0, gathered_ = 0;

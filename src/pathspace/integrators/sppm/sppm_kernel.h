@@ -197,31 +197,36 @@ struct PhotonCounters {
   uint64_t gathered = 0;  // (photon vertex, visible point) pairs that added flux
 };
 
+// A photon arriving at a non-delta surface: what sppm_deposit needs, kept for a later, sorted
+// deposit (SppmIntegrator: photons deposited in the order of their cells hit memory in cache).
+struct PhotonHit {
+  Vec3 p;
+  Vec3 wi;  // unit, towards where the photon came from
+  Rgb power;
+  uint32_t segments = 0;
+};
+
 // One photon path: emitted by sample_emission (scene/light_emission.h), scattered with importance
-// transport, depositing at every non-delta vertex including the first (SPPM has no separate direct
-// lighting).
-template <typename Tracer>
-PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
-                             const SppmSettings& settings, const SppmGatherView& gather, PathCounters* counters,
-                             PhotonCounters* photons) {
+// transport, handing every non-delta vertex including the first (SPPM has no separate direct
+// lighting) to deposit(const PhotonHit&). Light paths longer than max_segments - 1 cannot join
+// the shortest camera side (one segment).
+template <typename Tracer, typename Deposit>
+PS_HD void sppm_walk_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
+                            const SppmSettings& settings, int max_segments, PathCounters* counters, Deposit&& deposit) {
   LightPathStart start;
   if (!start_light_path(scene, sampler, &start)) return;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
   Ray ray = first_light_ray(scene, e);
-  // The shortest camera side is one segment, so light paths longer than max - 1 cannot join.
-  for (int segments = 1; segments < gather.max_segments; ++segments) {
+  for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;
     ++counters->rays;
     if (!tracer.intersect(ray, &hit)) break;
     Material textured;
     const Material& mat = shading_material(scene, hit, &textured);
     const Vec3 wi_world = -ray.d;
-    if (bsdf_has_non_delta(mat)) {
-      ++photons->deposits;
-      photons->gathered += sppm_deposit(scene, gather, hit.p, wi_world, beta, segments);
-    }
-    if (segments + 1 >= gather.max_segments) break;
+    if (bsdf_has_non_delta(mat)) deposit(PhotonHit{hit.p, wi_world, beta, uint32_t(segments)});
+    if (segments + 1 >= max_segments) break;
     const Frame frame(hit.ns);
     const uint32_t v = uint32_t(segments - 1);
     BsdfSample bs;
@@ -242,6 +247,17 @@ PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const
     }
     ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
   }
+}
+
+// One photon path deposited into the grid as it goes (the device's order).
+template <typename Tracer>
+PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
+                             const SppmSettings& settings, const SppmGatherView& gather, PathCounters* counters,
+                             PhotonCounters* photons) {
+  sppm_walk_photon(scene, tracer, sampler, settings, gather.max_segments, counters, [&](const PhotonHit& h) {
+    ++photons->deposits;
+    photons->gathered += sppm_deposit(scene, gather, h.p, h.wi, h.power, int(h.segments));
+  });
 }
 
 }  // namespace pathspace
