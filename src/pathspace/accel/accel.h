@@ -30,6 +30,9 @@ class Accel {
   bool intersect(const Ray& ray, SurfaceHit* hit) const;
   // True when anything blocks (ray.tmin, ray.tmax). Thread-safe.
   bool occluded(const Ray& ray) const;
+  // The nearest hit's distance, kInfinity when none: Embree's query alone, no SurfaceHit filled in
+  // (the ray caster's own rate; bench/ray_replay_bench.cpp). Thread-safe.
+  float hit_distance(const Ray& ray) const;
 
   // Batched queries (Embree's stream API); `coherent` marks camera-ray batches. Results equal the
   // single-ray calls bit for bit.

@@ -311,6 +311,17 @@ bool Accel::occluded(const Ray& ray) const {
   return r.tfar < 0.f;
 }
 
+float Accel::hit_distance(const Ray& ray) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh;
+  fill_ray(ray, &rh.ray);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->rtc_scene, &ctx, &rh);
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+}
+
 void Accel::intersect_batch(const Ray* rays, SurfaceHit* hits, bool* found, uint32_t count, bool coherent) const {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
