@@ -1,6 +1,7 @@
 // Rendering helpers shared by the path space filter tests.
 #pragma once
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -61,6 +62,18 @@ inline bool bit_identical(const Image& a, const Image& b) {
       if (std::memcmp(&x, &y, sizeof(float)) != 0) return false;
     }
   return true;
+}
+
+// The largest per-pixel, per-channel difference relative to max(|b|, floor).
+inline double largest_relative_difference(const Image& a, const Image& b, double floor = 1e-6) {
+  if (a.width != b.width || a.height != b.height) return INFINITY;
+  double largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double x = a.pixels[i][c], y = b.pixels[i][c];
+      largest = std::fmax(largest, std::fabs(x - y) / std::fmax(floor, std::fabs(y)));
+    }
+  return largest;
 }
 
 }  // namespace pathspace::testing

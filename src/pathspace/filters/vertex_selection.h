@@ -10,7 +10,9 @@ namespace pathspace {
 
 inline constexpr int kMaxSelectedVertices = 4;
 
-enum class VertexSelectionMode : uint8_t { first, nth, all };
+// none: no filter, so no vertex is split off and the path's value is summed as it goes (plain path
+// tracing; not an option: integrators set it when no filter is active).
+enum class VertexSelectionMode : uint8_t { first, nth, all, none };
 
 struct VertexSelection {
   VertexSelectionMode mode = VertexSelectionMode::first;

@@ -92,6 +92,8 @@ class CudaPtIntegrator final : public Integrator {
       filter_.emplace(fs, ctx.scene.camera, size_t(pixels_));
       buffer_.resize(pixels_, records_per_path(settings_.selection));
       filtered_.resize(size_t(pixels_) * size_t(records_per_path(settings_.selection)));
+    } else {
+      settings_.selection.mode = VertexSelectionMode::none;  // nothing to split a path for (as on the CPU)
     }
     image_.resize(pixels_);
     counters_.resize(1);

@@ -46,7 +46,11 @@ PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSetti
   } else {
     filter_ = make_filter(filter, FilterContext{scene.camera, pixels});
   }
-  if (filter_) needs_ = filter_->needs();
+  if (filter_) {
+    needs_ = filter_->needs();
+  } else {
+    settings_.selection.mode = VertexSelectionMode::none;  // nothing to split a path for
+  }
   if (needs_.visibility) {
     // The visibility weight's probes (2014 paper, sec. 2.1): the first 32 delta lights, and the
     // hemisphere ray when any light is extended.

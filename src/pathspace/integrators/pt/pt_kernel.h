@@ -57,6 +57,7 @@ PS_INLINE bool wants_vertex(const VertexSelection& s, int diffuse_index, int sel
     case VertexSelectionMode::first: return selected == 0;
     case VertexSelectionMode::nth: return diffuse_index == s.n;
     case VertexSelectionMode::all: return selected < s.max_vertices && selected < kMaxSelectedVertices;
+    case VertexSelectionMode::none: return false;
   }
   return false;
 }
@@ -224,11 +225,15 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   const Vec3 wo = frame.to_local(-ray.d);
   const uint32_t v = uint32_t(segments - 1);
 
-  // Vertex selection for filtering.
+  // Vertex selection for filtering (none without a filter: the layers are not needed).
   OpenVertex* sel = nullptr;
-  BsdfLayers layers = bsdf_layers(mat);
-  if (!selection.split_layers) merge_layers(&layers);
-  const bool selectable = is_selectable(layers, selection);
+  BsdfLayers layers;
+  bool selectable = false;
+  if (selection.mode != VertexSelectionMode::none) {
+    layers = bsdf_layers(mat);
+    if (!selection.split_layers) merge_layers(&layers);
+    selectable = is_selectable(layers, selection);
+  }
   if (selectable) {
     // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
     // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
