@@ -60,7 +60,9 @@ const std::set<std::string> kOtherToolsOptions = {
     "--fuzz",                    // scripts/install-deps --fuzz (a script, not the pathspace binary)
     "--expt-relaxed-constexpr",  // nvcc
     "--fmad",                    // nvcc
-    "--runs",                    // bench/cuda/cuda_filter_bench
+    "--runs",                    // bench/cuda/cuda_filter_bench, bench/ray_replay_bench, bench/smallvcm/side_by_side.py
+    "--size",                    // bench/ray_replay_bench
+    "--smallvcm",                // bench/smallvcm/side_by_side.py
     "--bundle",                  // scripts/gpu-check
     "--scenes",                  // scripts/gpu-check, bench/gpu_render_bench
     "--frames",                  // (also pathspace render) bench/gpu_render_bench
