@@ -189,11 +189,16 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
                   "The textured-room scene file of the temporal figures (relative: to the working folder, else to the repository of the binary)")
       ->capture_default_str();
   psf->callback([o] { o->study = "psf"; });
+  CLI::App* gallery = study->add_subcommand(
+      "gallery", "Render every scene of a folder that has a reference image beside it and compare (mean ratio, relMSE, error maps)");
+  add_gallery_options(gallery, &o->gallery);
+  gallery->callback([o] { o->study = "gallery"; });
   return study;
 }
 
 int run_study_command(const StudyCommandOptions& o) {
   if (o.study == "psf") return run_psf_study(o.psf, o.psf_only);
+  if (o.study == "gallery") return run_gallery_study(o.gallery);
   return run_pclt_study(o.pclt);
 }
 

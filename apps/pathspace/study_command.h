@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "study_gallery.h"
+
 namespace pathspace::cli {
 
 // The options every study has.
@@ -36,10 +38,11 @@ struct PsfStudyOptions {
 };
 
 struct StudyCommandOptions {
-  std::string study;  // the subcommand given: "pclt" or "psf"
+  std::string study;  // the subcommand given: "pclt", "psf" or "gallery"
   StudyOptions pclt{"pathspace-out/study-pclt", "128x128", 5.0, 0.0, {"bs_c", "gbs_c"}};
   StudyOptions psf{"pathspace-out/study-psf", "128x128", 3.0, 0.0, {"bs_c"}};
   PsfStudyOptions psf_only;
+  GalleryOptions gallery;
 };
 
 // Adds `study` with its `pclt` and `psf` subcommands; returns the `study` command.
