@@ -1,5 +1,6 @@
 // pbrt-v4 shapes beyond triangle meshes and spheres: `disk` (tessellated with its area preserved,
-// annulus and partial disks, uv), `bilinearmesh` (two triangles per patch, non-planar warning), and
+// annulus and partial disks, uv), `bilinearmesh` (two triangles per patch, non-planar warning),
+// `loopsubdiv` (triangle counts per level, normals, errors), and
 // ObjectBegin / ObjectInstance (flattened: each instance adds the object's shapes with its own
 // transform on top of theirs).
 #include <gtest/gtest.h>
@@ -77,6 +78,20 @@ TEST(PbrtShapes, BilinearMeshIsTwoTrianglesPerPatch) {
   EXPECT_EQ(bent.triangles.size(), 2u);
   EXPECT_TRUE(has_warning(w, "non-planar"));
   EXPECT_THROW(load_world("Shape \"bilinearmesh\" \"point3 P\" [ 0 0 0  1 0 0  0 1 0 ] \"integer indices\" [ 0 1 2 5 ]\n"), Error);
+}
+
+TEST(PbrtShapes, LoopSubdivisionIsSubdividedToItsLevel) {
+  // A tetrahedron: 4 triangles, 4^2 each at levels 2, with smooth normals and no warning.
+  const std::string tetra = "\"point3 P\" [ 1 1 1  -1 -1 1  -1 1 -1  1 -1 -1 ] \"integer indices\" [ 0 1 2  0 3 1  0 2 3  1 3 2 ]";
+  std::vector<std::string> w;
+  const Scene s = load_world("Shape \"loopsubdiv\" \"integer levels\" 2 " + tetra + "\n", &w);
+  EXPECT_EQ(s.triangles.size(), 4u * 16u);
+  EXPECT_FALSE(s.normals.empty());
+  EXPECT_FALSE(has_warning(w, "loopsubdiv"));
+  const Scene d = load_world("Shape \"loopsubdiv\" " + tetra + "\n");  // pbrt's default: 3 levels
+  EXPECT_EQ(d.triangles.size(), 4u * 64u);
+  EXPECT_THROW(load_world("Shape \"loopsubdiv\" \"integer levels\" 20 " + tetra + "\n"), Error);
+  EXPECT_THROW(load_world("Shape \"loopsubdiv\" \"point3 P\" [ 0 0 0  1 0 0  0 1 0 ] \"integer indices\" [ 0 1 3 ]\n"), Error);
 }
 
 TEST(PbrtShapes, ObjectInstancesAreFlattenedWithBothTransforms) {

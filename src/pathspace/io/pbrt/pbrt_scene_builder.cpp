@@ -424,8 +424,10 @@ class Builder {
       add_mesh(st, mesh.positions, mesh.normals, mesh.uvs, mesh.indices);
     } else if (type == "sphere") {
       sphere(st);
-    } else if (type == "disk" || type == "bilinearmesh") {
-      const ObjectMesh m = type == "disk" ? disk_mesh(st, warnings_) : bilinear_mesh(st, warnings_);
+    } else if (type == "disk" || type == "bilinearmesh" || type == "loopsubdiv") {
+      const ObjectMesh m = type == "disk"           ? disk_mesh(st, warnings_)
+                           : type == "bilinearmesh" ? bilinear_mesh(st, warnings_)
+                                                    : loop_subdivision_mesh(st);
       add_mesh(st, m.positions, m.normals, m.uvs, m.indices);
     } else {
       warn(st.loc, "Shape \"" + type + "\" is not supported; skipped");

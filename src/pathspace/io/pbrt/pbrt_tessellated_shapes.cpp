@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pathspace/base/error.h"
+#include "pathspace/geometry/loop_subdivision.h"
 
 namespace pathspace::pbrt {
 
@@ -74,6 +75,34 @@ ObjectMesh bilinear_mesh(const Statement& st, LoadWarnings* warnings) {
     if (length(nrm) > 0.f && std::fabs(dot(normalize(nrm), d - a)) > 1e-4f * scale) curved = true;
   }
   if (curved) warnings->add(st.loc, "bilinearmesh: non-planar patches approximated by two triangles each");
+  return m;
+}
+
+ObjectMesh loop_subdivision_mesh(const Statement& st) {
+  const std::vector<double> p = st.get_numbers("P");
+  const std::vector<double> idx = st.get_numbers("indices");
+  const int levels = st.get_int("levels", 3);
+  if (p.empty() || p.size() % 3) throw Error(st.loc, "loopsubdiv needs \"point3 P\" with a multiple of 3 values");
+  if (idx.empty() || idx.size() % 3) throw Error(st.loc, "loopsubdiv needs \"integer indices\" with a multiple of 3 values");
+  std::vector<Vec3> positions(p.size() / 3);
+  for (size_t i = 0; i < positions.size(); ++i) positions[i] = Vec3(float(p[3 * i]), float(p[3 * i + 1]), float(p[3 * i + 2]));
+  std::vector<uint32_t> indices(idx.size());
+  for (size_t i = 0; i < idx.size(); ++i) {
+    if (idx[i] < 0 || idx[i] >= double(positions.size()))
+      throw Error(st.find("indices")->loc, "index " + std::to_string(int64_t(idx[i])) + " out of range (" +
+                                               std::to_string(positions.size()) + " vertices)");
+    indices[i] = uint32_t(idx[i]);
+  }
+  SubdividedMesh s;
+  try {
+    s = loop_subdivide(positions, indices, levels);
+  } catch (const Error& e) {
+    throw Error(st.loc, std::string("loopsubdiv: ") + e.what());
+  }
+  ObjectMesh m;
+  m.positions = std::move(s.positions);
+  m.normals = std::move(s.normals);
+  m.indices = std::move(s.indices);
   return m;
 }
 

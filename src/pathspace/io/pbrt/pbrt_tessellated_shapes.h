@@ -1,6 +1,6 @@
 // pbrt-v4 shapes that pathspace renders as triangle meshes (pbrt-v4 "Shapes"): `disk` (a ring of
-// triangles whose area equals the disk's) and `bilinearmesh` (each bilinear patch split into two
-// triangles, exact for planar patches). The meshes are in object space; the scene builder
+// triangles whose area equals the disk's), `bilinearmesh` (each bilinear patch split into two
+// triangles, exact for planar patches) and `loopsubdiv` (subdivided to its level, on the limit surface). The meshes are in object space; the scene builder
 // transforms and orients them like any trianglemesh.
 #pragma once
 
@@ -25,5 +25,8 @@ inline constexpr int kDiskSegments = 64;
 
 ObjectMesh disk_mesh(const Statement& st, LoadWarnings* warnings);
 ObjectMesh bilinear_mesh(const Statement& st, LoadWarnings* warnings);
+// `loopsubdiv` ("levels", default 3): Loop subdivision pushed to the limit surface, with smooth
+// normals (geometry/loop_subdivision.h).
+ObjectMesh loop_subdivision_mesh(const Statement& st);
 
 }  // namespace pathspace::pbrt
