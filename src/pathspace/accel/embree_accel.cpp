@@ -291,16 +291,21 @@ Accel::~Accel() = default;
 
 bool Accel::reused_static_part() const { return impl_->reused; }
 
-bool Accel::intersect(const Ray& ray, SurfaceHit* hit) const {
+namespace {
+// Embree's nearest-hit query of one ray (Accel::intersect fills a SurfaceHit from it).
+RTCRayHit nearest_hit(RTCScene scene, const Ray& ray) {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh;
   fill_ray(ray, &rh.ray);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->rtc_scene, &ctx, &rh);
-  return impl_->fill_hit(ray, rh, hit);
+  rtcIntersect1(scene, &ctx, &rh);
+  return rh;
 }
+}  // namespace
+
+bool Accel::intersect(const Ray& ray, SurfaceHit* hit) const { return impl_->fill_hit(ray, nearest_hit(impl_->rtc_scene, ray), hit); }
 
 bool Accel::occluded(const Ray& ray) const {
   RTCIntersectContext ctx;
@@ -312,13 +317,7 @@ bool Accel::occluded(const Ray& ray) const {
 }
 
 float Accel::hit_distance(const Ray& ray) const {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
-  RTCRayHit rh;
-  fill_ray(ray, &rh.ray);
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->rtc_scene, &ctx, &rh);
+  const RTCRayHit rh = nearest_hit(impl_->rtc_scene, ray);
   return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
 }
 
