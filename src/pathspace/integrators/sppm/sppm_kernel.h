@@ -33,6 +33,12 @@ struct VisiblePoint {
   Point2 uv;              // texture coordinates at p (the material is shaded per gathered photon)
   uint32_t segments = 0;  // camera path length to p (camera ray = 1)
   bool valid = false;
+  // A purely Lambertian point (a standard material without a glossy lobe, textures applied): its BSDF
+  // is lambert_f wherever both directions are above the surface (mirrored for a two-sided one), so a
+  // deposit needs no material lookup or frame (sppm_deposit; the same bits as bsdf_eval).
+  bool lambert = false;
+  bool two_sided = false;
+  Rgb lambert_f;
 };
 
 // Photons use the light-path dimension layout of light tracing (common/light_dimensions.h).
@@ -105,6 +111,9 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
         vp->uv = hit.uv;
         vp->segments = uint32_t(segments);
         vp->valid = true;
+        vp->lambert = mat.type == MaterialType::standard && is_black(mat.glossy);
+        vp->two_sided = mat.two_sided && !(mat.ior > 0.f);  // detail::flip_for_two_sided's test for standard
+        vp->lambert_f = mat.diffuse * kInvPi;
         break;
       }
       // u_lobe >= p_gather: bsdf_sample below picks a delta lobe with the same number.
@@ -147,9 +156,16 @@ PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g,
     const VisiblePoint& vp = g.points[index];
     if (int(vp.segments) + segments > g.max_segments) return;  // the joined path would be too long
     if (dot(vp.n_front, wi) <= 0.f) return;                    // photons from the back side do not count
-    const Frame frame(vp.ns);
-    Material textured;
-    const Rgb f = bsdf_eval(shading_material(scene, vp.material, vp.uv, &textured), frame.to_local(vp.wo), frame.to_local(wi), TransportMode::radiance);
+    Rgb f;
+    if (vp.lambert) {  // standard::eval of a diffuse lobe alone, in the shading frame's z
+      float wo_z = dot(vp.wo, vp.ns), wi_z = dot(wi, vp.ns);
+      if (vp.two_sided && wo_z < 0.f) wo_z = -wo_z, wi_z = -wi_z;
+      if (wo_z >= kMinCosine && wi_z >= kMinCosine) f = vp.lambert_f;
+    } else {
+      const Frame frame(vp.ns);
+      Material textured;
+      f = bsdf_eval(shading_material(scene, vp.material, vp.uv, &textured), frame.to_local(vp.wo), frame.to_local(wi), TransportMode::radiance);
+    }
     if (is_black(f)) return;
     const Rgb c = f * power;
     if (!all_finite(c)) return;
