@@ -1,5 +1,7 @@
 #include "info_command.h"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -158,9 +160,15 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
   cmd->add_flag("--scenes", options->scenes, "List the built-in scenes (name and id)");
   cmd->add_flag("--integrators", options->integrators, "List the integrators and filters with their options");
   cmd->add_option("file", options->file,
-                  "A checkpoint (render --checkpoint) or scene file (.pbrt, .xml, .gltf, .glb, .obj, .ply): print what it holds; for a "
-                  "scene, what the loader approximated or ignored, with file:line:column")
-      ->check(CLI::ExistingFile);
+                  "A checkpoint (render --checkpoint), a scene file (.pbrt, .xml, .gltf, .glb, .obj, .ply) or a built-in scene's name or "
+                  "id: print what it holds; for a scene file, what the loader approximated or ignored, with file:line:column")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(s, ec) || find_builtin_scene(s)) return std::string();
+            return "'" + s + "' is neither a file nor a built-in scene ('pathspace info --scenes' lists them)";
+          },
+          "", "file or built-in scene"));
   cmd->add_flag("--json", options->json,
                 "With --integrators: print the integrator and filter table as JSON; with a checkpoint: its header; with a scene: its summary");
   cmd->add_flag("--markdown", options->markdown, "With --integrators: print the table as the Markdown of docs/cli.md");
@@ -169,7 +177,11 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
 
 int run_info_command(const InfoOptions& options) {
   if (!options.file.empty()) {
-    if (is_scene_file(options.file))
+    std::error_code ec;
+    const BuiltinSceneInfo* builtin = std::filesystem::exists(options.file, ec) ? nullptr : find_builtin_scene(options.file);
+    if (builtin)
+      print_builtin_scene_summary(*builtin, options.json);
+    else if (is_scene_file(options.file))
       print_scene_summary(options.file, options.json);
     else
       print_checkpoint(options.file, options.json);

@@ -10,6 +10,7 @@
 #include "pathspace/base/error.h"
 #include "pathspace/base/printable.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene.h"
 #include "pathspace/scene/scene_validation.h"
 
@@ -42,19 +43,9 @@ std::string material_kind(const Material& m) {
   return lobes.empty() ? "black" : fmt::format("{}", fmt::join(lobes, " + "));
 }
 
-}  // namespace
-
-void print_scene_summary(const std::string& path, bool json) {
-  std::vector<std::string> warnings;
-  SceneFileSettings settings;
-  Scene scene;
-  try {
-    scene = load_scene(path, SceneLoadOptions{}, &warnings, &settings);
-    validate_scene(scene, &warnings);
-  } catch (const Error&) {
-    for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
-    throw;
-  }
+// `path`: the file, or the built-in scene's name when `builtin`.
+void print_summary(const std::string& path, bool builtin, const Scene& scene, const SceneFileSettings& settings,
+                   const std::vector<std::string>& warnings, bool json) {
   std::map<std::string, size_t> lights, materials;
   for (const Light& l : scene.lights) ++lights[light_kind(l.type)];
   for (const Material& m : scene.materials) ++materials[material_kind(m)];
@@ -63,7 +54,8 @@ void print_scene_summary(const std::string& path, bool json) {
   const PerspectiveCamera& c = scene.camera;
   if (json) {
     nlohmann::ordered_json j;
-    j["file"] = path;
+    j["file"] = builtin ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(path);
+    j["builtin"] = builtin ? nlohmann::ordered_json(path) : nlohmann::ordered_json(nullptr);
     j["vertices"] = scene.positions.size();
     j["triangles"] = scene.triangles.size();
     j["spheres"] = scene.spheres.size();
@@ -80,7 +72,7 @@ void print_scene_summary(const std::string& path, bool json) {
     fmt::print("{}\n", j.dump(2));
     return;
   }
-  fmt::print("scene {}\n", path);
+  fmt::print("{} {}\n", builtin ? "built-in scene" : "scene", path);
   fmt::print("  geometry     {} triangles ({} vertices), {} spheres\n", scene.triangles.size(), scene.positions.size(), scene.spheres.size());
   fmt::print("  textures     {} ({} texels){}\n", scene.textures.size(), texels,
              scene.environment_image.empty()
@@ -95,6 +87,29 @@ void print_scene_summary(const std::string& path, bool json) {
              settings.spp > 0 ? fmt::format("; the file suggests {} spp", settings.spp) : std::string());
   fmt::print("  approximated or ignored ({} warning{}):\n", warnings.size(), warnings.size() == 1 ? "" : "s");
   for (const std::string& w : warnings) fmt::print("    {}\n", printable(w));
+}
+
+}  // namespace
+
+void print_scene_summary(const std::string& path, bool json) {
+  std::vector<std::string> warnings;
+  SceneFileSettings settings;
+  Scene scene;
+  try {
+    scene = load_scene(path, SceneLoadOptions{}, &warnings, &settings);
+    validate_scene(scene, &warnings);
+  } catch (const Error&) {
+    for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
+    throw;
+  }
+  print_summary(path, false, scene, settings, warnings, json);
+}
+
+void print_builtin_scene_summary(const BuiltinSceneInfo& info, bool json) {
+  std::vector<std::string> warnings;
+  Scene scene = make_builtin_scene(info.name);
+  validate_scene(scene, &warnings);
+  print_summary(info.name, true, scene, SceneFileSettings{}, warnings, json);
 }
 
 }  // namespace pathspace::cli

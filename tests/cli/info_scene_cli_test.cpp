@@ -1,5 +1,5 @@
 // `pathspace info SCENE_FILE` (apps/pathspace/scene_summary.h): counts of what the scene file holds
-// as pathspace reads it, and what the loader approximated or ignored with its file:line:column; a
+// as pathspace reads it (also for a built-in scene by name or id), and what the loader approximated or ignored with its file:line:column; a
 // scene that does not load is the same error as for `render`.
 #include <gtest/gtest.h>
 
@@ -33,6 +33,24 @@ TEST(InfoScene, CountsAndWarningsWithTheirLocation) {
   EXPECT_EQ(parsed["lights"]["area (triangles)"], 2);
   EXPECT_EQ(parsed["materials"]["diffuse"], 4);
   EXPECT_EQ(parsed["warnings"].size(), 1u);
+}
+
+TEST(InfoScene, BuiltInScenesByNameOrId) {
+  const testing::Run r = testing::run_pathspace("info cornell-box");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("built-in scene cornell-box"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("camera       512x512"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("area (triangles)"), std::string::npos) << r.out;
+  const testing::Run j = testing::run_pathspace("info --json gbs_p");  // by id
+  ASSERT_EQ(j.exit_code, 0) << j.out;
+  const nlohmann::json parsed = nlohmann::json::parse(j.out.substr(j.out.find('{')));
+  EXPECT_EQ(parsed["builtin"], "cornell-glossy-point");
+  EXPECT_TRUE(parsed["file"].is_null());
+  EXPECT_EQ(parsed["lights"]["point"], 1);
+  // Neither a file nor a built-in scene: a usage error naming it.
+  const testing::Run missing = testing::run_pathspace("info no-such-scene");
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+  EXPECT_NE(missing.out.find("no-such-scene"), std::string::npos) << missing.out;
 }
 
 TEST(InfoScene, ABadSceneIsAnInputError) {
