@@ -10,8 +10,13 @@
 namespace pathspace {
 
 namespace detail {
+// Whether the material is evaluated mirrored to wo's side when wo is below the surface: two-sided
+// ones, but for dielectrics, whose two sides are the two media.
+PS_INLINE bool mirrors_to_wo_side(const Material& m) {
+  return m.two_sided && m.type != MaterialType::rough_dielectric && !(m.ior > 0.f);
+}
 PS_INLINE bool flip_for_two_sided(const Material& m, Vec3* wo, Vec3* wi) {
-  if (!m.two_sided || wo->z >= 0.f || m.type == MaterialType::rough_dielectric || m.ior > 0.f) return false;
+  if (!mirrors_to_wo_side(m) || wo->z >= 0.f) return false;
   wo->z = -wo->z;
   if (wi) wi->z = -wi->z;
   return true;

@@ -107,8 +107,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   gather.inv_quantum = reference_power_ > 0.f ? float(kFluxFixedScale / double(reference_power_)) : 0.f;
   gather.max_segments = max_segments_;
   if (reference_power_ > 0.f) {
-    for (uint64_t first = 0; first < photons_; first += kPhotonBatch)
-    {
+    for (uint64_t first = 0; first < photons_; first += kPhotonBatch) {
       PathCounters walks;
       PhotonCounters deposited;
       trace_and_deposit_photons(pass, first, std::min<uint64_t>(kPhotonBatch, photons_ - first), gather, &walks, &deposited);

@@ -37,7 +37,7 @@ struct VisiblePoint {
   // is lambert_f wherever both directions are above the surface (mirrored for a two-sided one), so a
   // deposit needs no material lookup or frame (sppm_deposit; the same bits as bsdf_eval).
   bool lambert = false;
-  bool two_sided = false;
+  bool mirrors_to_wo_side = false;  // detail::mirrors_to_wo_side of the material
   Rgb lambert_f;
 };
 
@@ -112,7 +112,7 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
         vp->segments = uint32_t(segments);
         vp->valid = true;
         vp->lambert = mat.type == MaterialType::standard && is_black(mat.glossy);
-        vp->two_sided = mat.two_sided && !(mat.ior > 0.f);  // detail::flip_for_two_sided's test for standard
+        vp->mirrors_to_wo_side = detail::mirrors_to_wo_side(mat);
         vp->lambert_f = mat.diffuse * kInvPi;
         break;
       }
@@ -157,10 +157,10 @@ PS_INLINE uint32_t sppm_deposit(const SceneView& scene, const SppmGatherView& g,
     if (int(vp.segments) + segments > g.max_segments) return;  // the joined path would be too long
     if (dot(vp.n_front, wi) <= 0.f) return;                    // photons from the back side do not count
     Rgb f;
-    if (vp.lambert) {  // standard::eval of a diffuse lobe alone, in the shading frame's z
+    if (vp.lambert) {  // bsdf_eval of a diffuse lobe alone, which needs only the shading frame's z
       float wo_z = dot(vp.wo, vp.ns), wi_z = dot(wi, vp.ns);
-      if (vp.two_sided && wo_z < 0.f) wo_z = -wo_z, wi_z = -wi_z;
-      if (wo_z >= kMinCosine && wi_z >= kMinCosine) f = vp.lambert_f;
+      if (vp.mirrors_to_wo_side && wo_z < 0.f) wo_z = -wo_z, wi_z = -wi_z;
+      if (standard::both_above(Vec3(0.f, 0.f, wo_z), Vec3(0.f, 0.f, wi_z))) f = vp.lambert_f;
     } else {
       const Frame frame(vp.ns);
       Material textured;
