@@ -153,6 +153,12 @@ void print_checkpoint(const std::string& path, bool json) {
     fmt::print("    {:<28} {}\n", name == "scene" ? name : "--" + name, value.empty() ? "(not given)" : value);
 }
 
+// `info ARG` describes the file ARG when there is one, else the built-in scene ARG names.
+bool names_a_file(const std::string& arg) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(arg, ec);
+}
+
 }  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
@@ -164,8 +170,7 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
                   "id: print what it holds; for a scene file, what the loader approximated or ignored, with file:line:column")
       ->check(CLI::Validator(
           [](std::string& s) {
-            std::error_code ec;
-            if (std::filesystem::is_regular_file(s, ec) || find_builtin_scene(s)) return std::string();
+            if (names_a_file(s) || find_builtin_scene(s)) return std::string();
             return "'" + s + "' is neither a file nor a built-in scene ('pathspace info --scenes' lists them)";
           },
           "", "file or built-in scene"));
@@ -177,8 +182,7 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions* options) {
 
 int run_info_command(const InfoOptions& options) {
   if (!options.file.empty()) {
-    std::error_code ec;
-    const BuiltinSceneInfo* builtin = std::filesystem::exists(options.file, ec) ? nullptr : find_builtin_scene(options.file);
+    const BuiltinSceneInfo* builtin = names_a_file(options.file) ? nullptr : find_builtin_scene(options.file);
     if (builtin)
       print_builtin_scene_summary(*builtin, options.json);
     else if (is_scene_file(options.file))
