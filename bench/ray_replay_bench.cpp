@@ -60,7 +60,8 @@ std::vector<std::vector<RecordedRay>> record_pass(const Scene& scene, const Acce
   const SceneView view = scene.view();
   const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
   std::vector<std::vector<RecordedRay>> chunks((pixels + kChunkPixels - 1) / kChunkPixels);
-  const PtSettings settings;
+  PtSettings settings;
+  settings.selection.mode = VertexSelectionMode::none;  // as PtIntegrator traces without a filter
   parallel_for(chunks.size(), 1, [&](size_t c0, size_t c1) {
     for (size_t c = c0; c < c1; ++c) {
       const RecordingTracer tracer{accel, &chunks[c]};

@@ -1,16 +1,15 @@
 // `pathspace study gallery DIR`: scenes with a reference beside them are rendered at the
 // reference's resolution and compared; a scene that cannot be loaded is listed with its error and
 // does not stop the others; a folder without references, or no folder, is a usage error.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "cli_process.h"
+#include "support/temp_dir.h"
 
 namespace {
 
@@ -30,37 +29,34 @@ Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-2 0 -2  2 0 -2
 Shape "sphere" "float radius" [0.4]
 )";
 
+// A folder of scenes and the gallery's output, with paths for the command line.
 class CliGallery : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pathspace-cli-gallery-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "scenes");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  int run(const std::string& args) {
-    const std::string cmd = "cd '" + dir_.string() + "' && '" PATHSPACE_BINARY "' " + args + " >/dev/null 2>stderr.txt";
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  void write(const fs::path& path, const std::string& text) {
+  int run(const std::string& args) { return pathspace::testing::run_pathspace(args).exit_code; }
+  void write(const std::string& relative, const std::string& text) {
+    const fs::path path = dir_.path / relative;
     fs::create_directories(path.parent_path());
     std::ofstream(path) << text;
   }
+  // Quoted for the shell; appended piecewise (GCC 12 warns falsely, -Wrestrict, on "'" + s + "'").
+  std::string at(const std::string& relative) const {
+    std::string quoted = "'";
+    quoted += dir_.file(relative);
+    quoted += "'";
+    return quoted;
+  }
 
-  fs::path dir_;
+  pathspace::testing::TempDir dir_{"cli-gallery"};
 };
 
 TEST_F(CliGallery, RendersAtTheReferencesSizeAndMatchesItsOwnReference) {
-  write(dir_ / "scenes/box/scene.pbrt", kScene);
+  write("scenes/box/scene.pbrt", kScene);
   // The reference: the same scene, 256 spp of PT at 32x24 (not the file's 64x64).
-  ASSERT_EQ(run("render scenes/box/scene.pbrt -r 32x24 -s 256 --seed 11 -o scenes/box/TungstenRender.exr"), 0);
-  write(dir_ / "scenes/broken/scene.pbrt", "WorldBegin\nShape \"sphere\" \"float radius\" [\n");
-  ASSERT_EQ(run("render scenes/box/scene.pbrt -r 8x8 -s 1 -o scenes/broken/TungstenRender.exr"), 0);
-  ASSERT_EQ(run("study gallery scenes -i pt -t 1 -o out -q"), 0);
-  std::ifstream in(dir_ / "out/gallery.json");
+  ASSERT_EQ(run("render " + at("scenes/box/scene.pbrt") + " -r 32x24 -s 256 --seed 11 -o " + at("scenes/box/TungstenRender.exr")), 0);
+  write("scenes/broken/scene.pbrt", "WorldBegin\nShape \"sphere\" \"float radius\" [\n");
+  ASSERT_EQ(run("render " + at("scenes/box/scene.pbrt") + " -r 8x8 -s 1 -o " + at("scenes/broken/TungstenRender.exr")), 0);
+  ASSERT_EQ(run("study gallery " + at("scenes") + " -i pt -t 1 -o " + at("out") + " -q"), 0);
+  std::ifstream in(dir_.path / "out/gallery.json");
   const nlohmann::json doc = nlohmann::json::parse(in);
   ASSERT_EQ(doc["scenes"].size(), 2u);
   const nlohmann::json& box = doc["scenes"][0];
@@ -77,20 +73,21 @@ TEST_F(CliGallery, RendersAtTheReferencesSizeAndMatchesItsOwnReference) {
     EXPECT_LT(r, 1.05) << "channel " << c;
   }
   for (const char* key : {"image", "error_map", "reference_image"})
-    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / box[key].get<std::string>())) << key;
+    EXPECT_TRUE(fs::is_regular_file(dir_.path / "out" / box[key].get<std::string>())) << key;
   const nlohmann::json& broken = doc["scenes"][1];
   EXPECT_EQ(broken["name"], "broken");
   ASSERT_TRUE(broken.contains("error"));
   EXPECT_NE(broken["error"].get<std::string>().find("scene.pbrt:"), std::string::npos) << broken["error"];
-  EXPECT_TRUE(fs::is_regular_file(dir_ / "out/gallery.html"));
+  EXPECT_TRUE(fs::is_regular_file(dir_.path / "out/gallery.html"));
 }
 
 TEST_F(CliGallery, NoFolderOrNoReferenceIsAUsageError) {
-  EXPECT_EQ(run("study gallery missing-folder -o out -q"), 2);
-  write(dir_ / "scenes/box/scene.pbrt", kScene);  // a scene, but no reference beside it
-  EXPECT_EQ(run("study gallery scenes -o out -q"), 2);
-  EXPECT_EQ(run("study gallery scenes -i no-such-integrator -o out -q"), 2);
-  EXPECT_FALSE(fs::exists(dir_ / "out/gallery.json"));
+  const std::string out = " -o " + at("out") + " -q";
+  EXPECT_EQ(run("study gallery " + at("missing-folder") + out), 2);
+  write("scenes/box/scene.pbrt", kScene);  // a scene, but no reference beside it
+  EXPECT_EQ(run("study gallery " + at("scenes") + out), 2);
+  EXPECT_EQ(run("study gallery " + at("scenes") + " -i no-such-integrator" + out), 2);
+  EXPECT_FALSE(fs::exists(dir_.path / "out/gallery.json"));
 }
 
 }  // namespace
