@@ -92,8 +92,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")
       ->check(checked_unsigned("seed", UINT64_MAX))
       ->capture_default_str();
-  cmd->add_option("--light-selection", o->light_selection, "How lights are picked for sampling")
-      ->check(CLI::IsMember({"uniform", "power"}))
+  cmd->add_option("--light-selection", o->light_selection,
+                  "How lights are picked: uniform, power, or bvh (light paths by power, next event estimation by the light tree)")
+      ->check(CLI::IsMember(light_selection_names()))
       ->capture_default_str();
   // What does not change the image: free to change when a render is resumed (render_resume.h).
   CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16; with --resume: in total)")

@@ -10,6 +10,7 @@
 #include "pathspace/session/render_config.h"
 
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/scene/scene.h"
 #include "registry_options.h"
 
 namespace pathspace::cli {
@@ -41,7 +42,7 @@ struct RenderOptions {
   std::string resume;             // --resume FILE: continue the render saved there
   double write_every = 0.0;       // seconds between output writes while rendering; 0: at the end only
   double max_decompression_ratio = kDefaultMaxDecompressionRatio;  // gzip scene files (io/file_bytes.h)
-  std::string light_selection = "uniform";
+  std::string light_selection = light_selection_name(kDefaultLightSelection);
   std::string filter = "none";  // path space filter (filters/filter_registry.h)
   // Animations (render_frames.h, docs/animation.md).
   std::string frames;       // "A:B"; empty: a still image

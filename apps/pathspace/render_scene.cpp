@@ -112,7 +112,8 @@ void apply_scene_options(const RenderOptions& o, Scene* scene) {
     if (!(radius > 0.f) && o.focus_distance > 0.f) throw UsageError("--focus-distance needs a thin lens: give --lens-radius too");
     if (!set_thin_lens(&scene->camera, radius, focus)) throw UsageError("invalid --lens-radius or --focus-distance");
   }
-  scene->light_selection = o.light_selection == "power" ? LightSelection::power : LightSelection::uniform;
+  if (!parse_light_selection(o.light_selection, &scene->light_selection))
+    throw UsageError("unknown --light-selection '" + o.light_selection + "'");
   scene->finalize();
 }
 

@@ -45,7 +45,8 @@ def scene_radius(pathspace, scene):
 def configurations(scene, radius):
     """(name, pathspace arguments, SmallVCM arguments) for one scene."""
     sid = str(SCENE_IDS[scene])
-    common = [scene, "-r", RESOLUTION, "-d", str(MAX_SEGMENTS)]
+    # SmallVCM picks its lights uniformly: the same estimator, not pathspace's default light tree.
+    common = [scene, "-r", RESOLUTION, "-d", str(MAX_SEGMENTS), "--light-selection", "uniform"]
     ppm_radius = f"{RADIUS_FACTOR * radius:.6g}"
     return [
         ("pt", common + ["-i", "pt", "-s", "20"], ["-s", sid, "-a", "pt", "-i", "20"]),

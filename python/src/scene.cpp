@@ -169,12 +169,14 @@ void bind_scene(py::module_& m) {
           },
           "A copy of the camera's values; assign a changed one to move the camera.")
       .def_property(
-          "light_selection", [](const PyScene& s) { return s.scene()->light_selection == LightSelection::power ? "power" : "uniform"; },
+          "light_selection", [](const PyScene& s) { return light_selection_name(s.scene()->light_selection); },
           [](PyScene& s, const std::string& v) {
-            if (v != "uniform" && v != "power") throw py::value_error("light_selection must be 'uniform' or 'power', not '" + v + "'");
-            s.set_light_selection(v == "power" ? LightSelection::power : LightSelection::uniform);
+            LightSelection selection;
+            if (!parse_light_selection(v, &selection))
+              throw py::value_error("light_selection must be 'uniform', 'power' or 'bvh', not '" + v + "'");
+            s.set_light_selection(selection);
           },
-          "How lights are picked for sampling: 'uniform' or 'power' (the CLI's --light-selection).")
+          "How lights are picked for sampling: 'uniform', 'power' or 'bvh' (the CLI's --light-selection).")
       .def_property_readonly(
           "bounding_sphere",
           [](const PyScene& s) {

@@ -44,9 +44,12 @@
 #include "pathspace/materials/standard_material.h"
 #include "pathspace/lights/environment_map.h"
 #include "pathspace/lights/light.h"
+#include "pathspace/lights/light_bounds.h"
+#include "pathspace/lights/light_tree_view.h"
 #include "pathspace/scene/environment_light.h"
 #include "pathspace/scene/light_emission.h"
 #include "pathspace/scene/light_sampling.h"
+#include "pathspace/scene/light_selection.h"
 #include "pathspace/scene/scene_view.h"
 #include "pathspace/scene/shading_material.h"
 #include "pathspace/scene/texture.h"
@@ -78,6 +81,9 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
   CameraProjection projection;
   if (cam.project(ray.at(1.f), v, &projection)) acc += projection.factor;
   if (cam.connect(ray.at(2.f), v, &projection)) acc += projection.factor;
+  float tree_prob = 0.f;
+  const uint32_t picked = select_light_at(scene, ray.o, ray.d, v.x, &tree_prob);
+  if (picked != LightTreeView::kNone) acc += tree_prob - light_selection_probability_at(scene, ray.o, ray.d, picked);
 
   const SurfaceHit& hit = hits[i];
   float light_prob = 0.f;

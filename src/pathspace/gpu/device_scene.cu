@@ -40,6 +40,11 @@ DeviceScene::DeviceScene(const Scene& scene) {
   view_.textures = upload(textures.data(), textures.size());
   auto up = [this](const auto* p, size_t n) { return upload(p, n); };
   view_.light_selection = device_discrete(h.light_selection, up);
+  if (h.light_tree.active) {
+    view_.light_tree.nodes = upload(h.light_tree.nodes, h.light_tree.num_nodes);
+    view_.light_tree.leaf_position = upload(h.light_tree.leaf_position, h.num_lights);
+    view_.light_tree.infinite = upload(h.light_tree.infinite, h.light_tree.num_infinite);
+  }
   EnvironmentMapView& env = view_.environment_map;
   env.texels = upload(h.environment_map.texels, size_t(h.environment_map.width) * size_t(h.environment_map.height));
   const Piecewise2DView& dist = h.environment_map.distribution;

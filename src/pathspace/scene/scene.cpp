@@ -1,6 +1,8 @@
 // Scene construction helpers and finalisation (bounds, light-selection distribution).
 #include "pathspace/scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -135,6 +137,67 @@ float Scene::light_power(size_t i) const {
   return 0.f;
 }
 
+const std::vector<std::string>& light_selection_names() {
+  static const std::vector<std::string> names{"uniform", "power", "bvh"};
+  return names;
+}
+
+const std::string& light_selection_name(LightSelection s) { return light_selection_names()[size_t(s)]; }
+
+bool parse_light_selection(const std::string& name, LightSelection* out) {
+  const std::vector<std::string>& names = light_selection_names();
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) {
+      *out = LightSelection(i);
+      return true;
+    }
+  return false;
+}
+
+std::optional<LightBounds> Scene::light_bounds(size_t i) const {
+  const Light& l = lights[i];
+  LightBounds b;
+  b.phi = light_power(i);
+  switch (l.type) {
+    case LightType::area_triangle: {
+      const Triangle& t = triangles[l.shape];
+      const Vec3 p0 = positions[t.v[0]], p1 = positions[t.v[1]], p2 = positions[t.v[2]];
+      for (const Vec3& p : {p0, p1, p2}) b.box.expand(p);
+      // Emission leaves the front side (along the geometric normal), cosine-distributed.
+      b.w = triangle_normal(p0, p1, p2);
+      if (!all_finite(b.w)) b.phi = 0.f;  // a degenerate triangle emits nothing
+      b.cos_theta_o = 1.f;
+      b.cos_theta_e = 0.f;
+      b.two_sided = l.two_sided;
+      return b;
+    }
+    case LightType::area_sphere: {
+      const Sphere& s = spheres[l.shape];
+      b.box.expand(s.center - Vec3(s.radius));
+      b.box.expand(s.center + Vec3(s.radius));
+      b.cos_theta_o = -1.f;  // normals in every direction
+      b.cos_theta_e = 0.f;
+      return b;
+    }
+    case LightType::point:
+      b.box.expand(l.position);
+      b.cos_theta_o = -1.f;
+      b.cos_theta_e = 0.f;
+      return b;
+    case LightType::spot: {
+      // Full intensity within the falloff cone; the smoothstep reaches zero at the total angle.
+      b.box.expand(l.position);
+      b.w = l.direction;
+      b.cos_theta_o = std::clamp(l.cos_falloff, -1.f, 1.f);
+      b.cos_theta_e = std::cos(std::max(0.f, std::acos(std::clamp(l.cos_total, -1.f, 1.f)) - std::acos(b.cos_theta_o)));
+      return b;
+    }
+    case LightType::directional:
+    case LightType::environment: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 void Scene::finalize() {
   for (size_t i = 0; i < triangles.size(); ++i) {
     const Triangle& t = triangles[i];
@@ -171,10 +234,16 @@ void Scene::finalize() {
       if (environment_light_ >= 0) throw Error("a scene can hold at most one environment light");
       environment_light_ = int32_t(i);
     }
-    if (light_selection == LightSelection::power) weights[i] = light_power(i);
+    if (light_selection != LightSelection::uniform) weights[i] = light_power(i);
   }
   if (!environment_image.empty() && environment_light_ < 0) throw Error("an environment image without an environment light");
   light_distribution_.build(weights);
+  light_tree_ = LightTree();
+  if (light_selection == LightSelection::bvh) {
+    std::vector<std::optional<LightBounds>> bounds(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) bounds[i] = light_bounds(i);
+    light_tree_ = LightTree(bounds);
+  }
   finalized_ = true;
 }
 
@@ -201,6 +270,7 @@ SceneView Scene::view() const {
   v.lights = lights.data();
   v.num_lights = uint32_t(lights.size());
   v.light_selection = light_distribution_.view();
+  if (light_selection == LightSelection::bvh) v.light_tree = light_tree_.view();
   v.environment_light = environment_light_;
   v.environment_map = environment_image.view();
   v.camera = camera;

@@ -4,17 +4,28 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pathspace/scene/environment_image.h"
 #include "pathspace/scene/image_texture.h"
+#include "pathspace/scene/light_tree.h"
 #include "pathspace/scene/scene_sources.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
 
-enum class LightSelection { uniform, power };
+// How lights are picked (docs/conventions.md, "Light selection"). uniform and power serve every
+// integrator alike; bvh starts light paths by power and picks the light for next event estimation
+// at a shading point with the light tree (scene/light_tree.h).
+enum class LightSelection { uniform, power, bvh };
+inline constexpr LightSelection kDefaultLightSelection = LightSelection::bvh;
+// The names the CLI and Python use for them ("uniform", "power", "bvh"), in that order.
+const std::vector<std::string>& light_selection_names();
+const std::string& light_selection_name(LightSelection s);
+// false when `name` is none of light_selection_names().
+bool parse_light_selection(const std::string& name, LightSelection* out);
 
 class Scene {
  public:
@@ -39,7 +50,7 @@ class Scene {
   uint32_t first_moving_sphere = kNothingMoves;
   float ray_epsilon = 1e-4f;
   int max_path_segments = 10;
-  LightSelection light_selection = LightSelection::uniform;
+  LightSelection light_selection = kDefaultLightSelection;
   // When set, infinite lights use this bounding sphere instead of the geometry's.
   bool has_bounds_override = false;
   BoundingSphere bounds_override;
@@ -73,11 +84,16 @@ class Scene {
   const DiscreteDistribution& light_distribution() const { return light_distribution_; }
   // Total emitted power of light i (luminance), the weight of power-proportional selection.
   float light_power(size_t i) const;
+  // Light i's bounds for the light tree, or nullopt for an infinite light (valid after finalize()).
+  std::optional<LightBounds> light_bounds(size_t i) const;
+  // The light tree (empty unless light_selection is bvh).
+  const LightTree& light_tree() const { return light_tree_; }
   SceneView view() const;
 
  private:
   BoundingSphere bounds_;
   DiscreteDistribution light_distribution_;
+  LightTree light_tree_;
   int32_t environment_light_ = -1;
   // What SceneView::textures points to; rebuilt by view() when stale (a copied Scene's views would
   // still point into the original's texels).

@@ -8,6 +8,7 @@
 #include "pathspace/geometry/shapes.h"
 #include "pathspace/lights/environment_map.h"
 #include "pathspace/lights/light.h"
+#include "pathspace/lights/light_tree_view.h"
 #include "pathspace/materials/material.h"
 #include "pathspace/math/bbox.h"
 #include "pathspace/sampling/discrete.h"
@@ -29,7 +30,8 @@ struct SceneView {
   uint32_t num_textures = 0;
   const Light* lights = nullptr;
   uint32_t num_lights = 0;
-  DiscreteView light_selection;     // probability of choosing each light for NEE
+  DiscreteView light_selection;     // probability of choosing each light (light paths; NEE unless the tree is active)
+  LightTreeView light_tree;         // NEE at a shading point when active (scene/light_sampling.h)
   int32_t environment_light = -1;   // index of the environment light, or -1
   EnvironmentMapView environment_map;  // its image (texels null: constant radiance)
   PerspectiveCamera camera;

@@ -14,6 +14,7 @@
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/light_sampling.h"
+#include "pathspace/scene/light_selection.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/shading_material.h"
@@ -140,6 +141,7 @@ struct PtPathState {
   bool after_delta = true;   // the camera "bounce" counts as delta: directly seen emission always counts
   float prev_bsdf_pdf = 0.f;
   Vec3 prev_p;
+  Vec3 prev_ns;              // the previous vertex's shading normal (zero at the camera): light selection there
   float path_distance = 0.f, prev_distance = 0.f;
   // With caustics: 1 after a gathering vertex's non-delta bounce, 2 once delta bounces alone
   // followed it (emission found then belongs to the photon map), 0 otherwise.
@@ -169,6 +171,7 @@ PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* o
   s->after_delta = true;
   s->prev_bsdf_pdf = 0.f;
   s->prev_p = ray.o;
+  s->prev_ns = Vec3(0.f);
   s->path_distance = s->prev_distance = 0.f;
   s->caustic_chain = s->selected = s->diffuse_index = 0;
   s->segments = 1;
@@ -184,7 +187,8 @@ PS_INLINE void pt_on_miss(const SceneView& scene, const PtSettings& settings, Pt
   if (s->after_delta || !settings.nee) {
     s->radiance() += s->beta * environment_radiance(scene, env, ray.d);
   } else if (settings.bsdf_sampling) {
-    const float light_pdf_w = scene.light_selection.probability(uint32_t(scene.environment_light)) * environment_pdf(scene, ray.d);
+    const float select_prob = light_selection_probability_at(scene, s->prev_p, s->prev_ns, uint32_t(scene.environment_light));
+    const float light_pdf_w = select_prob * environment_pdf(scene, ray.d);
     s->radiance() += s->beta * environment_radiance(scene, env, ray.d) * combine_mis(settings, s->prev_bsdf_pdf, light_pdf_w);
   }
 }
@@ -211,8 +215,8 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
       if (s->after_delta || !settings.nee) {
         s->radiance() += s->beta * le;
       } else if (settings.bsdf_sampling) {
-        const float light_pdf_w =
-            scene.light_selection.probability(uint32_t(hit.light)) * light_pdf(scene, light, s->prev_p, hit.p, hit.ng);
+        const float select_prob = light_selection_probability_at(scene, s->prev_p, s->prev_ns, uint32_t(hit.light));
+        const float light_pdf_w = select_prob * light_pdf(scene, light, s->prev_p, hit.p, hit.ng);
         s->radiance() += s->beta * le * combine_mis(settings, s->prev_bsdf_pdf, light_pdf_w);
       }
     }
@@ -264,11 +268,10 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   // Next event estimation: one light, one point on it; its contribution waits for the shadow ray.
   if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat)) {
     float select_prob;
-    const uint32_t li = scene.light_selection.sample(sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
-    const Light& light = scene.lights[li];
+    const uint32_t li = select_light_at(scene, hit.p, hit.ns, sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
     LightSample ls;
     const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
-    if (sample_light(scene, light, hit.p, ul, &ls)) {
+    if (li != LightTreeView::kNone && sample_light(scene, scene.lights[li], hit.p, ul, &ls)) {
       const Vec3 wi = frame.to_local(ls.wi);
       const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
       if (!is_black(f)) {
@@ -312,6 +315,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   s->after_delta = bs.delta;
   s->prev_bsdf_pdf = bs.pdf_w;
   s->prev_p = hit.p;
+  s->prev_ns = hit.ns;
 
   if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
     const float q = fminf(1.f, max_component(s->abs_beta));
