@@ -119,6 +119,31 @@ TEST(PbrtParser, CameraFilmSamplerIntegrator) {
   EXPECT_NEAR(r.camera.tan_x, std::tan(20.0 * M_PI / 180.0), 1e-6);
 }
 
+// pbrt-v4's imaging ratio, exposure time (shutterclose - shutteropen) x iso / 100, scales every
+// emitter (so the image) by the same factor; the defaults (1 s, ISO 100) leave them alone.
+TEST(PbrtParser, FilmIsoAndExposureTimeScaleEveryEmitter) {
+  const std::string world =
+      "WorldBegin\nLightSource \"point\" \"rgb I\" [ 1 2 3 ]\nLightSource \"infinite\" \"rgb L\" [ 0.5 0.5 0.5 ]\n"
+      "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [ 4 4 4 ]\nShape \"sphere\"\nAttributeEnd\n";
+  auto scene_with = [&](const std::string& camera_params, const std::string& film_params, std::vector<std::string>* w = nullptr) {
+    LoadWarnings warnings(w);
+    return pbrt::load_pbrt_string("Camera \"perspective\" " + camera_params + "\nFilm \"rgb\" " + film_params + "\n" + world,
+                                  "t.pbrt", "", {}, &warnings, nullptr);
+  };
+  const Scene plain = scene_with("", "");
+  const Scene scaled = scene_with("\"float shutteropen\" 0.25 \"float shutterclose\" 0.75", "\"float iso\" 400");
+  ASSERT_EQ(plain.lights.size(), scaled.lights.size());
+  ASSERT_EQ(plain.lights.size(), 3u);
+  for (size_t i = 0; i < plain.lights.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(scaled.lights[i].value[c], 2.f * plain.lights[i].value[c]) << "light " << i;
+  std::vector<std::string> w;
+  scene_with("", "\"float whitebalance\" 5000 \"string sensor\" \"canon_eos_100d\"", &w);
+  EXPECT_TRUE(has_warning(w, "whitebalance ignored"));
+  EXPECT_TRUE(has_warning(w, "treated as \"cie1931\""));
+  EXPECT_THROW(scene_with("\"float shutteropen\" 1 \"float shutterclose\" 1", ""), Error);
+  EXPECT_THROW(scene_with("", "\"float iso\" -100"), Error);
+}
+
 TEST(PbrtParser, NamedMaterialsAndLights) {
   std::vector<std::string> w;
   const Scene s = load(

@@ -73,6 +73,7 @@ class Builder {
       settings->spp = spp_;
       settings->image_name = image_name_;
     }
+    apply_imaging_ratio();
     scene_.finalize();
     return std::move(scene_);
   }
@@ -153,6 +154,7 @@ class Builder {
         throw Error(st.loc, "Film resolution must be between 1 and 16384");
       image_name_ = st.get_string("filename", "");
       st.ignore({"savefp16"});
+      film_sensor(st);
     } else if (d == "Sampler") {
       spp_ = st.get_int("pixelsamples", 16);
       if (spp_ < 1) throw Error(st.loc, "pixelsamples must be at least 1");
@@ -245,6 +247,24 @@ class Builder {
     return int(scene_.add_material(make_material(type, st, textures_, warnings_)));
   }
 
+  // pbrt-v4's RGB film with the default "cie1931" sensor scales the image by the imaging ratio
+  // exposure time x iso / 100 (PixelSensor). White balancing is not done.
+  void film_sensor(const Statement& st) {
+    iso_ = float(st.get_float("iso", 100.0));
+    if (!(iso_ > 0.f && std::isfinite(iso_))) throw Error(st.loc, "Film iso must be positive and finite");
+    const std::string sensor = st.get_string("sensor", "cie1931");
+    if (sensor != "cie1931") warn(st.find("sensor")->loc, "Film sensor \"" + sensor + "\" treated as \"cie1931\" (no sensor response curves)");
+    if (st.get_float("whitebalance", 0.0) != 0.0) warn(st.find("whitebalance")->loc, "Film whitebalance ignored: no white balancing is done");
+  }
+
+  // The imaging ratio scales every emitter: the image is linear in emission, so this equals scaling
+  // the image, for every integrator alike.
+  void apply_imaging_ratio() {
+    const float ratio = exposure_time_ * iso_ / 100.f;
+    if (ratio == 1.f) return;
+    for (Light& l : scene_.lights) l.value = l.value * ratio;
+  }
+
   void camera(const Statement& st) {
     if (st.strings[0] != "perspective") throw Error(st.loc, "Camera \"" + st.strings[0] + "\" is not supported (only \"perspective\")");
     fov_ = float(st.get_float("fov", 90.0));
@@ -254,7 +274,10 @@ class Builder {
     focal_distance_ = float(st.get_float("focaldistance", 1e6));
     if (!(lens_radius_ >= 0.f && std::isfinite(lens_radius_))) throw Error(st.loc, "lensradius must be finite and >= 0");
     if (!(focal_distance_ > 0.f && std::isfinite(focal_distance_))) throw Error(st.loc, "focaldistance must be finite and positive");
-    st.ignore({"shutteropen", "shutterclose"});
+    // pbrt-v4's exposure time (the film's imaging ratio; the shutter's motion blur is not supported).
+    exposure_time_ = float(st.get_float("shutterclose", 1.0) - st.get_float("shutteropen", 0.0));
+    if (!(exposure_time_ > 0.f && std::isfinite(exposure_time_)))
+      throw Error(st.loc, "shutterclose - shutteropen must be positive and finite (the shutter never opens)");
     camera_from_world_ = gs_.ctm;
     has_camera_ = true;
     camera_loc_ = st.loc;
@@ -544,6 +567,7 @@ class Builder {
   FileLoc camera_loc_;
   float fov_ = 90.f;
   float lens_radius_ = 0.f, focal_distance_ = 1e6f;
+  float exposure_time_ = 1.f, iso_ = 100.f;  // the film's imaging ratio (film_sensor)
   int film_width_ = 1280, film_height_ = 720, spp_ = 16, max_depth_ = 5;
   std::string image_name_;
 };
