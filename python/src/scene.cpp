@@ -96,6 +96,10 @@ std::shared_ptr<PyScene> load(const std::string& name, std::optional<std::pair<i
       if (substitute_missing_textures || defines || animation)
         throw py::value_error("substitute_missing_textures, defines and animation apply to scene files only");
       Scene scene = make_builtin_scene(info->name, width, height);
+      // As `pathspace render` does (apply_scene_options): the default light selection, not the one
+      // a built-in scene's library function sets for its paper's setup.
+      scene.light_selection = kDefaultLightSelection;
+      scene.finalize();
       validate_scene(scene, &warnings);
       return std::make_shared<PyScene>(std::move(scene), info->name, "", 0, std::move(warnings));
     }

@@ -45,6 +45,11 @@ def test_moving_the_camera_changes_the_image():
     assert not np.array_equal(before, after)
 
 
+def test_default_light_selection_is_the_cli_default():
+    # `pathspace render` picks lights with bvh unless told otherwise, built-in scenes included.
+    assert pathspace.Scene.load("cornell-box", resolution=(16, 16)).light_selection == "bvh"
+
+
 def test_light_selection_equals_the_cli(cli, tmp_path):
     scene = pathspace.Scene.load("cornell-box", resolution=(16, 16))
     scene.light_selection = "power"
