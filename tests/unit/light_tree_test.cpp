@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 
+#include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/light_selection.h"
 #include "pathspace/scene/light_tree.h"
 #include "pathspace/scene/scene.h"
@@ -177,6 +178,24 @@ TEST(LightTree, ThirtyThousandEmittersMakeAShallowTree) {
   EXPECT_EQ(s.light_tree().nodes().size(), 2u * 30000u - 1u);
   EXPECT_LE(s.light_tree().depth(), 40);
   EXPECT_GE(s.light_tree().depth(), 15);  // log2(30000) ≈ 14.9
+}
+
+// The tree stays off where it would pick as power does: the built-in Cornell box's emitter is one
+// quad as two triangles of the same bounds, so bvh renders it exactly as power (and uniform) do.
+TEST(LightTree, OffWhereItCannotDifferFromPower) {
+  Scene cornell = make_builtin_scene("cornell-box", 8, 8);
+  cornell.light_selection = LightSelection::bvh;
+  cornell.finalize();
+  EXPECT_FALSE(cornell.view().light_tree.active);
+  Scene sky = make_builtin_scene("cornell-glossy-background", 8, 8);  // an environment light only
+  sky.light_selection = LightSelection::bvh;
+  sky.finalize();
+  EXPECT_FALSE(sky.view().light_tree.active);
+  Scene with_point = make_builtin_scene("cornell-box", 8, 8);
+  with_point.add_point_light(Vec3(0.f, 0.f, 1.f), Rgb(1.f));
+  with_point.light_selection = LightSelection::bvh;
+  with_point.finalize();
+  EXPECT_TRUE(with_point.view().light_tree.active);
 }
 
 TEST(LightTree, MergedConesHoldBothCones) {

@@ -170,6 +170,25 @@ LightTree::LightTree(const std::vector<std::optional<LightBounds>>& bounds) {
   depth_ = builder.depth;
 }
 
+namespace {
+bool same_bounds(const LightImportanceBounds& a, const LightImportanceBounds& b) {
+  return a.center == b.center && a.radius2 == b.radius2 && a.w == b.w && a.phi == b.phi &&
+         a.cos_theta_o == b.cos_theta_o && a.cos_theta_e == b.cos_theta_e && a.two_sided == b.two_sided;
+}
+}  // namespace
+
+bool LightTree::can_differ_from_power() const {
+  if (nodes_.empty()) return false;
+  if (!infinite_.empty()) return true;
+  const LightTreeNode* first = nullptr;
+  for (const LightTreeNode& n : nodes_) {
+    if (!n.leaf) continue;
+    if (!first) first = &n;
+    else if (!same_bounds(first->bounds, n.bounds)) return true;
+  }
+  return false;
+}
+
 LightTreeView LightTree::view() const {
   LightTreeView v;
   v.nodes = nodes_.empty() ? nullptr : nodes_.data();

@@ -26,6 +26,11 @@ class LightTree {
   const std::vector<LightTreeNode>& nodes() const { return nodes_; }
   // The tree's depth (a single leaf: 0).
   int depth() const { return depth_; }
+  // False when the tree would pick exactly as power-proportional selection does, only slower: no
+  // infinite lights and every finite light with the same bounds (so the same importance
+  // everywhere and the same power; a Cornell box's emitter quad as two triangles), or no finite
+  // light at all (the tree would pick the infinite ones uniformly; power is the better choice).
+  bool can_differ_from_power() const;
 
  private:
   std::vector<LightTreeNode> nodes_;

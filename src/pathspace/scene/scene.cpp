@@ -243,6 +243,7 @@ void Scene::finalize() {
     std::vector<std::optional<LightBounds>> bounds(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) bounds[i] = light_bounds(i);
     light_tree_ = LightTree(bounds);
+    if (!light_tree_.can_differ_from_power()) light_tree_ = LightTree();
   }
   finalized_ = true;
 }
@@ -270,7 +271,7 @@ SceneView Scene::view() const {
   v.lights = lights.data();
   v.num_lights = uint32_t(lights.size());
   v.light_selection = light_distribution_.view();
-  if (light_selection == LightSelection::bvh) v.light_tree = light_tree_.view();
+  if (light_selection == LightSelection::bvh && !light_tree_.nodes().empty()) v.light_tree = light_tree_.view();
   v.environment_light = environment_light_;
   v.environment_map = environment_image.view();
   v.camera = camera;
