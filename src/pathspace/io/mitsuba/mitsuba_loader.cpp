@@ -181,7 +181,7 @@ class Builder {
         w_->add(e.loc(), "emitter '" + e.type() + "' inside a shape is not supported; skipped");
         e.ignore_all();
       } else {
-        radiance = e.get_rgb("radiance", Rgb(1.f), folder_, w_);
+        radiance = e.get_rgb("radiance", Rgb(1.f), folder_, w_, SpectrumUse::unbounded);
       }
       e.warn_unused(w_);
     }
@@ -196,16 +196,17 @@ class Builder {
     const std::string& t = o.type();
     if (t == "point") {
       const Mat4 m = o.get_transform("to_world");
-      scene_.add_point_light(m.point(o.get_vector("position", Vec3())), o.get_rgb("intensity", Rgb(1.f), folder_, w_));
+      scene_.add_point_light(m.point(o.get_vector("position", Vec3())),
+                             o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
     } else if (t == "directional") {
       const Mat4 m = o.get_transform("to_world");
       const Vec3 dir = m.vector(o.get_vector("direction", Vec3(0, 0, 1)));
       if (!(length(dir) > 0.f) || !all_finite(dir)) throw Error(o.loc(), "directional emitter: direction must be non-zero");
-      scene_.add_directional_light(dir, o.get_rgb("irradiance", Rgb(1.f), folder_, w_));
+      scene_.add_directional_light(dir, o.get_rgb("irradiance", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
     } else if (t == "constant") {
       if (has_environment_) throw Error(o.loc(), "a scene can hold at most one environment emitter");
       has_environment_ = true;
-      scene_.add_environment_light(o.get_rgb("radiance", Rgb(1.f), folder_, w_));
+      scene_.add_environment_light(o.get_rgb("radiance", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
     } else if (t == "envmap") {
       if (has_environment_) throw Error(o.loc(), "a scene can hold at most one environment emitter");
       has_environment_ = true;
@@ -231,7 +232,7 @@ class Builder {
     if (inner < cutoff) w_->add(o.loc(), "spot emitter: Mitsuba's falloff (linear in the angle) approximated by a smoothstep in the cosine");
     const Vec3 axis = m.vector(Vec3(0, 0, 1));
     if (!(length(axis) > 0.f) || !all_finite(axis)) throw Error(o.loc(), "spot emitter: to_world is singular");
-    scene_.add_spot_light(m.point(Vec3()), axis, o.get_rgb("intensity", Rgb(1.f), folder_, w_),
+    scene_.add_spot_light(m.point(Vec3()), axis, o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded),
                           float(std::cos(cutoff * M_PI / 180.0)), float(std::cos(inner * M_PI / 180.0)));
   }
 

@@ -54,8 +54,8 @@ Material conductor(const Object& o, const std::string& folder, LoadWarnings* w) 
     find_named_spectrum("metal-Al-eta", &eta);
     find_named_spectrum("metal-Al-k", &k);
   }
-  eta = o.get_rgb("eta", eta, folder, w);
-  k = o.get_rgb("k", k, folder, w);
+  eta = o.get_rgb("eta", eta, folder, w, SpectrumUse::unbounded);
+  k = o.get_rgb("k", k, folder, w, SpectrumUse::unbounded);
   if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
     w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
   MicrofacetDistribution distribution = MicrofacetDistribution::ggx;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/spectrum/spectrum_to_rgb.h"
 
 namespace pathspace::mitsuba {
 
@@ -97,7 +98,8 @@ Vec3 Object::get_vector(const std::string& name, const Vec3& fallback) const {
               float(parse_number(doc_->attr(p->node, "z", "0"), loc)));
 }
 
-Rgb Object::get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w) const {
+Rgb Object::get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w,
+                    SpectrumUse use) const {
   const Property* p = find(name);
   if (!p) return fallback;
   const FileLoc loc = doc_->loc(p->node);
@@ -109,23 +111,24 @@ Rgb Object::get_rgb(const std::string& name, const Rgb& fallback, const std::str
   }
   if (p->tag == "spectrum") {
     if (doc_->has_attr(p->node, "filename")) {
-      w->add(loc, "spectrum files are not supported; '" + name + "' uses its default");
-      return fallback;
+      const std::string file = doc_->attr(p->node, "filename");
+      const std::filesystem::path path = doc_->resolve_file(file, folder);
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(loc, "spectrum file '" + file + "' not found (looked for " + path.string() + ")");
+      return spectrum_to_rgb(read_spd_file(path.string()), use);
     }
     if (value.find(':') == std::string::npos) return rgb_value(parse_numbers(value, loc), loc);
     std::string numbers = value;
     for (char& c : numbers)
       if (c == ':') c = ' ';
-    const std::vector<double> v = parse_numbers(numbers, loc);
-    if (v.empty() || v.size() % 2) throw Error(loc, "spectrum '" + name + "' needs wavelength:value pairs");
-    double sum = 0;
-    for (size_t i = 1; i < v.size(); i += 2) sum += v[i];
-    w->add(loc, "sampled spectrum '" + name + "' approximated by its mean value (grey)");
-    return Rgb(float(sum / double(v.size() / 2)));
+    return spectrum_to_rgb(spectrum_from_pairs(parse_numbers(numbers, loc), loc, "spectrum '" + name + "'"), use);
   }
   if (p->tag == "blackbody") {
-    w->add(loc, "blackbody spectrum '" + name + "' not supported; taken as white (1, 1, 1)");
-    return Rgb(1.f);
+    std::string kelvin = doc_->attr(p->node, "temperature");
+    if (!kelvin.empty() && (kelvin.back() == 'K' || kelvin.back() == 'k')) kelvin.pop_back();
+    const double scale = parse_number(doc_->attr(p->node, "scale", "1"), loc);
+    return spectrum_to_rgb(blackbody_spectrum(parse_number(kelvin, loc), BlackbodyUnit::radiance_per_nm, loc), use) * float(scale);
   }
   if (p->tag == "texture") return texture_rgb(p->node, name, fallback, folder, w);
   if (p->tag == "ref") {

@@ -10,6 +10,7 @@
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/mitsuba/mitsuba_xml.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
+#include "pathspace/io/spectrum/spectrum_to_rgb.h"
 #include "pathspace/math/rgb.h"
 
 namespace pathspace::mitsuba {
@@ -40,10 +41,12 @@ class Object {
   bool get_bool(const std::string& name, bool fallback) const;
   std::string get_string(const std::string& name, const std::string& fallback) const;
   Vec3 get_vector(const std::string& name, const Vec3& fallback) const;  // <point>/<vector>
-  // rgb, srgb (decoded to linear), spectrum (constant, or wavelength:value pairs averaged, with a
-  // warning), float, or a nested or referenced texture (a bitmap's mean colour, with a warning;
-  // mitsuba_textures.h binds bitmaps where a material can use the image).
-  Rgb get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w) const;
+  // rgb, srgb (decoded to linear), spectrum (constant, wavelength:value pairs or a file), blackbody
+  // (temperature and scale, in W / (m^2 sr nm)), float, or a nested or referenced texture (a
+  // bitmap's mean colour, with a warning; mitsuba_textures.h binds bitmaps where a material can use
+  // the image). Spectra are converted as `use` says (io/spectrum/spectrum_to_rgb.h).
+  Rgb get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w,
+              SpectrumUse use = SpectrumUse::reflectance) const;
   // <transform name=...>: its translate/rotate/scale/matrix/lookat children, each applied after
   // the previous ones (M = op * M); identity when absent.
   Mat4 get_transform(const std::string& name) const;

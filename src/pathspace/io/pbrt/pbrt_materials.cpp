@@ -9,6 +9,7 @@
 
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/named_spectra.h"
+#include "pathspace/io/spectrum/cie_tables.h"
 
 namespace pathspace::pbrt {
 
@@ -21,6 +22,40 @@ Rgb lookup_texture(const Param& p, const TextureTable& textures) {
   return it->second;
 }
 
+// A spectrum parameter as samples: inline pairs, an .spd file (relative to the file that names it,
+// then to the main file's folder, as other files are found), a CIE illuminant by name or a
+// blackbody temperature.
+SampledSpectrum sampled_spectrum_param(const Param& p, const TextureTable& textures) {
+  if (p.type == "blackbody") {
+    if (p.numbers.size() != 1) throw Error(p.loc, "blackbody parameter '" + p.name + "' needs one temperature (kelvin)");
+    return blackbody_spectrum(p.numbers[0], BlackbodyUnit::peak_normalised, p.loc);
+  }
+  if (p.strings.empty()) return spectrum_from_pairs(p.numbers, p.loc, "spectrum '" + p.name + "'");
+  if (p.strings.size() != 1) throw Error(p.loc, "spectrum '" + p.name + "' names more than one spectrum");
+  const std::string& name = p.strings[0];
+  if (name == "stdillum-D65" || name == "stdillum-A") {
+    SampledSpectrum s;
+    for (double nm = kCieFirstNm; nm <= kCieLastNm; nm += kCieStepNm) {
+      s.nm.push_back(nm);
+      // CIE illuminant A is defined by Planck's law at 2856 K (CIE 015's formula, c2 = 1.435e-2 m K).
+      s.value.push_back(name == "stdillum-D65" ? cie_at(nm).d65
+                                               : 100.0 * std::pow(560.0 / nm, 5) * std::expm1(1.435e7 / (2848.0 * 560.0)) /
+                                                     std::expm1(1.435e7 / (2848.0 * nm)));
+    }
+    return s;
+  }
+  std::filesystem::path path(name);
+  std::error_code ec;
+  if (path.is_relative()) {
+    const std::filesystem::path local = std::filesystem::path(p.loc.file).parent_path() / path;
+    path = std::filesystem::is_regular_file(local, ec) || textures.main_folder.empty() ? local
+                                                                                      : std::filesystem::path(textures.main_folder) / path;
+  }
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(p.loc, "unknown named spectrum or spectrum file '" + name + "' (looked for " + path.string() + ")");
+  return read_spd_file(path.string());
+}
+
 float alpha_from(const Statement& st, LoadWarnings* w) {
   double u = st.get_float("roughness", 0.0), v = u;
   u = st.get_float("uroughness", u);
@@ -31,20 +66,20 @@ float alpha_from(const Statement& st, LoadWarnings* w) {
   return float(remap ? std::sqrt(r) : r);
 }
 
-float eta_from(const Statement& st, LoadWarnings* w) {
+float eta_from(const Statement& st, const TextureTable& textures, LoadWarnings* w) {
   const Param* p = st.find("eta");
   if (!p) return 1.5f;
   if (p->type == "float" && p->numbers.size() == 1) return float(p->numbers[0]);
   if (p->type == "spectrum" && p->strings.size() == 1) {
     Rgb named;
     if (find_named_spectrum(p->strings[0], &named)) return named.g;
-    throw Error(p->loc, "unknown named spectrum '" + p->strings[0] + "' for eta");
   }
-  if (p->type == "spectrum" && p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {
-    double s = 0;
-    for (size_t i = 1; i < p->numbers.size(); i += 2) s += p->numbers[i];
-    w->add(p->loc, "dispersive eta approximated by its mean value");
-    return float(s / double(p->numbers.size() / 2));
+  if (p->type == "spectrum") {
+    // A dispersive index becomes one: its y-bar weighted mean (the luminance of the unbounded
+    // conversion), which is close to the index at 555 nm.
+    const SampledSpectrum s = sampled_spectrum_param(*p, textures);
+    w->add(p->loc, "dispersive eta approximated by one index, its y-bar weighted mean");
+    return float(y_bar_weighted_mean(s));
   }
   throw Error(p->loc, "parameter 'eta' must be a float or a spectrum");
 }
@@ -52,7 +87,7 @@ float eta_from(const Statement& st, LoadWarnings* w) {
 }  // namespace
 
 Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
-                   LoadWarnings* w) {
+                   LoadWarnings* w, SpectrumUse use) {
   const Param* p = st.find(name);
   if (!p) return fallback;
   if (p->type == "rgb" || p->type == "color") {
@@ -64,22 +99,12 @@ Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fall
   if (p->type == "spectrum" && p->strings.size() == 1) {
     Rgb named;
     if (find_named_spectrum(p->strings[0], &named)) return named;
-    if (p->strings[0].rfind("stdillum-", 0) == 0) {
+    if (p->strings[0].rfind("stdillum-", 0) == 0 && p->strings[0] != "stdillum-D65" && p->strings[0] != "stdillum-A") {
       w->add(p->loc, "illuminant spectrum '" + p->strings[0] + "' taken as white (1, 1, 1)");
       return Rgb(1.f);
     }
-    throw Error(p->loc, "unknown named spectrum or spectrum file '" + p->strings[0] + "'");
   }
-  if (p->type == "spectrum" && p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {
-    double s = 0;
-    for (size_t i = 1; i < p->numbers.size(); i += 2) s += p->numbers[i];
-    w->add(p->loc, "sampled spectrum '" + name + "' approximated by its mean value (grey)");
-    return Rgb(float(s / double(p->numbers.size() / 2)));
-  }
-  if (p->type == "blackbody") {
-    w->add(p->loc, "blackbody spectrum '" + name + "' not supported; taken as white (1, 1, 1)");
-    return Rgb(1.f);
-  }
+  if (p->type == "spectrum" || p->type == "blackbody") return spectrum_to_rgb(sampled_spectrum_param(*p, textures), use);
   throw Error(p->loc, "parameter '" + name + "' has an unsupported type '" + p->type + "'");
 }
 
@@ -226,8 +251,8 @@ Material make_material(const std::string& type, const Statement& st, const Textu
     m.diffuse = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
   } else if (type == "conductor" || type == "coatedconductor") {
     const std::string prefix = type == "coatedconductor" ? "conductor." : "";
-    Rgb eta = spectrum_param(st, prefix + "eta", Rgb(0.200438f, 0.924033f, 1.102212f), tex, w);
-    Rgb k = spectrum_param(st, prefix + "k", Rgb(3.912949f, 2.452848f, 2.142188f), tex, w);
+    Rgb eta = spectrum_param(st, prefix + "eta", Rgb(0.200438f, 0.924033f, 1.102212f), tex, w, SpectrumUse::unbounded);
+    Rgb k = spectrum_param(st, prefix + "k", Rgb(3.912949f, 2.452848f, 2.142188f), tex, w, SpectrumUse::unbounded);
     if (st.find("reflectance")) {  // pbrt: eta = 1, k = 2 sqrt(r) / sqrt(1 - r)
       const Rgb r = spectrum_param(st, "reflectance", Rgb(), tex, w);
       eta = Rgb(1.f);
@@ -248,7 +273,7 @@ Material make_material(const std::string& type, const Statement& st, const Textu
     m = make_rough_conductor(alpha, eta, k);
     m.two_sided = true;
   } else if (type == "dielectric" || type == "thindielectric") {
-    const float eta = eta_from(st, w);
+    const float eta = eta_from(st, tex, w);
     const float alpha = type == "dielectric" ? alpha_from(st, w) : 0.f;
     if (type == "thindielectric") w->add(st.loc, "thindielectric approximated by a smooth dielectric slab surface");
     m = alpha < 1e-3f ? make_glass(eta) : make_rough_dielectric(alpha, eta);
@@ -257,7 +282,7 @@ Material make_material(const std::string& type, const Statement& st, const Textu
     // or mirror (smooth) lobe over a Lambert base scaled by 1 - F0; Phong exponent 2/alpha^2 - 2
     // (Walter et al. 2007's Beckmann-Phong correspondence). Coat absorption and interreflection dropped.
     const Rgb base = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
-    const float eta = eta_from(st, w);
+    const float eta = eta_from(st, tex, w);
     const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
     const float alpha = alpha_from(st, w);
     m.diffuse = base * (1.f - f0);

@@ -1,7 +1,8 @@
 // pbrt-v4 materials, textures and spectra mapped onto pathspace's materials (materials/material.h).
 // diffuse, conductor and dielectric map directly; coateddiffuse and a few others are approximated,
 // always with a warning that says how. Spectra become linear sRGB: RGB values directly, named metal
-// and glass spectra through a small table of RGB fits. Spectrum imagemap textures (and constant
+// and glass spectra through a small table of RGB fits, sampled spectra and blackbodies through the
+// CIE 1931 observer (io/spectrum/spectrum_to_rgb.h). Spectrum imagemap textures (and constant
 // scales of them) bind real image textures to reflectances; elsewhere they stand in by their mean.
 #pragma once
 
@@ -10,6 +11,7 @@
 
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/pbrt/pbrt_statement.h"
+#include "pathspace/io/spectrum/spectrum_to_rgb.h"
 #include "pathspace/io/texture_file.h"
 #include "pathspace/materials/material.h"
 
@@ -29,6 +31,7 @@ struct TextureTable {
   std::map<std::string, ImageTextureRef> images;
   Scene* scene = nullptr;
   TextureFiles files;
+  std::string main_folder;  // where .spd files are looked for when not beside the file naming them
 };
 
 // Evaluates a Texture statement (imagemap files are resolved against `folder`; a missing file is an
@@ -44,7 +47,9 @@ Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& f
                       LoadWarnings* warnings, int32_t* texture);
 
 // A spectrum-valued parameter (rgb, spectrum, blackbody or texture) as linear sRGB; `fallback` when absent.
+// RGB values pass as given; spectra (inline pairs, .spd files, CIE illuminants, blackbodies) are
+// converted as `use` says (spectrum_to_rgb.h). Named metal and glass spectra come from named_spectra.h.
 Rgb spectrum_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
-                   LoadWarnings* warnings);
+                   LoadWarnings* warnings, SpectrumUse use = SpectrumUse::reflectance);
 
 }  // namespace pathspace::pbrt

@@ -41,6 +41,7 @@ class Builder {
   Builder(const SceneLoadOptions& o, LoadWarnings* w, std::string main_folder)
       : options_(o), warnings_(w), main_folder_(std::move(main_folder)) {
     textures_.scene = &scene_;  // image textures are read into the scene
+    textures_.main_folder = main_folder_;
   }
 
   void handle(const Statement& st) {
@@ -189,7 +190,8 @@ class Builder {
     } else if (d == "AreaLightSource") {
       if (st.strings[0] != "diffuse") throw Error(st.loc, "AreaLightSource \"" + st.strings[0] + "\" is not supported (only \"diffuse\")");
       gs_.area_light = true;
-      gs_.area_radiance = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * float(st.get_float("scale", 1.0));
+      gs_.area_radiance =
+          spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * float(st.get_float("scale", 1.0));
       gs_.area_two_sided = st.get_bool("twosided", false);
     } else if (d == "Shape") {
       shape(st);
@@ -289,13 +291,13 @@ class Builder {
     const std::string& type = st.strings[0];
     const float scale = float(st.get_float("scale", 1.0));
     if (type == "point") {
-      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_) * scale;
+      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
       const std::vector<double> from = st.get_numbers("from");
       scene_.add_point_light(gs_.ctm.point(from.size() == 3 ? vec_at(from, 0) : Vec3()), i);
     } else if (type == "spot") {
       // pbrt-v4: the cone around from -> to; full intensity inside coneangle - conedelta, smoothstep
       // falloff (in the cosine) out to coneangle.
-      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_) * scale;
+      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
       const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
       const Vec3 f = from.size() == 3 ? vec_at(from, 0) : Vec3(), t = to.size() == 3 ? vec_at(to, 0) : Vec3(0, 0, 1);
       const Vec3 axis = gs_.ctm.vector(t - f);
@@ -306,7 +308,7 @@ class Builder {
       const float cos_falloff = float(std::cos(std::max(0.0, cone - delta) * M_PI / 180.0));
       scene_.add_spot_light(gs_.ctm.point(f), axis, i, cos_total, cos_falloff);
     } else if (type == "distant") {
-      const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale;
+      const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
       const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
       const Vec3 f = from.size() == 3 ? vec_at(from, 0) : Vec3(), t = to.size() == 3 ? vec_at(to, 0) : Vec3(0, 0, 1);
       const Vec3 dir = gs_.ctm.vector(t - f);
@@ -322,7 +324,7 @@ class Builder {
         image_environment(st, *f, scale);
         return;
       }
-      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_) * scale, st.loc);
+      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale, st.loc);
     } else {
       warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
       mark_all(st);
