@@ -257,6 +257,23 @@ TEST(ImageIo, TruncatedFilesThrow) {
   expect_read_error(dir.file("missing.exr"), "cannot open");
 }
 
+// A PNG chunk that declares more bytes than the file holds is an error before stb sees it: stb
+// would first grow its buffer to the declared length (1.4 GB here; found by the image fuzzer).
+TEST(ImageIo, PngChunkLongerThanTheFileIsAnError) {
+  TempDir dir;
+  write_image(dir.file("t.png"), test_image(40, 30));
+  std::string bytes = read_bytes(dir.file("t.png"));
+  const size_t idat = bytes.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  bytes.replace(idat - 4, 4, "\x52\x72\x8d\x0d");
+  try {
+    decode_image("t.png", bytes);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("declares 1383238925 bytes, more than the file holds"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ImageIo, RefusesEmptyImagesAndMissingDirectories) {
   TempDir dir;
   EXPECT_THROW(write_image(dir.file("e.exr"), Image()), Error);

@@ -285,6 +285,23 @@ Image image_from_channels(const T* px, int w, int h, int n, F to_linear) {
   return image;
 }
 
+// stb_image grows its buffer to each IDAT chunk's declared length before it reads the chunk, so a
+// PNG of a few hundred bytes that declares a 1.4 GB chunk allocates 2 GB (found by the image
+// fuzzer). Every chunk of a real PNG lies inside the file, so one that does not is an error first.
+void check_png_chunk_lengths(const std::string& path, const std::string& bytes) {
+  static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) return;
+  size_t at = 8;
+  while (bytes.size() - at >= 8) {
+    const auto* b = reinterpret_cast<const unsigned char*>(bytes.data() + at);
+    const uint64_t length = uint64_t(b[0]) << 24 | uint64_t(b[1]) << 16 | uint64_t(b[2]) << 8 | uint64_t(b[3]);
+    if (length + 12 > bytes.size() - at)
+      fail(path, fmt::format("PNG chunk at byte {} declares {} bytes, more than the file holds", at, length));
+    if (std::memcmp(b + 4, "IEND", 4) == 0) return;
+    at += size_t(length) + 12;
+  }
+}
+
 // Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
 // unless the caller says they hold linear data (v / max).
 // (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
@@ -292,6 +309,7 @@ Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding 
   if (bytes.size() > size_t(INT_MAX)) fail(path, "file too large");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int len = int(bytes.size());
+  check_png_chunk_lengths(path, bytes);
   int w = 0, h = 0, n = 0;
   if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
   auto check = [&](const void* px) {
