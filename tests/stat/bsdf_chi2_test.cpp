@@ -2,7 +2,8 @@
 // directions against bsdf_pdf for every material at several incident directions (grazing and,
 // for the rough dielectric, from inside), and for every sample: weight == f |cos| / pdf,
 // bsdf_pdf(sampled wi) == returned pdf, consistent lobe flags and eta. Delta lobes are checked by
-// their discrete probabilities (extra chi-square cells) and exact directions. Also reciprocity,
+// their discrete probabilities (extra chi-square cells) and exact directions; the layered BSDFs'
+// exact mixture density (materials/layered_bsdf.h) likewise. Also reciprocity,
 // the adjoint relation of transmission, and the albedo of a white rough conductor.
 // Significance: alpha = 0.01 for the file, Sidak-corrected over its kChi2Tests chi-square tests
 // (each incident direction of each material is one test).
@@ -18,7 +19,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kChi2Tests = 66;
+constexpr int kChi2Tests = 79;
 const double kAlpha = testing::sidak(0.01, kChi2Tests);
 constexpr float kRelTolerance = 1e-3f;
 
@@ -189,6 +190,41 @@ TEST(BsdfChi2, SmoothGlass) {
     const float f = fresnel_dielectric(wo.z, 1.5f);
     check_sampling("smooth_glass", m, wo, {f, 1.f - f}, TransportMode::radiance, 200000);
   }
+}
+
+// Layered BSDFs: the sampled directions follow pdf (an exact mixture density) for smooth and rough
+// coats over Lambert and conductor bases; a smooth coat's mirror is a discrete cell.
+Material coated(MaterialType type, float alpha, float base_alpha) {
+  Material m;
+  m.type = type;
+  m.two_sided = true;
+  m.ior = 1.5f;
+  m.alpha = alpha;
+  m.base_alpha = base_alpha;
+  m.diffuse = Rgb(0.7f, 0.5f, 0.3f);
+  m.eta = Rgb(0.2f, 0.6f, 1.1f);
+  m.k = Rgb(3.f, 2.5f, 2.f);
+  m.thickness = 0.1f;
+  return m;
+}
+
+void check_layered(const std::string& name, const Material& m, float c) {
+  Vec3 wo = incident(c);
+  Vec3 up = wo;
+  if (up.z < 0.f) up.z = -up.z;  // two-sided: the proposal of the mirrored wo
+  const float mirror = layered::proposal(m, up).mirror;
+  check_sampling(name, m, wo, mirror > 0.f ? std::vector<double>{mirror} : std::vector<double>{}, TransportMode::radiance, 400000);
+}
+
+TEST(BsdfChi2, Layered) {  // 13 tests (a smooth coat over a smooth conductor is a pure mirror: stat/layered_bsdf_test.cpp)
+  for (const float alpha : {0.f, 0.1f, 0.5f})
+    for (const float c : {0.8f, 0.2f}) check_layered("coated_diffuse_" + std::to_string(alpha), coated(MaterialType::coated_diffuse, alpha, 0.f), c);
+  const float cases[][2] = {{0.f, 0.2f}, {0.2f, 0.2f}, {0.3f, 0.f}};
+  for (const auto& ab : cases)
+    for (const float c : {0.8f, 0.2f})
+      check_layered("coated_conductor_" + std::to_string(ab[0]) + "_" + std::to_string(ab[1]),
+                    coated(MaterialType::coated_conductor, ab[0], ab[1]), c);
+  check_layered("coated_diffuse_from_below", coated(MaterialType::coated_diffuse, 0.1f, 0.f), -0.6f);
 }
 
 // Weights of the delta lobes (the chi-square only sees their probabilities).

@@ -35,6 +35,7 @@
 #include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/materials/bsdf_sample.h"
 #include "pathspace/materials/fresnel.h"
+#include "pathspace/materials/layered_bsdf.h"
 #include "pathspace/materials/material.h"
 #include "pathspace/materials/microfacet.h"
 #include "pathspace/materials/microfacet_beckmann.h"

@@ -3,6 +3,7 @@
 // Two-sided materials are evaluated in the frame mirrored to wo's side.
 #pragma once
 
+#include "pathspace/materials/layered_bsdf.h"
 #include "pathspace/materials/rough_conductor.h"
 #include "pathspace/materials/rough_dielectric.h"
 #include "pathspace/materials/standard_material.h"
@@ -13,7 +14,11 @@ namespace detail {
 // Whether the material is evaluated mirrored to wo's side when wo is below the surface: two-sided
 // ones, but for dielectrics, whose two sides are the two media.
 PS_INLINE bool mirrors_to_wo_side(const Material& m) {
-  return m.two_sided && m.type != MaterialType::rough_dielectric && !(m.ior > 0.f);
+  switch (m.type) {
+    case MaterialType::standard: return m.two_sided && !(m.ior > 0.f);
+    case MaterialType::rough_dielectric: return false;
+    default: return m.two_sided;
+  }
 }
 PS_INLINE bool flip_for_two_sided(const Material& m, Vec3* wo, Vec3* wi) {
   if (!mirrors_to_wo_side(m) || wo->z >= 0.f) return false;
@@ -29,6 +34,8 @@ PS_INLINE Rgb bsdf_eval(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode)
     case MaterialType::standard: return standard::eval(m, wo, wi);
     case MaterialType::rough_conductor: return rough_conductor::eval(m, wo, wi, mode);
     case MaterialType::rough_dielectric: return rough_dielectric::eval(m, wo, wi, mode);
+    case MaterialType::coated_diffuse:
+    case MaterialType::coated_conductor: return layered::eval(m, wo, wi, mode);
   }
   return {};
 }
@@ -39,6 +46,8 @@ PS_INLINE float bsdf_pdf(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode
     case MaterialType::standard: return standard::pdf(m, wo, wi);
     case MaterialType::rough_conductor: return rough_conductor::pdf(m, wo, wi, mode);
     case MaterialType::rough_dielectric: return rough_dielectric::pdf(m, wo, wi, mode);
+    case MaterialType::coated_diffuse:
+    case MaterialType::coated_conductor: return layered::pdf(m, wo, wi);
   }
   return 0.f;
 }
@@ -51,6 +60,8 @@ PS_INLINE bool bsdf_sample(const Material& m, Vec3 wo, float u_lobe, Point2 u, T
     case MaterialType::standard: ok = standard::sample(m, wo, u_lobe, u, mode, s); break;
     case MaterialType::rough_conductor: ok = rough_conductor::sample(m, wo, u_lobe, u, mode, s); break;
     case MaterialType::rough_dielectric: ok = rough_dielectric::sample(m, wo, u_lobe, u, mode, s); break;
+    case MaterialType::coated_diffuse:
+    case MaterialType::coated_conductor: ok = layered::sample(m, wo, u_lobe, u, mode, s); break;
   }
   if (ok && flipped) s->wi.z = -s->wi.z;
   return ok;
@@ -58,7 +69,12 @@ PS_INLINE bool bsdf_sample(const Material& m, Vec3 wo, float u_lobe, Point2 u, T
 
 // True when the material has a lobe that eval/pdf can see (NEE and MIS are worthwhile).
 PS_INLINE bool bsdf_has_non_delta(const Material& m) {
-  return m.type != MaterialType::standard || standard::has_non_delta(m);
+  switch (m.type) {
+    case MaterialType::standard: return standard::has_non_delta(m);
+    case MaterialType::coated_diffuse:
+    case MaterialType::coated_conductor: return layered::has_non_delta(m);
+    default: return true;
+  }
 }
 
 }  // namespace pathspace

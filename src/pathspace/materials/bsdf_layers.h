@@ -43,7 +43,9 @@ PS_INLINE BsdfLayers bsdf_layers(const Material& m) {
       l.roughness[0] = m.alpha;
       l.count = 1;
       return l;
-    case MaterialType::rough_dielectric: return l;
+    case MaterialType::rough_dielectric:
+    case MaterialType::coated_diffuse:  // the random walk's estimate is not a sum of demodulable layers
+    case MaterialType::coated_conductor: return l;
   }
   return l;
 }

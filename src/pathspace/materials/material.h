@@ -13,6 +13,8 @@ enum class MaterialType : uint8_t {
   standard,          // sum of Lambert diffuse + normalised Phong + one smooth specular lobe (mirror or glass)
   rough_conductor,   // microfacet metal (GGX or Beckmann), visible-normal sampling
   rough_dielectric,  // microfacet glass (Walter et al. 2007; GGX or Beckmann), visible-normal sampling
+  coated_diffuse,    // dielectric coat over a Lambertian base (materials/layered_bsdf.h; pbrt-v4 coateddiffuse)
+  coated_conductor,  // dielectric coat over a conductor (materials/layered_bsdf.h; pbrt-v4 coatedconductor)
 };
 
 enum class TransportMode : uint8_t { radiance, importance };
@@ -40,6 +42,18 @@ struct Material {
   Rgb eta{1.f, 1.f, 1.f};  // conductor: real part of the complex IOR (per channel)
   Rgb k;                   // conductor: imaginary part
   // rough_dielectric uses `ior` (inside / outside) and `specular` as the tint.
+
+  // coated_diffuse / coated_conductor: a coat of index `ior` and roughness `alpha` (< 1e-3: smooth)
+  // over the base, `diffuse` (Lambert) or a conductor of `eta`, `k` (relative to the coat) and
+  // roughness `base_alpha`; between them a slab `thickness` mean free paths deep that scatters with
+  // albedo `medium_albedo` (black: it only absorbs) and Henyey-Greenstein `g`. eval runs `n_samples`
+  // random walks of at most `max_depth` events.
+  float base_alpha = 0.f;
+  float thickness = 0.01f;
+  Rgb medium_albedo;
+  float g = 0.f;
+  uint16_t max_depth = 10;
+  uint16_t n_samples = 1;
 
   // Image textures (indices into SceneView::textures, -1 = none) multiply diffuse, glossy and
   // specular at the hit's uv; scene/shading_material.h applies them, once per hit.

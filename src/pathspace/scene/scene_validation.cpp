@@ -72,6 +72,15 @@ void check_material(const Material& m, size_t i, const FileLoc* at, std::vector<
   check_non_negative(m.k, name + ": conductor k", at);
   if (m.type == MaterialType::rough_dielectric && !(m.ior > 0.f))
     fail(at, fmt::format("{}: a rough dielectric needs an index of refraction > 0, not {:g}", name, m.ior));
+  if (m.type == MaterialType::coated_diffuse || m.type == MaterialType::coated_conductor) {
+    if (!(m.ior > 0.f)) fail(at, fmt::format("{}: a coat needs an index of refraction > 0, not {:g}", name, m.ior));
+    check_scalar(m.base_alpha, 0.f, name + ": base roughness", at);
+    check_scalar(m.thickness, 0.f, name + ": coat thickness", at);
+    check_non_negative(m.medium_albedo, name + ": coat albedo", at);
+    if (max_component(m.medium_albedo) > 1.f) fail(at, name + ": coat albedo above 1");
+    if (!(m.g > -1.f && m.g < 1.f)) fail(at, fmt::format("{}: coat g must lie in (-1, 1), not {:g}", name, m.g));
+    if (m.max_depth < 1 || m.n_samples < 1) fail(at, name + ": coat max_depth and n_samples must be at least 1");
+  }
   if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f) gains->push_back(name);
 }
 

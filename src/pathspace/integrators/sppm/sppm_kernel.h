@@ -58,6 +58,8 @@ PS_INLINE bool stores_visible_point(const Material& m, float glossy_roughness) {
       return !is_black(m.diffuse) || phong_roughness(m.exponent) >= glossy_roughness;
     case MaterialType::rough_conductor:
     case MaterialType::rough_dielectric: return m.alpha >= glossy_roughness;
+    case MaterialType::coated_diffuse: return true;
+    case MaterialType::coated_conductor: return fmaxf(m.alpha, m.base_alpha) >= glossy_roughness;
   }
   return true;
 }
@@ -65,6 +67,10 @@ PS_INLINE bool stores_visible_point(const Material& m, float glossy_roughness) {
 // Probability that bsdf_sample picks a non-delta lobe for wo (the complement continues through a
 // delta lobe): a mixed vertex chooses stochastically between gathering and going on.
 PS_INLINE float non_delta_probability(const Material& m, Vec3 wo) {
+  if (m.type == MaterialType::coated_diffuse || m.type == MaterialType::coated_conductor) {
+    detail::flip_for_two_sided(m, &wo, nullptr);
+    return 1.f - layered::proposal(m, wo).mirror;
+  }
   if (m.type != MaterialType::standard) return 1.f;
   detail::flip_for_two_sided(m, &wo, nullptr);
   const standard::LobeProbabilities p = standard::lobe_probabilities(m, wo);

@@ -8,6 +8,7 @@
 
 #include "pathspace/io/mitsuba/mitsuba_object.h"
 #include "pathspace/io/named_spectra.h"
+#include "pathspace/materials/fresnel.h"
 
 namespace pathspace::mitsuba {
 
@@ -81,24 +82,42 @@ Material dielectric(const Object& o, const std::string& folder, LoadWarnings* w)
   return m;
 }
 
-// Same approximation as the pbrt loader's coateddiffuse: Lambert base * (1 - F0) under a mirror
-// (plastic) or Phong (roughplastic, exponent 2/alpha^2 - 2 after Walter et al. 2007) coat of F0.
-Material plastic(const Object& o, const std::string& folder, TextureBinding* textures, LoadWarnings* w) {
-  const float eta = eta_of(o, 1.49f);  // Mitsuba's default int_ior is "polypropylene"
-  const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
-  const Rgb coat = o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) * f0;
-  const float alpha = o.type() == "roughplastic" ? alpha_of(o, w) : 0.f;
-  Material m;
-  m.diffuse = textured_rgb(o, "diffuse_reflectance", Rgb(0.5f), folder, textures, w, &m.diffuse_texture) * (1.f - f0);
-  if (alpha < 1e-3f) {
-    m.specular = coat;
-  } else {
-    m.glossy = coat;
-    m.exponent = std::max(1.f, 2.f / (alpha * alpha) - 2.f);
+// The cosine-weighted hemispherical average of the Fresnel reflectance seen from inside a medium of
+// relative index eta (Mitsuba's fresnel_diffuse_reflectance(1 / eta)), by the midpoint rule.
+float internal_diffuse_fresnel(float eta) {
+  constexpr int kSteps = 4096;
+  double sum = 0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double mu = (i + 0.5) / kSteps;
+    sum += double(fresnel_dielectric(-float(mu), eta)) * 2.0 * mu / kSteps;
   }
-  o.ignore({"nonlinear"});
-  w->add(o.loc(), o.type() + " approximated as Lambert (diffuse_reflectance * (1 - F0)) + " +
-                      std::string(alpha < 1e-3f ? "mirror" : "Phong") + " coat of reflectance F0 = " + std::to_string(f0));
+  return float(sum);
+}
+
+// Mitsuba's plastic and roughplastic: a dielectric coat over a Lambertian base with internal
+// reflections and no absorption, i.e. the layered BSDF with a slab of zero thickness. For a smooth
+// coat Mitsuba's "nonlinear" model, f = rho (1 - F_i)(1 - F_o) / (pi eta^2 (1 - rho Fdr)), is that
+// BSDF exactly; its default linear model divides by (1 - Fdr) instead, which equals the exact model
+// with the base albedo rho' = rho / (1 - Fdr (1 - rho)) (Fdr: internal_diffuse_fresnel).
+Material plastic(const Object& o, const std::string& folder, TextureBinding* textures, LoadWarnings* w) {
+  Material m;
+  m.type = MaterialType::coated_diffuse;
+  m.ior = eta_of(o, 1.49f);  // Mitsuba's default int_ior is "polypropylene"
+  m.alpha = o.type() == "roughplastic" ? alpha_of(o, w, &m.distribution) : 0.f;
+  m.thickness = 1e-6f;  // nothing absorbed between coat and base
+  m.max_depth = 64;     // the internal reflections' series converges long before
+  m.diffuse = textured_rgb(o, "diffuse_reflectance", Rgb(0.5f), folder, textures, w, &m.diffuse_texture);
+  if (!o.get_bool("nonlinear", false)) {
+    if (m.diffuse_texture >= 0)
+      w->add(o.loc(), o.title() + ": the linear model (nonlinear=false) with a textured diffuse_reflectance is approximated by the nonlinear one");
+    else {
+      const float fdr = internal_diffuse_fresnel(m.ior);
+      for (int c = 0; c < 3; ++c) m.diffuse[c] = m.diffuse[c] / (1.f - fdr * (1.f - m.diffuse[c]));
+    }
+  }
+  if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
+    w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
+  m.two_sided = false;
   return m;
 }
 

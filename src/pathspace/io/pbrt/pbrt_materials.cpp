@@ -66,8 +66,8 @@ float alpha_from(const Statement& st, LoadWarnings* w) {
   return float(remap ? std::sqrt(r) : r);
 }
 
-float eta_from(const Statement& st, const TextureTable& textures, LoadWarnings* w) {
-  const Param* p = st.find("eta");
+float eta_from(const Statement& st, const TextureTable& textures, LoadWarnings* w, const std::string& name = "eta") {
+  const Param* p = st.find(name);
   if (!p) return 1.5f;
   if (p->type == "float" && p->numbers.size() == 1) return float(p->numbers[0]);
   if (p->type == "spectrum" && p->strings.size() == 1) {
@@ -81,8 +81,11 @@ float eta_from(const Statement& st, const TextureTable& textures, LoadWarnings* 
     w->add(p->loc, "dispersive eta approximated by one index, its y-bar weighted mean");
     return float(y_bar_weighted_mean(s));
   }
-  throw Error(p->loc, "parameter 'eta' must be a float or a spectrum");
+  throw Error(p->loc, "parameter '" + name + "' must be a float or a spectrum");
 }
+
+// The slab of pbrt-v4's coated materials: thickness (mean free paths), albedo, g, maxdepth, nsamples.
+void read_coat_slab(const Statement& st, const TextureTable& textures, LoadWarnings* w, Material* m);
 
 }  // namespace
 
@@ -261,40 +264,40 @@ Material make_material(const std::string& type, const Statement& st, const Textu
         k[i] = 2.f * std::sqrt(ri) / std::sqrt(1.f - ri);
       }
     }
-    float alpha = alpha_from(st, w);
     if (type == "coatedconductor") {
-      Statement inner = st;  // conductor.roughness etc.
-      for (Param& p : inner.params)
+      // pbrt-v4: the conductor lies in the coat, so its eta and k are relative to the coat's index.
+      Statement conductor = st, coat = st;
+      for (Param& p : conductor.params)
         if (p.name.rfind("conductor.", 0) == 0) p.name = p.name.substr(10);
-      alpha = alpha_from(inner, w);
-      for (const Param& p : st.params) p.used = true;
-      w->add(st.loc, "coatedconductor approximated by its base conductor (the dielectric coat is dropped)");
+      for (Param& p : coat.params)
+        if (p.name.rfind("interface.", 0) == 0) p.name = p.name.substr(10);
+      m.type = MaterialType::coated_conductor;
+      m.ior = eta_from(st, tex, w, "interface.eta");
+      if (!(m.ior > 0.f)) m.ior = 1.f;  // pbrt: an index of 0 means 1
+      m.eta = eta * (1.f / m.ior);
+      m.k = k * (1.f / m.ior);
+      m.base_alpha = alpha_from(conductor, w);
+      m.alpha = alpha_from(coat, w);
+      m.distribution = MicrofacetDistribution::ggx;
+      read_coat_slab(st, tex, w, &m);
+      st.ignore({"interface.roughness", "interface.uroughness", "interface.vroughness", "conductor.roughness",
+                 "conductor.uroughness", "conductor.vroughness", "remaproughness"});
+      m.two_sided = true;
+    } else {
+      m = make_rough_conductor(alpha_from(st, w), eta, k);
+      m.two_sided = true;
     }
-    m = make_rough_conductor(alpha, eta, k);
-    m.two_sided = true;
   } else if (type == "dielectric" || type == "thindielectric") {
     const float eta = eta_from(st, tex, w);
     const float alpha = type == "dielectric" ? alpha_from(st, w) : 0.f;
     if (type == "thindielectric") w->add(st.loc, "thindielectric approximated by a smooth dielectric slab surface");
     m = alpha < 1e-3f ? make_glass(eta) : make_rough_dielectric(alpha, eta);
   } else if (type == "coateddiffuse") {
-    // Approximation: Fresnel reflectance at normal incidence F0 of the coat as a Phong (rough)
-    // or mirror (smooth) lobe over a Lambert base scaled by 1 - F0; Phong exponent 2/alpha^2 - 2
-    // (Walter et al. 2007's Beckmann-Phong correspondence). Coat absorption and interreflection dropped.
-    const Rgb base = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
-    const float eta = eta_from(st, tex, w);
-    const float f0 = ((eta - 1.f) / (eta + 1.f)) * ((eta - 1.f) / (eta + 1.f));
-    const float alpha = alpha_from(st, w);
-    m.diffuse = base * (1.f - f0);
-    if (alpha < 1e-3f) {
-      m.specular = Rgb(f0);
-    } else {
-      m.glossy = Rgb(f0);
-      m.exponent = std::max(1.f, 2.f / (alpha * alpha) - 2.f);
-    }
-    st.ignore({"thickness", "albedo", "g", "maxdepth", "nsamples"});
-    w->add(st.loc, "coateddiffuse approximated as Lambert (reflectance * (1 - F0)) + " +
-                       std::string(alpha < 1e-3f ? "mirror" : "Phong") + " coat lobe of reflectance F0 = " + std::to_string(f0));
+    m.type = MaterialType::coated_diffuse;
+    m.diffuse = reflectance_param(st, "reflectance", Rgb(0.5f), tex, w, &m.diffuse_texture);
+    m.ior = eta_from(st, tex, w);
+    m.alpha = alpha_from(st, w);
+    read_coat_slab(st, tex, w, &m);
   } else if (type == "diffusetransmission") {
     m.diffuse = reflectance_param(st, "reflectance", Rgb(0.25f), tex, w, &m.diffuse_texture);
     w->add(st.loc, "diffusetransmission approximated as diffuse reflection only (transmission dropped)");
@@ -306,5 +309,28 @@ Material make_material(const std::string& type, const Statement& st, const Textu
   }
   return m;
 }
+
+namespace {
+
+void read_coat_slab(const Statement& st, const TextureTable& textures, LoadWarnings* w, Material* m) {
+  const double thickness = st.get_float("thickness", 0.01);
+  if (!(thickness >= 0.0) || !std::isfinite(thickness)) throw Error(st.find("thickness")->loc, "thickness must be >= 0");
+  m->thickness = float(std::max(thickness, 1e-30));  // pbrt-v4: at least the smallest float
+  const double g = st.get_float("g", 0.0);
+  if (!(g > -1.0 && g < 1.0)) throw Error(st.find("g")->loc, "g (Henyey-Greenstein asymmetry) must lie in (-1, 1)");
+  m->g = float(g);
+  const Rgb albedo = spectrum_param(st, "albedo", Rgb(0.f), textures, w);
+  for (int c = 0; c < 3; ++c) m->medium_albedo[c] = std::clamp(albedo[c], 0.f, 1.f);  // pbrt-v4 clamps it too
+  const int max_depth = st.get_int("maxdepth", 10), n_samples = st.get_int("nsamples", 1);
+  if (max_depth < 1 || max_depth > 65535) throw Error(st.find("maxdepth")->loc, "maxdepth must lie in [1, 65535]");
+  if (n_samples < 1 || n_samples > 65535) throw Error(st.find("nsamples")->loc, "nsamples must lie in [1, 65535]");
+  m->max_depth = uint16_t(max_depth);
+  m->n_samples = uint16_t(n_samples);
+  if (m->type == MaterialType::coated_conductor && m->alpha < 1e-3f && m->base_alpha < 1e-3f && !is_black(m->medium_albedo))
+    w->add(st.loc, "coatedconductor: a smooth coat over a smooth conductor is a mirror here; the slab's scattering (albedo) is ignored");
+  st.ignore({"displacement"});
+}
+
+}  // namespace
 
 }  // namespace pathspace::pbrt
