@@ -274,6 +274,23 @@ TEST(ImageIo, PngChunkLongerThanTheFileIsAnError) {
   }
 }
 
+// A JPEG Huffman table whose 16 code counts sum to more than 256 is an error before stb sees it:
+// stb would write past its table (found by the image fuzzer).
+TEST(ImageIo, JpegHuffmanTableWithTooManyCodesIsAnError) {
+  std::string jpeg = "\xff\xd8\xff\xc4";
+  jpeg += std::string("\x00\x14", 2);           // segment length 20: one table
+  jpeg += std::string("\x00", 1);                // class 0, id 0
+  jpeg += std::string(15, '\0') + "\xff";       // 16 counts: 255 codes of length 16 ...
+  jpeg[jpeg.size() - 2] = '\x02';                // ... and 2 of length 15: 257
+  jpeg += std::string(257, '\x01') + "\xff\xd9";
+  try {
+    decode_image("t.jpg", jpeg);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("declares 257 codes (at most 256)"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ImageIo, RefusesEmptyImagesAndMissingDirectories) {
   TempDir dir;
   EXPECT_THROW(write_image(dir.file("e.exr"), Image()), Error);

@@ -302,6 +302,40 @@ void check_png_chunk_lengths(const std::string& path, const std::string& bytes) 
   }
 }
 
+// stb_image's JPEG reader fills a table of at most 256 Huffman codes from a DHT segment's 16 code
+// counts without checking that they sum to 256 or less, and writes past the table when they do not
+// (found by the image fuzzer, UBSan). Such a table is corrupt for any reader: an error first. The
+// walk follows the markers, skips entropy-coded data (stuffed 0xFF00 and restart markers) and reads
+// bytes past the end of the file as 0, as stb does.
+void check_jpeg_huffman_tables(const std::string& path, const std::string& bytes) {
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  const size_t n = bytes.size();
+  if (n < 2 || b[0] != 0xFF || b[1] != 0xD8) return;
+  size_t at = 2;
+  while (at < n) {
+    if (b[at] != 0xFF) {
+      ++at;
+      continue;
+    }
+    while (at < n && b[at] == 0xFF) ++at;  // fill bytes
+    if (at >= n) return;
+    const unsigned char marker = b[at++];
+    if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) continue;  // no length field
+    if (marker == 0xD9 || at + 2 > n) return;                                           // end of image
+    const size_t length = size_t(b[at]) << 8 | size_t(b[at + 1]);
+    const size_t end = std::min(n, at + std::max<size_t>(length, 2));
+    if (marker == 0xC4) {
+      for (size_t p = at + 2; p < end;) {
+        size_t codes = 0;
+        for (size_t i = p + 1; i < p + 17; ++i) codes += i < n ? b[i] : 0;
+        if (codes > 256) fail(path, fmt::format("JPEG Huffman table at byte {} declares {} codes (at most 256)", p, codes));
+        p += 17 + codes;
+      }
+    }
+    at = end;
+  }
+}
+
 // Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
 // unless the caller says they hold linear data (v / max).
 // (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
@@ -310,6 +344,7 @@ Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding 
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int len = int(bytes.size());
   check_png_chunk_lengths(path, bytes);
+  check_jpeg_huffman_tables(path, bytes);
   int w = 0, h = 0, n = 0;
   if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
   auto check = [&](const void* px) {
