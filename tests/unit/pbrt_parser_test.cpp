@@ -10,6 +10,7 @@
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/pbrt/pbrt_tokenizer.h"
+#include "pathspace/io/spectrum/white_balance.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -137,9 +138,11 @@ TEST(PbrtParser, FilmIsoAndExposureTimeScaleEveryEmitter) {
   for (size_t i = 0; i < plain.lights.size(); ++i)
     for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(scaled.lights[i].value[c], 2.f * plain.lights[i].value[c]) << "light " << i;
   std::vector<std::string> w;
-  scene_with("", "\"float whitebalance\" 5000 \"string sensor\" \"canon_eos_100d\"", &w);
-  EXPECT_TRUE(has_warning(w, "whitebalance ignored"));
+  const Scene balanced = scene_with("", "\"float whitebalance\" 5000 \"string sensor\" \"canon_eos_100d\"", &w);
+  EXPECT_EQ(balanced.output_color_matrix, white_balance_matrix(5000.0));
+  EXPECT_EQ(plain.output_color_matrix, white_balance_matrix(0.0));
   EXPECT_TRUE(has_warning(w, "treated as \"cie1931\""));
+  EXPECT_THROW(scene_with("", "\"float whitebalance\" 1000"), Error);
   EXPECT_THROW(scene_with("\"float shutteropen\" 1 \"float shutterclose\" 1", ""), Error);
   EXPECT_THROW(scene_with("", "\"float iso\" -100"), Error);
 }

@@ -470,3 +470,31 @@ TEST(SessionValidation, OutOfRangeScenesAreErrorsBeforeTheAccelIsBuilt) {
 
 }  // namespace
 }  // namespace pathspace
+
+namespace pathspace {
+namespace {
+
+// The scene's output colour matrix (pbrt-v4's film white balance) transforms the images a snapshot
+// hands out: the same render with and without it differ by exactly that matrix.
+TEST(SessionSnapshot, AppliesTheScenesOutputColorMatrix) {
+  Scene plain = make_builtin_scene("cornell-box", 8, 8);
+  Scene balanced = plain;
+  balanced.output_color_matrix = {1.1f, 0.1f, 0.f, 0.f, 0.9f, 0.f, 0.05f, 0.f, 1.2f};
+  const RenderConfig config = make_render_config("pt", PtSettings{}, 7);
+  RenderSession a(std::move(plain), config), b(std::move(balanced), config);
+  a.run(RunLimit::for_passes(2));
+  b.run(RunLimit::for_passes(2));
+  const RenderSnapshot sa = a.snapshot(), sb = b.snapshot();
+  ASSERT_EQ(sa.mean.size(), sb.mean.size());
+  for (size_t i = 0; i < sa.mean.size(); ++i) {
+    const Rgb& c = sa.mean.pixels[i];
+    const Rgb& v = sa.variance.pixels[i];
+    EXPECT_FLOAT_EQ(sb.mean.pixels[i].r, 1.1f * c.r + 0.1f * c.g);
+    EXPECT_FLOAT_EQ(sb.mean.pixels[i].g, 0.9f * c.g);
+    EXPECT_FLOAT_EQ(sb.mean.pixels[i].b, 0.05f * c.r + 1.2f * c.b);
+    EXPECT_FLOAT_EQ(sb.variance.pixels[i].r, 1.1f * 1.1f * v.r + 0.1f * 0.1f * v.g);
+  }
+}
+
+}  // namespace
+}  // namespace pathspace

@@ -11,6 +11,7 @@
 #include "pathspace/io/named_spectra.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/io/spectrum/spectrum_to_rgb.h"
+#include "pathspace/io/spectrum/white_balance.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -208,6 +209,26 @@ TEST(Spectrum, MitsubaScenesReadSpectra) {
   EXPECT_NEAR(bb.y, locus.y, 1e-3);
   const SampledSpectrum planck = blackbody_spectrum(5000, BlackbodyUnit::radiance_per_nm, {});
   EXPECT_NEAR(luminance(s.lights[0].value) / (1e-4 * y_bar_weighted_mean(planck)), 1.0, 1e-3);
+}
+
+// pbrt-v4's film white balance: CIE daylight's chromaticity, and the Bradford adaptation that takes
+// that white to D65's.
+TEST(WhiteBalance, DaylightChromaticityAndAdaptation) {
+  const std::array<double, 2> d65 = daylight_chromaticity(6504.0);
+  EXPECT_NEAR(d65[0], 0.31271, 2e-4);  // CIE 015's D65
+  EXPECT_NEAR(d65[1], 0.32902, 2e-4);
+  const std::array<float, 9> near_identity = white_balance_matrix(6504.0);
+  for (int i = 0; i < 9; ++i) EXPECT_NEAR(near_identity[i], i % 4 == 0 ? 1.f : 0.f, 2e-3f) << i;
+  for (const double t : {4000.0, 5000.0, 9000.0, 20000.0}) {
+    const std::array<double, 2> xy = daylight_chromaticity(t);
+    const Rgb white = xyz_to_linear_srgb(xy[0] / xy[1], 1.0, (1.0 - xy[0] - xy[1]) / xy[1]);
+    const std::array<float, 9> m = white_balance_matrix(t);
+    for (int row = 0; row < 3; ++row)
+      EXPECT_NEAR(m[3 * row] * white.r + m[3 * row + 1] * white.g + m[3 * row + 2] * white.b, 1.f, 1e-3f) << t << " K, row " << row;
+  }
+  const std::array<float, 9> none = white_balance_matrix(0.0);
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(none[i], i % 4 == 0 ? 1.f : 0.f);
+  EXPECT_THROW(white_balance_matrix(3000.0), Error);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // which derives bounds and the light-selection distribution. Kernels see only view().
 #pragma once
 
+#include <array>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -51,6 +53,10 @@ class Scene {
   float ray_epsilon = 1e-4f;
   int max_path_segments = 10;
   LightSelection light_selection = kDefaultLightSelection;
+  // A colour matrix (row-major, linear sRGB to linear sRGB) for the images a render hands out
+  // (RenderSession::snapshot): pbrt-v4's film white balance (io/spectrum/white_balance.h); identity
+  // unless a scene file asks for one.
+  std::array<float, 9> output_color_matrix{1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f};
   // When set, infinite lights use this bounding sphere instead of the geometry's.
   bool has_bounds_override = false;
   BoundingSphere bounds_override;

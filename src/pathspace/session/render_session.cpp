@@ -231,11 +231,30 @@ RenderStats RenderSession::stats() const {
   return stats_locked();
 }
 
+namespace {
+
+// The scene's output colour matrix on the mean image; the variance of each output channel is
+// estimated as sum_j m_ij^2 var_j, leaving out the channels' covariances, which the film does not
+// keep (only white-balanced scenes have a matrix, and only comparisons read the variance).
+void apply_output_color_matrix(const std::array<float, 9>& m, Image* mean, Image* variance) {
+  if (m == std::array<float, 9>{1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) return;
+  const auto transform = [](const std::array<float, 9>& a, const Rgb& c) {
+    return Rgb(a[0] * c.r + a[1] * c.g + a[2] * c.b, a[3] * c.r + a[4] * c.g + a[5] * c.b, a[6] * c.r + a[7] * c.g + a[8] * c.b);
+  };
+  std::array<float, 9> squared;
+  for (int i = 0; i < 9; ++i) squared[i] = m[i] * m[i];
+  for (Rgb& c : mean->pixels) c = transform(m, c);
+  for (Rgb& v : variance->pixels) v = transform(squared, v);
+}
+
+}  // namespace
+
 RenderSnapshot RenderSession::snapshot() const {
   const ReaderLock lock(*this);
   RenderSnapshot snap;
   snap.mean = film_.mean();
   snap.variance = film_.variance_of_mean();
+  apply_output_color_matrix(scene_->output_color_matrix, &snap.mean, &snap.variance);
   snap.stats = stats_locked();
   snap.aovs = integrator_->aovs();
   return snap;

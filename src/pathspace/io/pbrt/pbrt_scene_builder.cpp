@@ -13,6 +13,7 @@
 #include "pathspace/io/environment_file.h"
 #include "pathspace/io/pbrt/pbrt_environment.h"
 #include "pathspace/io/pbrt/pbrt_materials.h"
+#include "pathspace/io/spectrum/white_balance.h"
 #include "pathspace/io/pbrt/pbrt_missing_files.h"
 #include "pathspace/io/pbrt/pbrt_tessellated_shapes.h"
 #include "pathspace/io/pbrt/pbrt_parser.h"
@@ -250,13 +251,20 @@ class Builder {
   }
 
   // pbrt-v4's RGB film with the default "cie1931" sensor scales the image by the imaging ratio
-  // exposure time x iso / 100 (PixelSensor). White balancing is not done.
+  // exposure time x iso / 100 (PixelSensor) and, with "whitebalance" T, adapts D_T's white to D65.
   void film_sensor(const Statement& st) {
     iso_ = float(st.get_float("iso", 100.0));
     if (!(iso_ > 0.f && std::isfinite(iso_))) throw Error(st.loc, "Film iso must be positive and finite");
     const std::string sensor = st.get_string("sensor", "cie1931");
     if (sensor != "cie1931") warn(st.find("sensor")->loc, "Film sensor \"" + sensor + "\" treated as \"cie1931\" (no sensor response curves)");
-    if (st.get_float("whitebalance", 0.0) != 0.0) warn(st.find("whitebalance")->loc, "Film whitebalance ignored: no white balancing is done");
+    const double kelvin = st.get_float("whitebalance", 0.0);
+    if (kelvin != 0.0) {
+      try {
+        scene_.output_color_matrix = white_balance_matrix(kelvin);
+      } catch (const Error& e) {
+        throw Error(st.find("whitebalance")->loc, e.what());
+      }
+    }
   }
 
   // The imaging ratio scales every emitter: the image is linear in emission, so this equals scaling
