@@ -310,8 +310,10 @@ void check_png_chunk_lengths(const std::string& path, const std::string& bytes) 
 void check_jpeg_huffman_tables(const std::string& path, const std::string& bytes) {
   const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
   const size_t n = bytes.size();
-  if (n < 2 || b[0] != 0xFF || b[1] != 0xD8) return;
-  size_t at = 2;
+  size_t at = 0;
+  while (at < n && b[at] == 0xFF) ++at;  // stb reads fill bytes before the start-of-image marker too
+  if (at == 0 || at >= n || b[at] != 0xD8) return;
+  ++at;
   while (at < n) {
     if (b[at] != 0xFF) {
       ++at;
