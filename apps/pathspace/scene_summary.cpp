@@ -33,8 +33,13 @@ const char* light_kind(LightType t) {
 // The material's kind as its lobes make it (a standard material may be diffuse, glossy, a mirror
 // or glass, or a sum of them).
 std::string material_kind(const Material& m) {
-  if (m.type == MaterialType::rough_conductor) return "rough conductor";
-  if (m.type == MaterialType::rough_dielectric) return "rough dielectric";
+  switch (m.type) {
+    case MaterialType::rough_conductor: return "rough conductor";
+    case MaterialType::rough_dielectric: return "rough dielectric";
+    case MaterialType::coated_diffuse: return "coated diffuse";
+    case MaterialType::coated_conductor: return "coated conductor";
+    case MaterialType::standard: break;
+  }
   std::vector<std::string> lobes;
   const auto non_zero = [](const Rgb& c) { return c.r > 0.f || c.g > 0.f || c.b > 0.f; };
   if (non_zero(m.diffuse) || m.diffuse_texture >= 0) lobes.push_back("diffuse");

@@ -35,6 +35,22 @@ TEST(InfoScene, CountsAndWarningsWithTheirLocation) {
   EXPECT_EQ(parsed["warnings"].size(), 1u);
 }
 
+// Layered materials count under their own kind, not under their base's lobes.
+TEST(InfoScene, CoatedMaterialsHaveTheirOwnKind) {
+  const testing::TempDir dir("info-coated");
+  const std::string file = (dir.path / "coated.pbrt").string();
+  std::ofstream(file) << "Camera \"perspective\"\nWorldBegin\nMaterial \"coateddiffuse\"\nShape \"sphere\"\n"
+                         "Material \"coatedconductor\"\nShape \"sphere\" \"float radius\" 0.5\n"
+                         "Material \"diffuse\"\nShape \"sphere\" \"float radius\" 0.25\n"
+                         "LightSource \"point\" \"rgb I\" [ 1 1 1 ]\n";
+  const testing::Run j = testing::run_pathspace("info --json '" + file + "'");
+  ASSERT_EQ(j.exit_code, 0) << j.out;
+  const nlohmann::json parsed = nlohmann::json::parse(j.out.substr(j.out.find('{')));
+  EXPECT_EQ(parsed["materials"]["coated diffuse"], 1) << j.out;
+  EXPECT_EQ(parsed["materials"]["coated conductor"], 1) << j.out;
+  EXPECT_EQ(parsed["materials"]["diffuse"], 1) << j.out;
+}
+
 TEST(InfoScene, BuiltInScenesByNameOrId) {
   const testing::Run r = testing::run_pathspace("info cornell-box");
   ASSERT_EQ(r.exit_code, 0) << r.out;
