@@ -53,6 +53,16 @@ PS_INLINE Material coat_material(const Material& m) {
 }
 PS_INLINE bool coat_smooth(const Material& m) { return m.alpha < kSmoothAlpha; }
 
+// The density coat_sample_* gives wi (0 for a smooth coat, whose events are deltas).
+PS_INLINE float coat_pdf(const Material& m, const Material& coat, const Vec3& wo, const Vec3& wi) {
+  if (coat_smooth(m)) return 0.f;
+  const rough_dielectric::HalfVector hv = rough_dielectric::half_vector(coat, wo, wi);
+  if (!hv.valid) return 0.f;
+  const float pdf_h = microfacet::visible_normal_pdf(wo, hv.h, microfacet::clamp_alpha(m.alpha), m.distribution);
+  if (hv.reflect) return pdf_h / (4.f * fabsf(dot(wo, hv.h)));
+  return pdf_h * fabsf(dot(wi, hv.h)) / rough_dielectric::transmission_denominator(wo, wi, hv);
+}
+
 // Transmission through the coat from wo's side, sampled alone (the walk's entry and exit).
 PS_INLINE bool coat_sample_transmission(const Material& m, const Material& coat, const Vec3& wo, Point2 u,
                                         TransportMode mode, Event* e) {
@@ -66,18 +76,11 @@ PS_INLINE bool coat_sample_transmission(const Material& m, const Material& coat,
     e->delta = true;
     return true;
   }
-  const float alpha = microfacet::clamp_alpha(m.alpha);
-  const Vec3 h = microfacet::sample_visible_normal(wo, alpha, m.distribution, u);
-  const float cos_o = dot(wo, h);
-  const float etap = cos_o > 0.f ? m.ior : 1.f / m.ior;
-  const float sin2_t = (1.f - cos_o * cos_o) / sqr(etap);
-  if (sin2_t >= 1.f) return false;
-  const Vec3 wi = -wo / etap + h * (cos_o / etap - copysignf(sqrtf(1.f - sin2_t), cos_o));
-  if (wi.z * wo.z >= 0.f) return false;
-  const rough_dielectric::HalfVector hv = rough_dielectric::half_vector(coat, wo, wi);
-  if (!hv.valid) return false;
-  e->pdf = microfacet::visible_normal_pdf(wo, hv.h, alpha, m.distribution) * fabsf(dot(wi, hv.h)) /
-           rough_dielectric::transmission_denominator(wo, wi, hv);
+  const Vec3 h = microfacet::sample_visible_normal(wo, microfacet::clamp_alpha(m.alpha), m.distribution, u);
+  Vec3 wi;
+  float etap;
+  if (!rough_dielectric::refract_about(wo, h, m.ior, &wi, &etap)) return false;
+  e->pdf = coat_pdf(m, coat, wo, wi);
   if (!(e->pdf > 0.f)) return false;
   e->wi = wi;
   e->weight = rough_dielectric::eval(coat, wo, wi, mode) * (fabsf(wi.z) / e->pdf);
@@ -107,16 +110,6 @@ PS_INLINE bool coat_sample_reflection(const Material& m, const Material& coat, c
   e->weight = rough_dielectric::eval(coat, wo, wi, mode) * (fabsf(wi.z) / e->pdf);
   e->delta = false;
   return true;
-}
-
-// The density coat_sample_* gives wi (0 for a smooth coat, whose events are deltas).
-PS_INLINE float coat_pdf(const Material& m, const Material& coat, const Vec3& wo, const Vec3& wi) {
-  if (coat_smooth(m)) return 0.f;
-  const rough_dielectric::HalfVector hv = rough_dielectric::half_vector(coat, wo, wi);
-  if (!hv.valid) return 0.f;
-  const float pdf_h = microfacet::visible_normal_pdf(wo, hv.h, microfacet::clamp_alpha(m.alpha), m.distribution);
-  if (hv.reflect) return pdf_h / (4.f * fabsf(dot(wo, hv.h)));
-  return pdf_h * fabsf(dot(wi, hv.h)) / rough_dielectric::transmission_denominator(wo, wi, hv);
 }
 
 PS_INLINE Rgb coat_eval(const Material& m, const Material& coat, const Vec3& wo, const Vec3& wi, TransportMode mode) {

@@ -51,6 +51,19 @@ PS_INLINE float transmission_denominator(const Vec3& wo, const Vec3& wi, const H
   return sqr(dot(wi, hv.h) + dot(wo, hv.h) / hv.etap);
 }
 
+// Refraction of wo about the microfacet normal h: wi = -wo / etap + (cos_o / etap - sign(cos_o) cos_t) h,
+// etap = n_wi_side / n_wo_side. False under total internal reflection (Fresnel 1 up to rounding) and
+// when wi does not cross the macro surface.
+PS_INLINE bool refract_about(const Vec3& wo, const Vec3& h, float ior, Vec3* wi, float* etap) {
+  const float cos_o = dot(wo, h);
+  *etap = cos_o > 0.f ? ior : 1.f / ior;
+  const float sin2_t = (1.f - cos_o * cos_o) / sqr(*etap);
+  if (sin2_t >= 1.f) return false;
+  const float cos_t = sqrtf(1.f - sin2_t);
+  *wi = -wo / *etap + h * (cos_o / *etap - copysignf(cos_t, cos_o));
+  return wi->z * wo.z < 0.f;
+}
+
 PS_INLINE Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi, TransportMode mode) {
   const HalfVector hv = half_vector(m, wo, wi);
   if (!hv.valid) return {};
@@ -88,13 +101,8 @@ PS_INLINE bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u,
     s->lobe = kLobeGlossy | kLobeReflection;
     s->eta = 1.f;
   } else {
-    // Refract about h: wi = -wo / etap + (cos_o / etap - sign(cos_o) cos_t) h.
-    const float etap = cos_o > 0.f ? m.ior : 1.f / m.ior;
-    const float sin2_t = (1.f - cos_o * cos_o) / sqr(etap);
-    if (sin2_t >= 1.f) return false;  // total internal reflection: fresnel == 1 up to rounding
-    const float cos_t = sqrtf(1.f - sin2_t);
-    wi = -wo / etap + h * (cos_o / etap - copysignf(cos_t, cos_o));
-    if (wi.z * wo.z >= 0.f) return false;
+    float etap;
+    if (!refract_about(wo, h, m.ior, &wi, &etap)) return false;
     s->lobe = kLobeGlossy | kLobeTransmission;
     s->eta = etap;
   }
