@@ -129,25 +129,13 @@ double mean_albedo(const Material& m, const Vec3& wo, int n, TransportMode mode 
   return sampled(m, wo, mode, n, rng).total / n;
 }
 
-// The cosine-weighted hemispherical average of the Fresnel reflectance from inside a medium of
-// index eta (midpoint rule in mu = cos theta; total internal reflection gives 1).
-double internal_fresnel_average(float eta) {
-  const int n = 1 << 20;
-  double s = 0;
-  for (int i = 0; i < n; ++i) {
-    const double mu = (i + 0.5) / n;
-    s += double(fresnel_dielectric(-float(mu), eta)) * 2.0 * mu / n;
-  }
-  return s;
-}
-
 TEST(LayeredBsdf, SmoothCoatOverLambertMatchesTheClosedFormAlbedo) {
   for (const float rho : {0.8f, 0.3f}) {
     Material m = coated(MaterialType::coated_diffuse);
     m.diffuse = Rgb(rho);
     m.thickness = 1e-6f;  // nothing absorbed on the way through the slab
     m.max_depth = 400;    // no truncation of the internal bounces
-    const double fi = internal_fresnel_average(m.ior);
+    const double fi = internal_diffuse_fresnel(m.ior, 1 << 20);
     for (const float c : {0.95f, 0.6f, 0.3f, 0.1f}) {
       const double f = fresnel_dielectric(c, m.ior);
       const double closed = f + (1 - f) * rho * (1 - fi) / (1 - rho * fi);

@@ -46,6 +46,18 @@ PS_INLINE Rgb fresnel_conductor(float cos_i, const Rgb& eta, const Rgb& k) {
           fresnel_conductor_channel(cos_i, eta.b, k.b)};
 }
 
+// The cosine-weighted hemispherical average of the Fresnel reflectance seen from inside a medium of
+// relative index eta, total internal reflection included (Mitsuba's fresnel_diffuse_reflectance(1 /
+// eta)), by the midpoint rule in mu = cos theta. Host code: scene loading and tests.
+inline double internal_diffuse_fresnel(float eta, int steps = 4096) {
+  double sum = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double mu = (i + 0.5) / steps;
+    sum += double(fresnel_dielectric(-float(mu), eta)) * 2.0 * mu / steps;
+  }
+  return sum;
+}
+
 // Refract wi (local, pointing away from the surface) through the interface with normal +z.
 // eta = n_inside / n_outside. Returns false on total internal reflection.
 PS_INLINE bool refract_local(const Vec3& wi, float eta, Vec3* wt) {

@@ -82,18 +82,6 @@ Material dielectric(const Object& o, const std::string& folder, LoadWarnings* w)
   return m;
 }
 
-// The cosine-weighted hemispherical average of the Fresnel reflectance seen from inside a medium of
-// relative index eta (Mitsuba's fresnel_diffuse_reflectance(1 / eta)), by the midpoint rule.
-float internal_diffuse_fresnel(float eta) {
-  constexpr int kSteps = 4096;
-  double sum = 0;
-  for (int i = 0; i < kSteps; ++i) {
-    const double mu = (i + 0.5) / kSteps;
-    sum += double(fresnel_dielectric(-float(mu), eta)) * 2.0 * mu / kSteps;
-  }
-  return float(sum);
-}
-
 // Mitsuba's plastic and roughplastic: a dielectric coat over a Lambertian base with internal
 // reflections and no absorption, i.e. the layered BSDF with a slab of zero thickness. For a smooth
 // coat Mitsuba's "nonlinear" model, f = rho (1 - F_i)(1 - F_o) / (pi eta^2 (1 - rho Fdr)), is that
@@ -111,7 +99,7 @@ Material plastic(const Object& o, const std::string& folder, TextureBinding* tex
     if (m.diffuse_texture >= 0)
       w->add(o.loc(), o.title() + ": the linear model (nonlinear=false) with a textured diffuse_reflectance is approximated by the nonlinear one");
     else {
-      const float fdr = internal_diffuse_fresnel(m.ior);
+      const float fdr = float(internal_diffuse_fresnel(m.ior));
       for (int c = 0; c < 3; ++c) m.diffuse[c] = m.diffuse[c] / (1.f - fdr * (1.f - m.diffuse[c]));
     }
   }

@@ -37,10 +37,7 @@ SampledSpectrum sampled_spectrum_param(const Param& p, const TextureTable& textu
     SampledSpectrum s;
     for (double nm = kCieFirstNm; nm <= kCieLastNm; nm += kCieStepNm) {
       s.nm.push_back(nm);
-      // CIE illuminant A is defined by Planck's law at 2856 K (CIE 015's formula, c2 = 1.435e-2 m K).
-      s.value.push_back(name == "stdillum-D65" ? cie_at(nm).d65
-                                               : 100.0 * std::pow(560.0 / nm, 5) * std::expm1(1.435e7 / (2848.0 * 560.0)) /
-                                                     std::expm1(1.435e7 / (2848.0 * nm)));
+      s.value.push_back(name == "stdillum-D65" ? cie_at(nm).d65 : cie_illuminant_a(nm));
     }
     return s;
   }
@@ -83,9 +80,6 @@ float eta_from(const Statement& st, const TextureTable& textures, LoadWarnings* 
   }
   throw Error(p->loc, "parameter '" + name + "' must be a float or a spectrum");
 }
-
-// The slab of pbrt-v4's coated materials: thickness (mean free paths), albedo, g, maxdepth, nsamples.
-void read_coat_slab(const Statement& st, const TextureTable& textures, LoadWarnings* w, Material* m);
 
 }  // namespace
 
@@ -245,6 +239,30 @@ void add_texture(const Statement& st, const std::string& folder, TextureTable* t
   textures->values[name] = value;
 }
 
+namespace {
+
+// The slab of pbrt-v4's coated materials: thickness (mean free paths), albedo, g, maxdepth, nsamples.
+void read_coat_slab(const Statement& st, const TextureTable& textures, LoadWarnings* w, Material* m) {
+  const double thickness = st.get_float("thickness", 0.01);
+  if (!(thickness >= 0.0) || !std::isfinite(thickness)) throw Error(st.find("thickness")->loc, "thickness must be >= 0");
+  m->thickness = float(std::max(thickness, 1e-30));  // pbrt-v4: at least the smallest float
+  const double g = st.get_float("g", 0.0);
+  if (!(g > -1.0 && g < 1.0)) throw Error(st.find("g")->loc, "g (Henyey-Greenstein asymmetry) must lie in (-1, 1)");
+  m->g = float(g);
+  const Rgb albedo = spectrum_param(st, "albedo", Rgb(0.f), textures, w);
+  for (int c = 0; c < 3; ++c) m->medium_albedo[c] = std::clamp(albedo[c], 0.f, 1.f);  // pbrt-v4 clamps it too
+  const int max_depth = st.get_int("maxdepth", 10), n_samples = st.get_int("nsamples", 1);
+  if (max_depth < 1 || max_depth > 65535) throw Error(st.find("maxdepth")->loc, "maxdepth must lie in [1, 65535]");
+  if (n_samples < 1 || n_samples > 65535) throw Error(st.find("nsamples")->loc, "nsamples must lie in [1, 65535]");
+  m->max_depth = uint16_t(max_depth);
+  m->n_samples = uint16_t(n_samples);
+  if (m->type == MaterialType::coated_conductor && m->alpha < 1e-3f && m->base_alpha < 1e-3f && !is_black(m->medium_albedo))
+    w->add(st.loc, "coatedconductor: a smooth coat over a smooth conductor is a mirror here; the slab's scattering (albedo) is ignored");
+  st.ignore({"displacement"});
+}
+
+}  // namespace
+
 Material make_material(const std::string& type, const Statement& st, const TextureTable& tex, LoadWarnings* w) {
   // pbrt's BSDFs are two-sided; pathspace's diffuse/Phong lobes are one-sided unless told.
   Material m;
@@ -309,28 +327,5 @@ Material make_material(const std::string& type, const Statement& st, const Textu
   }
   return m;
 }
-
-namespace {
-
-void read_coat_slab(const Statement& st, const TextureTable& textures, LoadWarnings* w, Material* m) {
-  const double thickness = st.get_float("thickness", 0.01);
-  if (!(thickness >= 0.0) || !std::isfinite(thickness)) throw Error(st.find("thickness")->loc, "thickness must be >= 0");
-  m->thickness = float(std::max(thickness, 1e-30));  // pbrt-v4: at least the smallest float
-  const double g = st.get_float("g", 0.0);
-  if (!(g > -1.0 && g < 1.0)) throw Error(st.find("g")->loc, "g (Henyey-Greenstein asymmetry) must lie in (-1, 1)");
-  m->g = float(g);
-  const Rgb albedo = spectrum_param(st, "albedo", Rgb(0.f), textures, w);
-  for (int c = 0; c < 3; ++c) m->medium_albedo[c] = std::clamp(albedo[c], 0.f, 1.f);  // pbrt-v4 clamps it too
-  const int max_depth = st.get_int("maxdepth", 10), n_samples = st.get_int("nsamples", 1);
-  if (max_depth < 1 || max_depth > 65535) throw Error(st.find("maxdepth")->loc, "maxdepth must lie in [1, 65535]");
-  if (n_samples < 1 || n_samples > 65535) throw Error(st.find("nsamples")->loc, "nsamples must lie in [1, 65535]");
-  m->max_depth = uint16_t(max_depth);
-  m->n_samples = uint16_t(n_samples);
-  if (m->type == MaterialType::coated_conductor && m->alpha < 1e-3f && m->base_alpha < 1e-3f && !is_black(m->medium_albedo))
-    w->add(st.loc, "coatedconductor: a smooth coat over a smooth conductor is a mirror here; the slab's scattering (albedo) is ignored");
-  st.ignore({"displacement"});
-}
-
-}  // namespace
 
 }  // namespace pathspace::pbrt

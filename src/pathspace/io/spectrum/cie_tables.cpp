@@ -128,4 +128,8 @@ CieSample cie_at(double nm) {
   return {mix(a.x, b.x), mix(a.y, b.y), mix(a.z, b.z), mix(a.d65, b.d65)};
 }
 
+double cie_illuminant_a(double nm) {
+  return 100.0 * std::pow(560.0 / nm, 5) * std::expm1(1.435e7 / (2848.0 * 560.0)) / std::expm1(1.435e7 / (2848.0 * nm));
+}
+
 }  // namespace pathspace

@@ -15,4 +15,9 @@ struct CieSample {
 };
 CieSample cie_at(double nm);
 
+// CIE standard illuminant A's relative power (100 at 560 nm), from its defining formula (CIE 015):
+// Planck's law at 2856 K, written with the second radiation constant of 1931 (1.435e-2 m K), which
+// puts 2848 K into the formula.
+double cie_illuminant_a(double nm);
+
 }  // namespace pathspace
