@@ -13,6 +13,7 @@
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene.h"
 #include "pathspace/scene/scene_validation.h"
+#include "pathspace/scene/surface_opacity.h"
 
 namespace pathspace::cli {
 
@@ -32,7 +33,7 @@ const char* light_kind(LightType t) {
 
 // The material's kind as its lobes make it (a standard material may be diffuse, glossy, a mirror
 // or glass, or a sum of them).
-std::string material_kind(const Material& m) {
+std::string base_material_kind(const Material& m) {
   switch (m.type) {
     case MaterialType::rough_conductor: return "rough conductor";
     case MaterialType::rough_dielectric: return "rough dielectric";
@@ -47,6 +48,9 @@ std::string material_kind(const Material& m) {
   if (non_zero(m.specular) || m.specular_texture >= 0) lobes.push_back(m.ior > 0.f ? "glass" : "mirror");
   return lobes.empty() ? "black" : fmt::format("{}", fmt::join(lobes, " + "));
 }
+
+// The kind, "with cutout" where the material has opacity (scene/surface_opacity.h).
+std::string material_kind(const Material& m) { return base_material_kind(m) + (has_cutout(m) ? " with cutout" : ""); }
 
 // `path`: the file, or the built-in scene's name when `builtin`.
 void print_summary(const std::string& path, bool builtin, const Scene& scene, const SceneFileSettings& settings,

@@ -171,6 +171,22 @@ TEST(BvhTracer, HitsAgreeWithEmbreeOnTheShippedScenes) {
   }
 }
 
+// Cutouts (scene/surface_opacity.h): both tracers skip the same triangles for the same rays. Every
+// material of the Cornell box gets opacity 0.6, the back wall's a texture of opacities.
+TEST(BvhTracer, CutoutsAgreeWithEmbree) {
+  Scene scene = make_builtin_scene("cornell-box", 64, 64);
+  ImageTexture t;
+  t.name = "opacity";
+  t.width = t.height = 4;
+  for (int i = 0; i < 16; ++i) t.texels.push_back(Rgb(float(i % 5) / 4.f));
+  const int32_t texture = int32_t(scene.add_texture(t));
+  for (Material& m : scene.materials) m.opacity = 0.6f;
+  scene.materials[scene.triangles[0].material].opacity_texture = texture;
+  scene.finalize();
+  ASSERT_TRUE(scene.view().has_cutouts);
+  expect_agreement(scene, "cornell-box with cutouts", 100000);
+}
+
 // Larger scenes (outside the repository, docs/testing.md): deeper trees with many spatial splits.
 TEST(BvhTracer, HitsAgreeWithEmbreeOnBitterliScenes) {
   for (const char* name : {"veach-bidir", "living-room"}) {

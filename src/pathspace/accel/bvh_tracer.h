@@ -8,6 +8,7 @@
 // from the plane equation, see intersect_triangle). Spheres:
 // geometry/shapes.h's intersect_sphere, as the Embree backend. Hits are filled by
 // accel/surface_hit_fill.h, like the Embree backend's, with Embree's interval (tmin, tmax).
+// Cutouts (scene/surface_opacity.h) are skipped in the triangle test.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "pathspace/geometry/ray.h"
 #include "pathspace/math/scalar.h"
 #include "pathspace/scene/scene_view.h"
+#include "pathspace/scene/surface_opacity.h"
 
 namespace pathspace {
 
@@ -106,8 +108,12 @@ PS_INLINE bool intersect_prim(const SceneView& scene, const RayPrep& r, uint32_t
   const uint32_t index = bvh_ref_index(ref);
   if (bvh_ref_kind(ref) == ShapeKind::triangle) {
     const Triangle& tri = scene.triangles[index];
-    return intersect_triangle(r, scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]], tmin,
-                              tmax, t, u, v);
+    if (!intersect_triangle(r, scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]], tmin,
+                            tmax, t, u, v))
+      return false;
+    // A cutout the ray passes through is no hit (scene/surface_opacity.h; Embree's filter does the same).
+    return !(scene.has_cutouts &&
+             ray_passes_cutout(scene.triangles, scene.materials, scene.uvs, scene.textures, index, *u, *v, r.o, r.d));
   }
   *u = *v = 0.f;
   return intersect_sphere(scene.spheres[index], r.o, r.d, tmin, tmax, t);

@@ -5,6 +5,9 @@
 // after a previous one, is built in two levels: the static part and the moving part are two
 // instanced Embree scenes, and the next frame's Accel reuses the static part when it is unchanged,
 // so a frame rebuilds only the moving part and the two-instance top level (docs/animation.md).
+// Cutouts (scene/surface_opacity.h) are tested in a context filter function, only in scenes that have
+// them: the filter reads the current frame's materials through the query's context, so a reused
+// static part needs no pointer into a frame that is gone.
 #include <embree3/rtcore.h>
 #include <fmt/core.h>
 
@@ -17,6 +20,7 @@
 #include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/base/error.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/scene/surface_opacity.h"
 
 namespace pathspace {
 
@@ -68,6 +72,37 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     float t;
     if (intersect_sphere(s, o, d, RTCRayN_tnear(ray, args->N, i), RTCRayN_tfar(ray, args->N, i), &t))
       RTCRayN_tfar(ray, args->N, i) = -kInfinity;  // Embree's "occluded" marker
+  }
+}
+
+// What the cutout filter reads of the frame being rendered.
+struct CutoutView {
+  const Triangle* triangles = nullptr;
+  const Material* materials = nullptr;
+  const Point2* uvs = nullptr;
+  const TextureView* textures = nullptr;
+  uint32_t moving_triangle_offset = 0;  // primIDs of instance 1 (the moving part) start here
+};
+
+// A query's context: Embree's own first, so the filter can find the rest from the pointer it gets.
+struct QueryContext {
+  RTCIntersectContext rtc;
+  const CutoutView* cutouts = nullptr;
+};
+
+// Rejects the candidate hits whose ray passes through a cutout; Embree then goes on traversing.
+void cutout_filter(const RTCFilterFunctionNArguments* args) {
+  const CutoutView& c = *reinterpret_cast<const QueryContext*>(args->context)->cutouts;
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] == 0 || RTCHitN_geomID(args->hit, n, i) != kTriangleGeometry) continue;
+    const bool moving = RTCHitN_instID(args->hit, n, i, 0) == 1;
+    const uint32_t prim = RTCHitN_primID(args->hit, n, i) + (moving ? c.moving_triangle_offset : 0);
+    const Vec3 o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
+    const Vec3 d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
+    if (ray_passes_cutout(c.triangles, c.materials, c.uvs, c.textures, prim, RTCHitN_u(args->hit, n, i),
+                          RTCHitN_v(args->hit, n, i), o, d))
+      args->valid[i] = 0;
   }
 }
 
@@ -147,9 +182,11 @@ uint64_t hash_bytes(const void* data, size_t bytes, uint64_t h) {
 
 // An Embree scene of triangles [tri_begin, tri_end) of `scene` (geomID 0; their primIDs count from
 // tri_begin) and `sphere_count` spheres (geomID 1). Empty geometries keep the ids fixed.
+// `cutouts`: queries call the context's filter function (cutout_filter).
 RTCScene build_part(RTCDevice device, const Scene& scene, uint32_t tri_begin, uint32_t tri_end, const Sphere* spheres,
-                    uint32_t sphere_count, RTCBuildQuality quality) {
+                    uint32_t sphere_count, RTCBuildQuality quality, bool cutouts) {
   RTCScene part = rtcNewScene(device);
+  if (cutouts) rtcSetSceneFlags(part, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(part, quality);
   RTCGeometry tri_geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Only the vertices the part's triangles use (a moving part is usually a short range at the end).
@@ -182,8 +219,8 @@ RTCScene build_part(RTCDevice device, const Scene& scene, uint32_t tri_begin, ui
 
 // The static part as Embree sees it: its triangles' vertex indices, the vertices they use, and the
 // spheres' centres and radii (field by field: padding bytes are not part of a value).
-uint64_t static_hash(const Scene& scene, uint32_t triangles, uint32_t spheres) {
-  uint64_t h = 0x243f6a8885a308d3ull;
+uint64_t static_hash(const Scene& scene, uint32_t triangles, uint32_t spheres, bool cutouts) {
+  uint64_t h = 0x243f6a8885a308d3ull ^ uint64_t(cutouts);  // the part's scene flags depend on it
   h = hash_bytes(scene.triangles.data(), triangles * sizeof(Triangle), h);  // no padding: five 32-bit fields
   const VertexRange range = vertex_range(scene, 0, triangles);
   if (range.count() > 0) h = hash_bytes(&scene.positions[range.first], range.count() * sizeof(Vec3), h);
@@ -215,6 +252,10 @@ struct Accel::Impl {
   // The scene's geometry as accel/surface_hit_fill.h reads it (positions, uvs, normals, triangles,
   // spheres, num_textures); the rest of the view is not set (Scene::view() needs a finalised scene).
   SceneView geometry;
+  // Set when the scene has cutouts (queries then install cutout_filter); its textures point here.
+  bool cutouts = false;
+  CutoutView cutout_view;
+  std::vector<TextureView> textures;
   std::shared_ptr<SharedDevice> device;
   RTCScene rtc_scene = nullptr;  // the whole scene, or the top level of the two parts
   // Two levels (moving parts): instance 0 is the static part, instance 1 the moving part, whose
@@ -235,10 +276,28 @@ struct Accel::Impl {
     fill_surface_hit(geometry, kind, prim, rh.ray.tfar, rh.hit.u, rh.hit.v, ray, hit);
     return true;
   }
+
+  // The context of one query: with the cutout filter when the scene has cutouts.
+  QueryContext context(RTCIntersectContextFlags flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT) const {
+    QueryContext ctx;
+    rtcInitIntersectContext(&ctx.rtc);
+    ctx.rtc.flags = flags;
+    if (cutouts) {
+      ctx.rtc.filter = cutout_filter;
+      ctx.cutouts = &cutout_view;
+    }
+    return ctx;
+  }
 };
 
 Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique<Impl>()) {
   impl_->geometry = geometry_view(scene);
+  const bool cutouts = scene.any_cutout_triangle();
+  impl_->cutouts = cutouts;
+  if (cutouts) {
+    for (const ImageTexture& t : scene.textures) impl_->textures.push_back(t.view());
+    impl_->cutout_view = {scene.triangles.data(), scene.materials.data(), impl_->geometry.uvs, impl_->textures.data(), 0};
+  }
   const uint32_t triangles = uint32_t(scene.triangles.size()), spheres = uint32_t(scene.spheres.size());
   // Frames of an animation (a previous frame given) are built in two levels even when nothing moves
   // (a camera moving through a still scene): their static part is then all of it, reused as it is.
@@ -248,11 +307,11 @@ Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique
   const RTCDevice device = impl_->device->device;
   if (!two_level) {
     // geomID 0: all triangles, 1: all spheres.
-    impl_->rtc_scene = build_part(device, scene, 0, triangles, scene.spheres.data(), spheres, RTC_BUILD_QUALITY_HIGH);
+    impl_->rtc_scene = build_part(device, scene, 0, triangles, scene.spheres.data(), spheres, RTC_BUILD_QUALITY_HIGH, cutouts);
   } else {
     const uint32_t static_triangles = std::min(scene.first_moving_triangle, triangles);
     const uint32_t static_spheres = std::min(scene.first_moving_sphere, spheres);
-    const uint64_t hash = static_hash(scene, static_triangles, static_spheres);
+    const uint64_t hash = static_hash(scene, static_triangles, static_spheres, cutouts);
     const std::shared_ptr<StaticPart>& old = before ? before->static_part : nullptr;
     if (old && old->triangles == static_triangles && old->spheres.size() == static_spheres && old->hash == hash) {
       impl_->static_part = old;  // unchanged: reused as it is
@@ -263,14 +322,17 @@ Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique
       part->spheres.assign(scene.spheres.begin(), scene.spheres.begin() + static_spheres);
       part->triangles = static_triangles;
       part->hash = hash;
-      part->scene = build_part(device, scene, 0, static_triangles, part->spheres.data(), static_spheres, RTC_BUILD_QUALITY_HIGH);
+      part->scene = build_part(device, scene, 0, static_triangles, part->spheres.data(), static_spheres, RTC_BUILD_QUALITY_HIGH,
+                               cutouts);
       impl_->static_part = std::move(part);
     }
     impl_->moving_triangle_offset = static_triangles;
+    impl_->cutout_view.moving_triangle_offset = static_triangles;
     impl_->moving_sphere_offset = static_spheres;
     RTCScene moving = build_part(device, scene, static_triangles, triangles, scene.spheres.data() + static_spheres,
-                                 spheres - static_spheres, RTC_BUILD_QUALITY_MEDIUM);
+                                 spheres - static_spheres, RTC_BUILD_QUALITY_MEDIUM, cutouts);
     impl_->rtc_scene = rtcNewScene(device);
+    if (cutouts) rtcSetSceneFlags(impl_->rtc_scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     const float identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};  // 3x4, column major
     for (const auto& [id, part] : {std::pair{0u, impl_->static_part->scene}, std::pair{1u, moving}}) {
       RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -293,55 +355,50 @@ bool Accel::reused_static_part() const { return impl_->reused; }
 
 namespace {
 // Embree's nearest-hit query of one ray (Accel::intersect fills a SurfaceHit from it).
-RTCRayHit nearest_hit(RTCScene scene, const Ray& ray) {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
+RTCRayHit nearest_hit(RTCScene scene, QueryContext ctx, const Ray& ray) {
   RTCRayHit rh;
   fill_ray(ray, &rh.ray);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &ctx, &rh);
+  rtcIntersect1(scene, &ctx.rtc, &rh);
   return rh;
 }
 }  // namespace
 
-bool Accel::intersect(const Ray& ray, SurfaceHit* hit) const { return impl_->fill_hit(ray, nearest_hit(impl_->rtc_scene, ray), hit); }
+bool Accel::intersect(const Ray& ray, SurfaceHit* hit) const {
+  return impl_->fill_hit(ray, nearest_hit(impl_->rtc_scene, impl_->context(), ray), hit);
+}
 
 bool Accel::occluded(const Ray& ray) const {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
+  QueryContext ctx = impl_->context();
   RTCRay r;
   fill_ray(ray, &r);
-  rtcOccluded1(impl_->rtc_scene, &ctx, &r);
+  rtcOccluded1(impl_->rtc_scene, &ctx.rtc, &r);
   return r.tfar < 0.f;
 }
 
 float Accel::hit_distance(const Ray& ray) const {
-  const RTCRayHit rh = nearest_hit(impl_->rtc_scene, ray);
+  const RTCRayHit rh = nearest_hit(impl_->rtc_scene, impl_->context(), ray);
   return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
 }
 
 void Accel::intersect_batch(const Ray* rays, SurfaceHit* hits, bool* found, uint32_t count, bool coherent) const {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
-  ctx.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  QueryContext ctx = impl_->context(coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
   std::vector<RTCRayHit> rh(count);
   for (uint32_t i = 0; i < count; ++i) {
     fill_ray(rays[i], &rh[i].ray);
     rh[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   }
-  rtcIntersect1M(impl_->rtc_scene, &ctx, rh.data(), count, sizeof(RTCRayHit));
+  rtcIntersect1M(impl_->rtc_scene, &ctx.rtc, rh.data(), count, sizeof(RTCRayHit));
   for (uint32_t i = 0; i < count; ++i) found[i] = impl_->fill_hit(rays[i], rh[i], &hits[i]);
 }
 
 void Accel::occluded_batch(const Ray* rays, bool* blocked, uint32_t count) const {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
-  ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  QueryContext ctx = impl_->context();
   std::vector<RTCRay> r(count);
   for (uint32_t i = 0; i < count; ++i) fill_ray(rays[i], &r[i]);
-  rtcOccluded1M(impl_->rtc_scene, &ctx, r.data(), count, sizeof(RTCRay));
+  rtcOccluded1M(impl_->rtc_scene, &ctx.rtc, r.data(), count, sizeof(RTCRay));
   for (uint32_t i = 0; i < count; ++i) blocked[i] = r[i].tfar < 0.f;
 }
 

@@ -53,6 +53,7 @@
 #include "pathspace/scene/light_selection.h"
 #include "pathspace/scene/scene_view.h"
 #include "pathspace/scene/shading_material.h"
+#include "pathspace/scene/surface_opacity.h"
 #include "pathspace/scene/texture.h"
 #include "pathspace/film/splat_film.h"
 #include "pathspace/film/tonemap.h"

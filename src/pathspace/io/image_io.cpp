@@ -190,7 +190,18 @@ class MemoryIStream : public Imf::IStream {
   size_t pos_ = 0;
 };
 
-Image decode_exr(const std::string& path, const std::string& bytes) {
+// ImageContent::scalar: the alpha channel in all three channels where it is not 1 everywhere, else
+// the mean of the colour channels.
+Image scalar_image(Image color, const std::vector<float>& alpha) {
+  const bool use_alpha = std::any_of(alpha.begin(), alpha.end(), [](float a) { return a != 1.f; });
+  for (size_t i = 0; i < color.size(); ++i) {
+    const Rgb& c = color.pixels[i];
+    color.pixels[i] = Rgb(use_alpha ? alpha[i] : (c.r + c.g + c.b) * (1.f / 3.f));
+  }
+  return color;
+}
+
+Image decode_exr(const std::string& path, const std::string& bytes, ImageContent content) {
   try {
     MemoryIStream in(path, bytes);
     Imf::InputFile file(in);
@@ -208,11 +219,16 @@ Image decode_exr(const std::string& path, const std::string& bytes) {
     for (int c = 0; c < (rgb ? 3 : 1); ++c)  // missing channels are filled with 0
       frame.insert(rgb ? names[c] : "Y", Imf::Slice::Make(Imf::FLOAT, base + c * sizeof(float), dw, sizeof(Rgb),
                                                           sizeof(Rgb) * size_t(w)));
+    std::vector<float> alpha;
+    if (content == ImageContent::scalar && channels.findChannel("A")) {
+      alpha.resize(image.size());
+      frame.insert("A", Imf::Slice::Make(Imf::FLOAT, alpha.data(), dw, sizeof(float), sizeof(float) * size_t(w)));
+    }
     file.setFrameBuffer(frame);
     file.readPixels(dw.min.y, dw.max.y);
     if (!rgb)
       for (Rgb& p : image.pixels) p.g = p.b = p.r;
-    return image;
+    return content == ImageContent::scalar ? scalar_image(std::move(image), alpha) : image;
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {  // OpenEXR's Iex exceptions and bad_alloc
@@ -274,15 +290,20 @@ Image decode_pfm(const std::string& path, const std::string& b) {
   return image;
 }
 
-// 1-4 channels (grey, grey+alpha, RGB, RGBA; alpha ignored) of type T, converted by to_linear.
-template <class T, class F>
-Image image_from_channels(const T* px, int w, int h, int n, F to_linear) {
+// 1-4 channels (grey, grey+alpha, RGB, RGBA) of type T, colour converted by to_linear; alpha (v /
+// max: to_unit) is read for ImageContent::scalar only.
+template <class T, class F, class U>
+Image image_from_channels(const T* px, int w, int h, int n, F to_linear, U to_unit, ImageContent content) {
   Image image(w, h);
+  std::vector<float> alpha;
+  const bool has_alpha = n == 2 || n == 4;
+  if (content == ImageContent::scalar && has_alpha) alpha.resize(image.size());
   for (size_t i = 0; i < image.size(); ++i) {
     const T* p = px + i * size_t(n);
     image.pixels[i] = n >= 3 ? Rgb(to_linear(p[0]), to_linear(p[1]), to_linear(p[2])) : Rgb(to_linear(p[0]));
+    if (!alpha.empty()) alpha[i] = to_unit(p[n - 1]);
   }
-  return image;
+  return content == ImageContent::scalar ? scalar_image(std::move(image), alpha) : image;
 }
 
 // stb_image grows its buffer to each IDAT chunk's declared length before it reads the chunk, so a
@@ -341,7 +362,7 @@ void check_jpeg_huffman_tables(const std::string& path, const std::string& bytes
 // Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
 // unless the caller says they hold linear data (v / max).
 // (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
-Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
+Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
   if (bytes.size() > size_t(INT_MAX)) fail(path, "file too large");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int len = int(bytes.size());
@@ -355,20 +376,23 @@ Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding 
   if (stbi_is_hdr_from_memory(data, len)) {
     std::unique_ptr<float, void (*)(void*)> px(stbi_loadf_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
     check(px.get());
-    return image_from_channels(px.get(), w, h, n, [](float v) { return v; });
+    const auto same = [](float v) { return v; };
+    return image_from_channels(px.get(), w, h, n, same, same, content);
   }
   if (stbi_is_16_bit_from_memory(data, len)) {
     std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w, &h, &n, 0),
                                                  stbi_image_free);
     check(px.get());
     const bool srgb = ldr == LdrEncoding::srgb;
-    return image_from_channels(px.get(), w, h, n, [&](stbi_us v) { return srgb ? linear_from_srgb(v / 65535.f) : v / 65535.f; });
+    return image_from_channels(
+        px.get(), w, h, n, [&](stbi_us v) { return srgb ? linear_from_srgb(v / 65535.f) : v / 65535.f; },
+        [](stbi_us v) { return v / 65535.f; }, content);
   }
   std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
   check(px.get());
   float lut[256];
   for (int i = 0; i < 256; ++i) lut[i] = ldr == LdrEncoding::srgb ? linear_from_srgb(float(i) / 255.f) : float(i) / 255.f;
-  return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return lut[v]; });
+  return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return lut[v]; }, [](stbi_uc v) { return v / 255.f; }, content);
 }
 
 }  // namespace
@@ -406,18 +430,21 @@ void write_image(const std::string& path, const Image& image) {
   write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-Image read_image(const std::string& path, LdrEncoding ldr) { return decode_image(path, read_file_as_stored(path), ldr); }
+Image read_image(const std::string& path, LdrEncoding ldr, ImageContent content) {
+  return decode_image(path, read_file_as_stored(path), ldr, content);
+}
 
 void set_max_image_pixels(uint64_t pixels) { max_image_pixels() = pixels; }
 
-Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr) {
+Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
   const std::string ext = lower_extension(path);
   // The content decides where it can; the extension picks the decoder whose error message fits.
   const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
   const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
-  Image image = exr_magic || (ext == ".exr" && !pfm_magic) ? decode_exr(path, bytes)
-                : pfm_magic || ext == ".pfm"                 ? decode_pfm(path, bytes)
-                                                             : decode_stb(path, bytes, ldr);
+  Image image = exr_magic || (ext == ".exr" && !pfm_magic) ? decode_exr(path, bytes, content)
+                : pfm_magic || ext == ".pfm" ? (content == ImageContent::scalar ? scalar_image(decode_pfm(path, bytes), {})
+                                                                                 : decode_pfm(path, bytes))
+                                             : decode_stb(path, bytes, ldr, content);
   // stb accepts a Radiance header of height 0 (found by the image fuzzer): no image is empty.
   if (image.width <= 0 || image.height <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", image.width, image.height));
   return image;

@@ -37,10 +37,16 @@ inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
 // each input stays fast while every code path stays reachable.
 void set_max_image_pixels(uint64_t pixels);
 
+// What a read returns of a file: its colour, or a scalar in all three channels as pbrt-v4 reads a
+// float texture (used for cutout opacity): the alpha channel where the file has one that is not 1
+// everywhere (alpha is linear, never sRGB-decoded), else the mean of the colour channels.
+enum class ImageContent { color, scalar };
+
 // Reads EXR, PFM, PNG (and what stb reads: JPG, HDR, TGA, BMP).
-Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb);
+Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb, ImageContent content = ImageContent::color);
 // The same for bytes already in memory (images embedded in glTF files); `path` names them in
 // errors, and its extension (if any) picks the decoder where the content does not.
-Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr = LdrEncoding::srgb);
+Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr = LdrEncoding::srgb,
+                   ImageContent content = ImageContent::color);
 
 }  // namespace pathspace

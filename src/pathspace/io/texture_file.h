@@ -19,12 +19,14 @@ struct TextureUvTransform {
 
 class TextureFiles {
  public:
-  // Index of the texture in scene->textures (read on first use).
-  uint32_t add(Scene* scene, const std::string& path, LdrEncoding ldr, const TextureUvTransform& uv = {}) {
-    const Key key{path, int(ldr), uv.uscale, uv.vscale, uv.udelta, uv.vdelta};
+  // Index of the texture in scene->textures (read on first use). ImageContent::scalar: a float
+  // texture such as cutout opacity (image_io.h).
+  uint32_t add(Scene* scene, const std::string& path, LdrEncoding ldr, const TextureUvTransform& uv = {},
+               ImageContent content = ImageContent::color) {
+    const Key key{path, int(ldr), int(content), uv.uscale, uv.vscale, uv.udelta, uv.vdelta};
     const auto it = loaded_.find(key);
     if (it != loaded_.end()) return it->second;
-    Image image = read_image(path, ldr);
+    Image image = read_image(path, ldr, content);
     ImageTexture t;
     t.name = path;
     t.width = image.width;
@@ -40,7 +42,7 @@ class TextureFiles {
   }
 
  private:
-  using Key = std::tuple<std::string, int, float, float, float, float>;
+  using Key = std::tuple<std::string, int, int, float, float, float, float>;
   std::map<Key, uint32_t> loaded_;
 };
 

@@ -197,15 +197,8 @@ PS_INLINE float power_heuristic(float a, float b) {
 
 // The walk's random numbers: a stream seeded by the bits of both directions.
 PS_INLINE Pcg32 walk_rng(const Vec3& a, const Vec3& b) {
-  const auto bits = [](float x) {
-    union {
-      float f;
-      uint32_t u;
-    } v{x};
-    return uint64_t(v.u);
-  };
-  const uint64_t ha = hash_combine(hash_combine(bits(a.x), bits(a.y)), bits(a.z));
-  const uint64_t hb = hash_combine(hash_combine(bits(b.x), bits(b.y)), bits(b.z));
+  const uint64_t ha = hash_combine(hash_combine(float_bits(a.x), float_bits(a.y)), float_bits(a.z));
+  const uint64_t hb = hash_combine(hash_combine(float_bits(b.x), float_bits(b.y)), float_bits(b.z));
   return Pcg32(ha, hb);
 }
 

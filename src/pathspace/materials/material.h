@@ -60,6 +60,13 @@ struct Material {
   int32_t diffuse_texture = -1;
   int32_t glossy_texture = -1;
   int32_t specular_texture = -1;
+
+  // Cutout opacity (Mitsuba's mask, pbrt-v4's shape alpha; scene/surface_opacity.h): the fraction
+  // of the rays reaching the surface that hit it, `opacity` times the first channel of
+  // `opacity_texture` (-1 = none); the others pass through as if nothing were there. Applies to
+  // triangles that do not emit (validation warns where it is ignored).
+  float opacity = 1.f;
+  int32_t opacity_texture = -1;
 };
 
 // Convenience constructors.

@@ -18,6 +18,15 @@ inline constexpr uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ull;
 
 PS_INLINE uint64_t hash_combine(uint64_t seed, uint64_t value) { return mix64(seed ^ mix64(value + kGoldenGamma)); }
 
+// The bits of a float (for hashing values: -0 and +0 differ, as do NaN payloads).
+PS_INLINE uint64_t float_bits(float x) {
+  union {
+    float f;
+    uint32_t u;
+  } v{x};
+  return uint64_t(v.u);
+}
+
 // Top 24 bits -> float in [0, 1): exactly representable, never 1.
 PS_INLINE float bits_to_unit_float(uint64_t bits) { return float(bits >> 40) * 0x1p-24f; }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "pathspace/base/error.h"
+#include "pathspace/scene/surface_opacity.h"
 
 namespace pathspace {
 
@@ -215,7 +216,8 @@ void Scene::finalize() {
       throw Error("texture " + std::to_string(i) + " ('" + t.name + "') has no or inconsistent texels");
   }
   for (size_t i = 0; i < materials.size(); ++i)
-    for (int32_t t : {materials[i].diffuse_texture, materials[i].glossy_texture, materials[i].specular_texture})
+    for (int32_t t : {materials[i].diffuse_texture, materials[i].glossy_texture, materials[i].specular_texture,
+                      materials[i].opacity_texture})
       if (t >= int32_t(textures.size()) || t < -1) throw Error("material " + std::to_string(i) + " references texture " + std::to_string(t) + " of " + std::to_string(textures.size()));
   if (uvs.size() > positions.size() || normals.size() > positions.size())
     throw Error("more vertex uvs or normals than vertices");
@@ -245,7 +247,21 @@ void Scene::finalize() {
     light_tree_ = LightTree(bounds);
     if (!light_tree_.can_differ_from_power()) light_tree_ = LightTree();
   }
+  has_cutouts_ = any_cutout_triangle();
   finalized_ = true;
+}
+
+bool Scene::any_cutout_triangle() const {
+  std::vector<char> cutout(materials.size());
+  bool any = false;
+  for (size_t i = 0; i < materials.size(); ++i) {
+    cutout[i] = has_cutout(materials[i]);
+    any = any || cutout[i];
+  }
+  if (!any) return false;
+  for (const Triangle& t : triangles)
+    if (t.light == kNoLight && t.material < materials.size() && cutout[t.material]) return true;
+  return false;
 }
 
 SceneView Scene::view() const {
@@ -278,6 +294,7 @@ SceneView Scene::view() const {
   v.bounds = bounds_;
   v.ray_epsilon = ray_epsilon;
   v.max_path_segments = max_path_segments;
+  v.has_cutouts = has_cutouts_;
   return v;
 }
 

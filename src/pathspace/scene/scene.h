@@ -94,6 +94,9 @@ class Scene {
   std::optional<LightBounds> light_bounds(size_t i) const;
   // The light tree (empty unless light_selection is bvh).
   const LightTree& light_tree() const { return light_tree_; }
+  // Whether some non-emitting triangle's material has cutout opacity (scene/surface_opacity.h):
+  // only then do the ray casters test opacity. Scans the triangles (finalize keeps the answer).
+  bool any_cutout_triangle() const;
   SceneView view() const;
 
  private:
@@ -101,6 +104,7 @@ class Scene {
   DiscreteDistribution light_distribution_;
   LightTree light_tree_;
   int32_t environment_light_ = -1;
+  bool has_cutouts_ = false;
   // What SceneView::textures points to; rebuilt by view() when stale (a copied Scene's views would
   // still point into the original's texels).
   mutable std::vector<TextureView> texture_views_;

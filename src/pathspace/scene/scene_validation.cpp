@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
+#include "pathspace/scene/surface_opacity.h"
 
 namespace pathspace {
 
@@ -81,6 +82,7 @@ void check_material(const Material& m, size_t i, const FileLoc* at, std::vector<
     if (!(m.g > -1.f && m.g < 1.f)) fail(at, fmt::format("{}: coat g must lie in (-1, 1), not {:g}", name, m.g));
     if (m.max_depth < 1 || m.n_samples < 1) fail(at, name + ": coat max_depth and n_samples must be at least 1");
   }
+  if (!(m.opacity >= 0.f && m.opacity <= 1.f)) fail(at, fmt::format("{}: opacity is {:g}: it must lie in [0, 1]", name, m.opacity));
   if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f) gains->push_back(name);
 }
 
@@ -102,6 +104,17 @@ void check_texels(const std::vector<Rgb>& texels, int width, const std::string& 
                                     what, negative, texels.size()));
 }
 
+// Cutout opacity applies to triangles that do not emit (scene/surface_opacity.h): a warning where a
+// scene gives it to spheres or emitters, which ignore it.
+void warn_ignored_cutouts(const Scene& scene, std::vector<std::string>* warnings) {
+  const auto cutout = [&](uint32_t material) { return material < scene.materials.size() && has_cutout(scene.materials[material]); };
+  size_t spheres = 0, emitters = 0;
+  for (const Sphere& s : scene.spheres) spheres += cutout(s.material);
+  for (const Triangle& t : scene.triangles) emitters += t.light != kNoLight && cutout(t.material);
+  if (spheres > 0) warnings->push_back(fmt::format("warning: opacity (a mask or alpha) on {} sphere(s) is ignored: only triangles have cutouts", spheres));
+  if (emitters > 0) warnings->push_back(fmt::format("warning: opacity (a mask or alpha) on {} emitting triangle(s) is ignored: emitters are opaque", emitters));
+}
+
 }  // namespace
 
 void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
@@ -117,6 +130,7 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
   }
   std::vector<std::string> gains;
   for (size_t i = 0; i < scene.materials.size(); ++i) check_material(scene.materials[i], i, src.find(K::kMaterial, i), &gains);
+  warn_ignored_cutouts(scene, warnings);
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
     const std::string name = "light " + std::to_string(i);

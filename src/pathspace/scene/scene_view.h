@@ -38,6 +38,7 @@ struct SceneView {
   BoundingSphere bounds;            // of the geometry; used by infinite lights
   float ray_epsilon = 1e-4f;        // ray offset (scene scale)
   int max_path_segments = 10;       // the scene's path length limit (camera ray = segment 1)
+  bool has_cutouts = false;         // some non-emitting triangle's material has opacity (scene/surface_opacity.h)
 };
 
 }  // namespace pathspace

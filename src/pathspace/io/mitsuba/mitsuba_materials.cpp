@@ -123,6 +123,20 @@ Material make_bsdf(const Document& doc, const pugi::xml_node& node, const NamedM
 
 namespace {
 
+// Mitsuba's mask: the nested BSDF with cutout opacity (scene/surface_opacity.h), a float or a bitmap
+// read as a float texture; nested masks multiply.
+void mask(const Object& o, const std::string& folder, TextureBinding* textures, LoadWarnings* w, Material* m) {
+  int32_t texture = -1;
+  const Rgb value = textured_rgb(o, "opacity", Rgb(0.5f), folder, textures, w, &texture, ImageContent::scalar);
+  const float opacity = (value.r + value.g + value.b) / 3.f;
+  if (!(opacity >= 0.f && opacity <= 1.f)) throw Error(o.loc(), o.title() + ": opacity must lie in [0, 1]");
+  if (texture >= 0 && m->opacity_texture >= 0) {
+    w->add(o.loc(), o.title() + ": a textured mask inside another textured mask: only the outer texture is used");
+  }
+  m->opacity *= opacity;
+  if (texture >= 0) m->opacity_texture = texture;
+}
+
 Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const NamedMaterials& named, const std::string& folder,
                           LoadWarnings* w, TextureBinding* textures, int depth) {
   // Wrappers nest; a bound keeps hostile files from exhausting the stack.
@@ -142,8 +156,11 @@ Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const
     if (inner.empty()) throw Error(o.loc(), o.title() + " needs a nested <bsdf> or <ref>");
     if (inner.size() > 1) w->add(o.loc(), o.title() + ": different front and back BSDFs are not supported; the first is used on both sides");
     m = make_bsdf_nested(doc, inner[0], named, folder, w, textures, depth + 1);
-    if (t == "twosided") m.two_sided = true;
-    else {
+    if (t == "twosided") {
+      m.two_sided = true;
+    } else if (t == "mask") {
+      mask(o, folder, textures, w, &m);
+    } else {
       w->add(o.loc(), o.title() + " is not supported: its nested BSDF is used alone");
       o.ignore_all();
     }

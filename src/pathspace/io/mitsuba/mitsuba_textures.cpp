@@ -20,7 +20,8 @@ TextureUvTransform uv_transform(const Object& tex, LoadWarnings* w) {
   return uv;
 }
 
-int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding* binding, LoadWarnings* w) {
+int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding* binding, LoadWarnings* w,
+                    ImageContent content) {
   const FileLoc loc = tex.loc();
   const std::string file = tex.get_string("filename", "");
   const std::filesystem::path path = tex.doc().resolve_file(file, folder);
@@ -38,7 +39,7 @@ int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding
   tex.warn_unused(w);
   uint32_t index = 0;
   try {
-    index = binding->files.add(binding->scene, path.string(), ldr, uv);
+    index = binding->files.add(binding->scene, path.string(), ldr, uv, content);
   } catch (const Error& e) {
     throw Error(loc, "bitmap texture: " + std::string(e.what()));
   }
@@ -50,7 +51,7 @@ int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding
 }  // namespace
 
 Rgb textured_rgb(const Object& o, const std::string& name, const Rgb& fallback, const std::string& folder,
-                 TextureBinding* binding, LoadWarnings* w, int32_t* texture) {
+                 TextureBinding* binding, LoadWarnings* w, int32_t* texture, ImageContent content) {
   *texture = -1;
   const Property* p = o.find(name);
   if (binding && binding->scene && p && (p->tag == "texture" || p->tag == "ref")) {
@@ -59,7 +60,7 @@ Rgb textured_rgb(const Object& o, const std::string& name, const Rgb& fallback, 
     if (node) {
       const Object tex(o.doc(), node);
       if (tex.type() == "bitmap") {
-        *texture = bind_bitmap(tex, folder, binding, w);
+        *texture = bind_bitmap(tex, folder, binding, w, content);
         return Rgb(1.f);
       }
     }

@@ -24,8 +24,9 @@ struct TextureBinding {
 
 // The colour property `name` of `o`: for a bitmap texture (nested, or a <ref> to a top-level one)
 // and a non-null `binding`, returns white and sets *texture to the bound texture's index; otherwise
-// Object::get_rgb's value and *texture = -1.
+// Object::get_rgb's value and *texture = -1. ImageContent::scalar reads the bitmap as a float
+// texture (a mask's opacity: io/image_io.h).
 Rgb textured_rgb(const Object& o, const std::string& name, const Rgb& fallback, const std::string& folder,
-                 TextureBinding* binding, LoadWarnings* w, int32_t* texture);
+                 TextureBinding* binding, LoadWarnings* w, int32_t* texture, ImageContent content = ImageContent::color);
 
 }  // namespace pathspace::mitsuba

@@ -153,6 +153,8 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
   if (st.strings[1] == "float") value = Rgb(average(value));
   value *= scale;
   if (invert) value = Rgb(1.f) - value;
+  const bool float_image = st.strings[1] == "float" && textures->scene && !invert && mapping == "uv";
+  if (float_image) textures->float_images[name] = {path.string(), ldr, uv, scale};
   if (image) {
     textures->images[name] = {index, Rgb(scale)};
     if (filter != "bilinear") w->add(st.loc, "imagemap filter \"" + filter + "\" approximated by bilinear filtering (no MIP maps)");
@@ -160,7 +162,7 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
   } else {
     w->add(st.loc, "image texture '" + name + "' approximated by its mean colour (" +
                        std::string(invert ? "invert" : mapping != "uv" ? "mapping \"" + mapping + "\"" : st.strings[1] == "float" ? "float textures" : "no scene") +
-                       " not supported)");
+                       " not supported" + (float_image ? "; a shape's \"alpha\" uses the image itself" : "") + ")");
   }
   return value;
 }
@@ -206,6 +208,26 @@ Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& f
     return ref->scale;
   }
   return spectrum_param(st, name, fallback, textures, w);
+}
+
+float float_texture_param(const Statement& st, const std::string& name, float fallback, TextureTable* textures,
+                          LoadWarnings* w, int32_t* texture) {
+  *texture = -1;
+  const Param* p = st.find(name);
+  if (p && p->type == "texture" && p->strings.size() == 1) {
+    const auto it = textures->float_images.find(p->strings[0]);
+    if (it != textures->float_images.end()) {
+      p->used = true;
+      const FloatImageFile& f = it->second;
+      try {
+        *texture = int32_t(textures->files.add(textures->scene, f.path, f.ldr, f.uv, ImageContent::scalar));
+      } catch (const Error& e) {
+        throw Error(p->loc, std::string("float texture '") + p->strings[0] + "': " + e.what());
+      }
+      return f.scale;
+    }
+  }
+  return average(spectrum_param(st, name, Rgb(fallback), *textures, w));
 }
 
 void add_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* w) {

@@ -26,9 +26,18 @@ struct ImageTextureRef {
 // Named textures ("Texture" statements): a constant stand-in for every texture, and for spectrum
 // image textures also the image itself. Images are read into *scene when it is set (the scene
 // builder sets it); without a scene every imagemap is its mean colour.
+// A float imagemap texture, read as a scalar image where it is used as one (a shape's alpha).
+struct FloatImageFile {
+  std::string path;
+  LdrEncoding ldr = LdrEncoding::srgb;
+  TextureUvTransform uv;
+  float scale = 1.f;
+};
+
 struct TextureTable {
   std::map<std::string, Rgb> values;  // float textures store the value in all three channels
   std::map<std::string, ImageTextureRef> images;
+  std::map<std::string, FloatImageFile> float_images;
   Scene* scene = nullptr;
   TextureFiles files;
   std::string main_folder;  // where .spd files are looked for when not beside the file naming them
@@ -45,6 +54,13 @@ Material make_material(const std::string& type, const Statement& st, const Textu
 // and sets *texture to the image's index; otherwise spectrum_param's value and *texture = -1.
 Rgb reflectance_param(const Statement& st, const std::string& name, const Rgb& fallback, const TextureTable& textures,
                       LoadWarnings* warnings, int32_t* texture);
+
+// A float parameter that may name a float image texture (pbrt-v4's shape "alpha"): for such a
+// texture, binds its scalar image (io/image_io.h, ImageContent::scalar) into textures->scene,
+// sets *texture to its index and returns its scale; otherwise the constant value (a float or a
+// constant texture) and *texture = -1.
+float float_texture_param(const Statement& st, const std::string& name, float fallback, TextureTable* textures,
+                          LoadWarnings* warnings, int32_t* texture);
 
 // A spectrum-valued parameter (rgb, spectrum, blackbody or texture) as linear sRGB; `fallback` when absent.
 // RGB values pass as given; spectra (inline pairs, .spd files, CIE illuminants, blackbodies) are

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <tuple>
 #include <set>
 
 #include "pathspace/io/environment_file.h"
@@ -468,11 +469,26 @@ class Builder {
     }
   }
 
+  // The shape's material; with pbrt-v4's shape "alpha" (a float, or a float imagemap texture) a copy
+  // of it with that cutout opacity (scene/surface_opacity.h), one copy per material and alpha.
   uint32_t shape_material(const Statement& st) {
-    if (gs_.material >= 0) return uint32_t(gs_.material);
-    if (default_material_ < 0) default_material_ = int(scene_.add_material(make_material("diffuse", Statement{}, textures_, warnings_)));
-    (void)st;
-    return uint32_t(default_material_);
+    if (gs_.material < 0 && default_material_ < 0)
+      default_material_ = int(scene_.add_material(make_material("diffuse", Statement{}, textures_, warnings_)));
+    const uint32_t material = uint32_t(gs_.material >= 0 ? gs_.material : default_material_);
+    if (!st.find("alpha")) return material;
+    int32_t texture = -1;
+    const float alpha = float_texture_param(st, "alpha", 1.f, &textures_, warnings_, &texture);
+    if (!(alpha >= 0.f && alpha <= 1.f)) throw Error(st.find("alpha")->loc, "\"alpha\" must lie in [0, 1]");
+    if (alpha == 1.f && texture < 0) return material;
+    const auto key = std::make_tuple(material, alpha, texture);
+    const auto it = cutout_materials_.find(key);
+    if (it != cutout_materials_.end()) return it->second;
+    Material m = scene_.materials[material];
+    m.opacity = alpha;
+    m.opacity_texture = texture;
+    const uint32_t copy = scene_.add_material(m);
+    cutout_materials_.emplace(key, copy);
+    return copy;
   }
 
   Rgb emission(const Statement& st, uint32_t material) {
@@ -562,6 +578,7 @@ class Builder {
   GraphicsState gs_;
   std::vector<std::pair<GraphicsState, bool>> stack_;  // bool: pushed by TransformBegin
   std::map<std::string, int> named_materials_;
+  std::map<std::tuple<uint32_t, float, int32_t>, uint32_t> cutout_materials_;  // shape_material's copies
   std::map<std::string, Mat4> coord_systems_;
   TextureTable textures_;
   MissingFiles missing_;
