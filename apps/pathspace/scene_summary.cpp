@@ -24,6 +24,7 @@ const char* light_kind(LightType t) {
     case LightType::area_triangle: return "area (triangles)";
     case LightType::area_sphere: return "area (spheres)";
     case LightType::point: return "point";
+    case LightType::projector: return "projector";
     case LightType::directional: return "directional";
     case LightType::environment: return "environment";
     case LightType::spot: return "spot";

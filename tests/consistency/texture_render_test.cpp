@@ -52,38 +52,18 @@ Scene textured_quad_scene(int resolution) {
   return s;
 }
 
-// Mean albedo over each pixel's footprint (n x n midpoint rule over the box pixel filter).
-Image expected_radiance(const Scene& scene, const Accel& accel, int n) {
+// Mean albedo over each pixel's footprint (32 x 32 midpoint rule over the box pixel filter).
+Image expected_radiance(const Scene& scene, const Accel& accel) {
   const SceneView view = scene.view();
-  Image img(view.camera.width, view.camera.height);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      Rgb sum;
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          SurfaceHit hit;
-          const Ray ray = view.camera.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
-          if (accel.intersect(ray, &hit)) sum += shading_material(view, hit).diffuse;
-        }
-      img.at(x, y) = sum * (1.f / float(n * n));
-    }
-  return img;
-}
-
-// Per-pixel z-test against the exact expectation. The image-mean part assumes independent pixels,
-// which filtered pixels (sharing voxels) are not; `whole_image` = false checks the pixel count only.
-void expect_matches(const Rendered& r, const Image& expected, const std::string& what, bool whole_image = true) {
-  const Image zero(expected.width, expected.height);
-  const testing::ImageZTest z = testing::image_z_test(r.mean, r.variance, expected, zero, 1e-3, kAlphaImage);
-  EXPECT_TRUE(whole_image ? z.passed() : z.failed <= z.allowed) << what << ": " << z.failed << " of " << z.pixels << " pixels failed (allowed " << z.allowed
-                          << "), mean " << z.mean_a << " vs " << z.mean_b << ", p " << z.mean_p;
+  return testing::footprint_average(scene, accel, 32, [&](const SurfaceHit* hit) { return hit ? shading_material(view, *hit).diffuse : Rgb(); });
 }
 
 TEST(TextureRender, TexturedQuadUnderSkyMatchesTheTexture) {
   const Scene scene = textured_quad_scene(16);
   const Accel accel(scene);
-  const Image expected = expected_radiance(scene, accel, 32);
-  expect_matches(testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(301)), 256), expected, "pt");
+  const Image expected = expected_radiance(scene, accel);
+  testing::expect_matches_exact(testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(301)), 256), expected,
+                                "pt", kAlphaImage);
 
   // The texture must show: a flat grey image would fail the test above by far.
   float lo = 1e9f, hi = -1e9f;
@@ -97,11 +77,11 @@ TEST(TextureRender, TexturedQuadUnderSkyMatchesTheTexture) {
 TEST(TextureRender, HashedFilterKeepsTextureDetail) {
   const Scene scene = textured_quad_scene(16);
   const Accel accel(scene);
-  const Image expected = expected_radiance(scene, accel, 32);
+  const Image expected = expected_radiance(scene, accel);
   HashedFilterSettings hashed;
   hashed.key.psf_scale = 8.f;  // voxels much larger than a texel: only demodulation keeps detail
   const RenderConfig f = with_filter(testing::default_config("pt", testing::test_seed(302)), "hashed", hashed);
-  expect_matches(testing::render_integrator(scene, accel, f, 128), expected, "pt + hashed filter", false);
+  testing::expect_matches_exact(testing::render_integrator(scene, accel, f, 128), expected, "pt + hashed filter", kAlphaImage, false);
 }
 
 // The empty Cornell box (SmallVCM e_c) with a texture on every diffuse wall (pbrt's default

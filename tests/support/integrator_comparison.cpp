@@ -64,6 +64,31 @@ std::vector<Point2> lens_probes(const PerspectiveCamera& c) {
 }
 }  // namespace
 
+Image footprint_average(const Scene& scene, const Accel& accel, int n, const std::function<Rgb(const SurfaceHit*)>& radiance) {
+  const PerspectiveCamera& camera = scene.camera;
+  Image img(camera.width, camera.height);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      Rgb sum;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          SurfaceHit hit;
+          const Ray ray = camera.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
+          sum += radiance(accel.intersect(ray, &hit) ? &hit : nullptr);
+        }
+      img.at(x, y) = sum * (1.f / float(n * n));
+    }
+  return img;
+}
+
+void expect_matches_exact(const Rendered& r, const Image& expected, const std::string& what, double alpha_image, bool whole_image) {
+  const Image zero(expected.width, expected.height);
+  const ImageZTest z = image_z_test(r.mean, r.variance, expected, zero, 1e-3, alpha_image);
+  EXPECT_TRUE(whole_image ? z.passed() : z.failed <= z.allowed)
+      << what << ": " << z.failed << " of " << z.pixels << " pixels failed (allowed " << z.allowed << "), mean " << z.mean_a
+      << " vs " << z.mean_b << ", p " << z.mean_p;
+}
+
 std::vector<bool> specular_first_hit_mask(const Scene& scene, const Accel& accel) {
   const SceneView v = scene.view();
   const std::vector<Point2> lens = lens_probes(v.camera);

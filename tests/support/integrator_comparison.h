@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,17 @@ void apply_mask(Rendered* r, const std::vector<bool>& mask);
 // failure writes both images to the evidence folder and lists the worst pixels.
 void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what, double alpha_image,
                        const std::string& name_a = "a", const std::string& name_b = "b");
+
+// The exact image of a closed-form radiance as the camera's one-pixel box filter sees it: each
+// pixel's mean of radiance(hit) over an n x n midpoint grid of camera rays through its footprint
+// (hit is nullptr where the ray meets nothing).
+Image footprint_average(const Scene& scene, const Accel& accel, int n, const std::function<Rgb(const SurfaceHit*)>& radiance);
+
+// Per-pixel z-test of a render against an exact image (variance 0; support/statistics.h
+// image_z_test, alpha_pixel 1e-3). With whole_image false only the failing-pixel count is judged
+// (filtered pixels share voxels, so the image mean's test would assume an independence they lack).
+void expect_matches_exact(const Rendered& r, const Image& expected, const std::string& what, double alpha_image,
+                          bool whole_image = true);
 
 // Pixels where any of 3x3 probe rays first hits a surface without a non-delta lobe (mirror, glass):
 // light paths cannot reach the camera through those. With a thin lens each probe goes through 9

@@ -533,7 +533,7 @@ TEST(MitsubaLoader, Emitters) {
   EXPECT_NEAR(s.lights[2].direction.z, 1.f, 1e-6f);
   EXPECT_NEAR(s.lights[2].cos_total, std::cos(20.0 * M_PI / 180.0), 1e-6);
   EXPECT_NEAR(s.lights[2].cos_falloff, std::cos(15.0 * M_PI / 180.0), 1e-6);
-  EXPECT_NE(find_warning(r.warnings, "scene.xml:4:1: warning: spot emitter: Mitsuba's falloff"), "");
+  EXPECT_EQ(s.lights[2].falloff, SpotFalloff::linear_angle);  // Mitsuba's fade, exactly
   EXPECT_EQ(s.lights[3].type, LightType::directional);
   EXPECT_NEAR(s.lights[3].direction.y, -1.f, 1e-6f);
   EXPECT_EQ(s.lights[3].value, Rgb(3.f));

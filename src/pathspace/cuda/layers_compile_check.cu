@@ -52,6 +52,7 @@
 #include "pathspace/scene/light_sampling.h"
 #include "pathspace/scene/light_selection.h"
 #include "pathspace/scene/scene_view.h"
+#include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/scene/shading_material.h"
 #include "pathspace/scene/surface_opacity.h"
 #include "pathspace/scene/texture.h"

@@ -2,7 +2,10 @@
 // exactly as in docs/scenes.md §5:
 //   area_triangle / area_sphere: emitted radiance L_e (front side only unless two_sided)
 //   point:       radiant intensity I (W/sr); irradiance at x is I cos / |x - p|^2
-//   spot:        a point light whose intensity I is scaled by pbrt-v4's falloff around an axis
+//   spot:        a point light whose intensity I is scaled by a falloff around an axis (pbrt-v4's
+//                smoothstep or Mitsuba's linear fade) and optionally an image over the cone
+//   projector:   a point light projecting an image through a perspective frustum (pbrt-v4's
+//                projection light, Mitsuba's projector); scene/point_light_intensity.h
 //   directional: irradiance E on a surface perpendicular to the beam
 //   environment: constant radiance from every direction
 #pragma once
@@ -17,7 +20,11 @@ namespace pathspace {
 // Emission below this cosine (relative to the emitting side) is zero.
 inline constexpr float kMinEmitterCosine = 1e-6f;
 
-enum class LightType : uint8_t { area_triangle, area_sphere, point, directional, environment, spot };
+enum class LightType : uint8_t { area_triangle, area_sphere, point, directional, environment, spot, projector };
+
+// A spot light's fade between cos_falloff (full) and cos_total (none): pbrt-v4's smoothstep in the
+// cosine, or Mitsuba's linear ramp in the angle.
+enum class SpotFalloff : uint8_t { smoothstep_cosine, linear_angle };
 
 struct Light {
   LightType type = LightType::point;
@@ -27,23 +34,43 @@ struct Light {
   Vec3 direction;      // directional: unit direction of propagation; spot: unit axis of the cone
   bool two_sided = false;
   float cos_total = -1.f;   // spot: no emission at angles whose cosine to the axis is below this
-  float cos_falloff = 1.f;  // spot: full intensity above this cosine; smoothstep in between
+  float cos_falloff = 1.f;  // spot: full intensity above this cosine; `falloff` in between
+  SpotFalloff falloff = SpotFalloff::smoothstep_cosine;
+  // The image of a spot or projector (scene/point_light_intensity.h): a texture (-1: none) over
+  // the plane at distance 1 along `direction`, spanned by the unit axes axis_u, axis_v (with
+  // `direction` an orthonormal frame). A direction with local coordinates (x, y, z) looks up
+  // uv = (0.5 + uv_scale_u x / z, 0.5 + uv_scale_v y / z); a projector emits only where uv lies in
+  // [0, 1]^2. With irradiance_plane (Mitsuba's projector) the image is the irradiance on that plane,
+  // so the intensity is value * image / cos^3; otherwise (pbrt-v4) value * image.
+  int32_t texture = -1;
+  Vec3 axis_u, axis_v;
+  float uv_scale_u = 0.5f, uv_scale_v = 0.5f;
+  bool irradiance_plane = false;
+  float image_max = 1.f;  // the texture's largest channel value (1 without one): bounds emission weights
 };
 
-// Lights at a single point (delta position): point and spot.
-PS_INLINE bool is_point_light(const Light& l) { return l.type == LightType::point || l.type == LightType::spot; }
+// Lights at a single point (delta position): point, spot and projector.
+PS_INLINE bool is_point_light(const Light& l) {
+  return l.type == LightType::point || l.type == LightType::spot || l.type == LightType::projector;
+}
 PS_INLINE bool is_delta_light(const Light& l) { return is_point_light(l) || l.type == LightType::directional; }
 
-// pbrt-v4's spot falloff: smoothstep of the cosine between cos_total (0) and cos_falloff (1).
+// The spot falloff between cos_total (0) and cos_falloff (1): pbrt-v4's smoothstep of the cosine,
+// or Mitsuba's (cutoff - angle) / (cutoff - beam width).
 PS_INLINE float spot_falloff(const Light& l, const Vec3& w) {
   const float c = dot(w, l.direction);
   if (c <= l.cos_total) return 0.f;
   if (c >= l.cos_falloff) return 1.f;
+  if (l.falloff == SpotFalloff::linear_angle) {
+    const float cutoff = acosf(l.cos_total), beam = acosf(l.cos_falloff);
+    return fminf(1.f, fmaxf(0.f, (cutoff - acosf(fminf(c, 1.f))) / (cutoff - beam)));
+  }
   const float t = (c - l.cos_total) / (l.cos_falloff - l.cos_total);
   return t * t * (3.f - 2.f * t);
 }
 
-// Radiant intensity of a point or spot light towards the unit direction w (leaving the light).
+// Radiant intensity of a point or spot light towards the unit direction w (leaving the light),
+// before any image (scene/point_light_intensity.h multiplies spot and projector images in).
 PS_INLINE Rgb point_intensity(const Light& l, const Vec3& w) {
   return l.type == LightType::spot ? l.value * spot_falloff(l, w) : l.value;
 }

@@ -104,12 +104,22 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, Point2 u_
       e->p = l.position;
       e->d = f.to_world(square_to_uniform_cone(u_dir, l.cos_total));
       e->n = e->ng = e->d;
-      e->le = point_intensity(l, e->d);
+      e->le = point_light_intensity(scene, l, e->d);
       e->pdf_a = 1.f;
       e->pdf_w = uniform_cone_pdf(l.cos_total);
       e->weight = e->le * (1.f / e->pdf_w);
       e->delta_position = true;
       return !is_black(e->le);
+    }
+    case LightType::projector: {  // directions from uniform points of the image plane
+      e->p = l.position;
+      e->d = sample_projector_direction(l, u_dir, &e->pdf_w);
+      e->n = e->ng = e->d;
+      e->le = point_light_intensity(scene, l, e->d);
+      e->pdf_a = 1.f;
+      e->weight = e->le * (1.f / e->pdf_w);
+      e->delta_position = true;
+      return !is_black(e->le) && e->pdf_w > 0.f;
     }
     case LightType::directional:
     case LightType::environment: {
@@ -173,6 +183,10 @@ PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::spot:
       *pdf_a = 1.f;
       *pdf_w = dot(d, l.direction) > l.cos_total ? uniform_cone_pdf(l.cos_total) : 0.f;
+      return;
+    case LightType::projector:
+      *pdf_a = 1.f;
+      *pdf_w = projector_direction_pdf(l, d);
       return;
     case LightType::directional:
     case LightType::environment:

@@ -6,6 +6,7 @@
 
 #include "pathspace/geometry/interaction.h"
 #include "pathspace/scene/environment_light.h"
+#include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/warps.h"
@@ -83,14 +84,15 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       return s->pdf_w > 0.f && isfinite(s->pdf_w) && !is_black(s->li);
     }
     case LightType::point:
-    case LightType::spot: {
+    case LightType::spot:
+    case LightType::projector: {
       const Vec3 d = l.position - ref;
       const float d2 = length_squared(d);
       if (!(d2 > 0.f)) return false;
       s->dist = sqrtf(d2);
       s->wi = d / s->dist;
       s->p = l.position;
-      s->li = point_intensity(l, -s->wi) / d2;
+      s->li = point_light_intensity(scene, l, -s->wi) / d2;
       s->pdf_w = 1.f;
       s->delta = true;
       return !is_black(s->li);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pathspace/math/frame.h"
 #include "pathspace/scene/environment_image.h"
 #include "pathspace/scene/image_texture.h"
 #include "pathspace/scene/light_tree.h"
@@ -77,6 +78,10 @@ class Scene {
   void add_point_light(const Vec3& position, const Rgb& intensity);
   // pbrt-v4 spot light: intensity I on the axis, smoothstep falloff from cos_falloff to cos_total.
   void add_spot_light(const Vec3& position, const Vec3& axis, const Rgb& intensity, float cos_total, float cos_falloff);
+  // A projector at `position` looking along frame.n, its image plane spanned by frame.s (u) and
+  // frame.t (v): lights/light.h and scene/point_light_intensity.h say what the arguments mean.
+  void add_projector_light(const Vec3& position, const Frame& frame, const Rgb& value, int32_t texture, float uv_scale_u,
+                           float uv_scale_v, bool irradiance_plane);
   void add_directional_light(const Vec3& propagation_direction, const Rgb& irradiance);
   void add_environment_light(const Rgb& radiance);
   // An image environment: radiance = scale * image (lights/environment_map.h for the mappings).

@@ -137,7 +137,10 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     const FileLoc* at = src.find(K::kLight, i);
     check_non_negative(l.value, name + ": emission", at);
     if (is_point_light(l)) check_point(l.position, name, at);
-    if (l.type == LightType::directional || l.type == LightType::spot) check_direction(l.direction, name + ": direction", at);
+    if (l.type == LightType::directional || l.type == LightType::spot || l.type == LightType::projector)
+      check_direction(l.direction, name + ": direction", at);
+    if (l.type == LightType::projector && !(std::isfinite(l.uv_scale_u) && std::isfinite(l.uv_scale_v) && l.uv_scale_u != 0.f && l.uv_scale_v != 0.f))
+      fail(at, name + ": the projector's field of view is not valid");
   }
   for (size_t i = 0; i < scene.textures.size(); ++i)
     check_texels(scene.textures[i].texels, scene.textures[i].width, "texture " + std::to_string(i) + " ('" + scene.textures[i].name + "')",

@@ -202,8 +202,10 @@ PS_INLINE float max_photon_power(const SceneView& scene) {
         break;
       }
       case LightType::area_sphere: scale = kPi * kFourPi * scene.spheres[l.shape].radius * scene.spheres[l.shape].radius; break;
-      case LightType::point:
-      case LightType::spot: scale = kFourPi; break;
+      case LightType::point: scale = kFourPi; break;
+      case LightType::spot: scale = kFourPi * l.image_max; break;
+      // Uniform points of the image plane: the weight is at most value * image * plane area.
+      case LightType::projector: scale = 4.f * projector_half_width_u(l) * projector_half_width_v(l) * l.image_max; break;
       case LightType::directional: scale = disk; break;
       // An image's radiance over its pdf stays below 4 pi times the brightest texel in practice.
       case LightType::environment: scale = kFourPi * disk * (scene.environment_map.texels ? scene.environment_map.max_texel : 1.f); break;

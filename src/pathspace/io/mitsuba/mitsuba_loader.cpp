@@ -54,11 +54,8 @@ class Builder {
     const int h = options_.height > 0 ? options_.height : film_height_;
     if (!has_sensor_) w_->add(doc_.loc(doc_.scene()), "no <sensor>; using a camera at the origin looking along +z");
     // Mitsuba's fov spans fov_axis; pathspace's file camera takes the shorter image axis.
-    const double t = std::tan(fov_ * M_PI / 360.0), diag = std::hypot(double(w), double(h));
-    double tx = t, ty = t * h / w;
-    if (fov_axis_ == "y" || (fov_axis_ == "smaller" && h <= w) || (fov_axis_ == "larger" && h >= w)) tx = t * w / h, ty = t;
-    else if (fov_axis_ == "diagonal") tx = t * w / diag, ty = t * h / diag;
-    const float fov_short = float(2.0 * std::atan(std::min(tx, ty)) * 180.0 / M_PI);
+    const HalfTangents t = half_tangents(fov_, w, h);
+    const float fov_short = float(2.0 * std::atan(std::min(t.x, t.y)) * 180.0 / M_PI);
     if (!(fov_short > 0.f && fov_short < 180.f)) throw Error(sensor_loc_, "field of view must be between 0 and 180 degrees");
     const Mat4& m = camera_to_world_;
     const Vec3 forward = m.vector(Vec3(0, 0, 1)), up = m.vector(Vec3(0, 1, 0)), right = -m.vector(Vec3(1, 0, 0));
@@ -74,6 +71,42 @@ class Builder {
     if (settings) settings->spp = spp_;
     scene_.finalize();
     return std::move(scene_);
+  }
+
+  // Mitsuba's field of view (sensors and the projector): `fov` in degrees along `fov_axis` (x, y,
+  // diagonal, smaller, larger; default x), or `focal_length` (default 50mm) on a 35 mm film's
+  // diagonal.
+  struct FieldOfView {
+    double degrees = 45.0;
+    std::string axis = "x";
+  };
+  FieldOfView read_fov(const Object& o) const {
+    FieldOfView f;
+    f.axis = o.get_string("fov_axis", "x");
+    if (f.axis != "x" && f.axis != "y" && f.axis != "diagonal" && f.axis != "smaller" && f.axis != "larger")
+      throw Error(o.find("fov_axis") ? doc_.loc(o.find("fov_axis")->node) : o.loc(), "fov_axis must be x, y, diagonal, smaller or larger");
+    if (o.has("fov")) {
+      f.degrees = o.get_float("fov", 45.0);
+    } else {  // Mitsuba: a 35 mm film's diagonal (43.27 mm) seen through focal_length (default 50mm)
+      const std::string text = o.get_string("focal_length", "50mm");
+      const std::string digits = text.size() > 2 && text.substr(text.size() - 2) == "mm" ? text.substr(0, text.size() - 2) : text;
+      const double mm = parse_number(digits, o.loc());
+      if (!(mm > 0.0)) throw Error(o.loc(), "focal_length must be positive");
+      f.degrees = 2.0 * std::atan(std::hypot(36.0, 24.0) / (2.0 * mm)) * 180.0 / M_PI;
+      f.axis = "diagonal";
+    }
+    return f;
+  }
+
+  // Tangents of the half angles along x and y of a w x h image seen with field of view f.
+  struct HalfTangents {
+    double x = 1.0, y = 1.0;
+  };
+  static HalfTangents half_tangents(const FieldOfView& f, double w, double h) {
+    const double t = std::tan(f.degrees * M_PI / 360.0), diag = std::hypot(w, h);
+    if (f.axis == "y" || (f.axis == "smaller" && h <= w) || (f.axis == "larger" && h >= w)) return {t * w / h, t};
+    if (f.axis == "diagonal") return {t * w / diag, t * h / diag};
+    return {t, t * h / w};
   }
 
   void integrator(const Object& o) {
@@ -106,19 +139,7 @@ class Builder {
     }
     has_sensor_ = true;
     sensor_loc_ = o.loc();
-    fov_axis_ = o.get_string("fov_axis", "x");
-    if (fov_axis_ != "x" && fov_axis_ != "y" && fov_axis_ != "diagonal" && fov_axis_ != "smaller" && fov_axis_ != "larger")
-      throw Error(o.find("fov_axis") ? doc_.loc(o.find("fov_axis")->node) : o.loc(), "fov_axis must be x, y, diagonal, smaller or larger");
-    if (o.has("fov")) {
-      fov_ = o.get_float("fov", 45.0);
-    } else {  // Mitsuba: a 35 mm film's diagonal (43.27 mm) seen through focal_length (default 50mm)
-      const std::string f = o.get_string("focal_length", "50mm");
-      const std::string digits = f.size() > 2 && f.substr(f.size() - 2) == "mm" ? f.substr(0, f.size() - 2) : f;
-      const double mm = parse_number(digits, o.loc());
-      if (!(mm > 0.0)) throw Error(o.loc(), "focal_length must be positive");
-      fov_ = 2.0 * std::atan(std::hypot(36.0, 24.0) / (2.0 * mm)) * 180.0 / M_PI;
-      fov_axis_ = "diagonal";
-    }
+    fov_ = read_fov(o);
     camera_to_world_ = o.get_transform("to_world");
     o.ignore({"near_clip", "far_clip", "shutter_open", "shutter_close", "principal_point_offset_x", "principal_point_offset_y"});
     for (const pugi::xml_node& n : o.children("film")) film(Object(doc_, n));
@@ -213,6 +234,8 @@ class Builder {
       envmap(o);
     } else if (t == "spot") {
       spot(o);
+    } else if (t == "projector") {
+      projector(o);
     } else {
       w_->add(o.loc(), "emitter type '" + t + "' is not supported at the top level; skipped");
       o.ignore_all();
@@ -220,20 +243,72 @@ class Builder {
     o.warn_unused(w_);
   }
 
+  // The orthonormal frame of an emitter's to_world (x, y: an image's axes; z: where it points).
+  // Mitsuba maps directions through the inverse of to_world; with a non-uniform scale or a shear
+  // that differs from this frame (warning).
+  Frame emitter_frame(const Object& o, const Mat4& m) {
+    const Vec3 x = m.vector(Vec3(1, 0, 0)), y = m.vector(Vec3(0, 1, 0)), z = m.vector(Vec3(0, 0, 1));
+    if (!(length(x) > 0.f && length(y) > 0.f && length(z) > 0.f) || !all_finite(x) || !all_finite(y) || !all_finite(z) ||
+        !all_finite(m.point(Vec3())))
+      throw Error(o.loc(), o.title() + ": to_world is singular");
+    const Vec3 n = normalize(z);
+    const Vec3 s = normalize(x - n * dot(x, n));
+    const Vec3 t = normalize(y - n * dot(y, n) - s * dot(y, s));
+    if (!all_finite(s) || !all_finite(t)) throw Error(o.loc(), o.title() + ": to_world is singular");
+    const float lx = length(x), ly = length(y), lz = length(z);
+    if (std::fabs(dot(x, z)) > 1e-4f * lx * lz || std::fabs(dot(y, z)) > 1e-4f * ly * lz || std::fabs(dot(x, y)) > 1e-4f * lx * ly ||
+        std::fabs(lx - ly) > 1e-4f * lx)
+      w_->add(o.loc(), o.title() + ": to_world with a shear or non-uniform scale: its image is projected as if it were orthonormal");
+    return Frame(s, t, n);
+  }
+
   // Mitsuba's spot: at the to_world origin, along its +z; full intensity inside beam_width (default
-  // 3/4 of cutoff_angle, degrees), nothing beyond cutoff_angle. Mitsuba fades linearly in the angle
-  // between them, pathspace's spot with pbrt-v4's smoothstep in the cosine (warning when they differ).
+  // 3/4 of cutoff_angle, degrees), fading linearly in the angle to nothing at cutoff_angle; a bitmap
+  // `texture` over the cone at uv = 0.5 + 0.5 (x, y) / (z tan cutoff), as Mitsuba 3's spot.
   void spot(const Object& o) {
     const Mat4 m = o.get_transform("to_world");
     const double cutoff = o.get_float("cutoff_angle", 20.0);
     const double beam = o.get_float("beam_width", cutoff * 0.75);
     if (!(cutoff > 0.0 && cutoff <= 180.0) || !(beam >= 0.0)) throw Error(o.loc(), "spot emitter: need 0 < cutoff_angle <= 180 and beam_width >= 0");
     const double inner = std::min(beam, cutoff);
-    if (inner < cutoff) w_->add(o.loc(), "spot emitter: Mitsuba's falloff (linear in the angle) approximated by a smoothstep in the cosine");
-    const Vec3 axis = m.vector(Vec3(0, 0, 1));
-    if (!(length(axis) > 0.f) || !all_finite(axis)) throw Error(o.loc(), "spot emitter: to_world is singular");
-    scene_.add_spot_light(m.point(Vec3()), axis, o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded),
+    const Frame f = emitter_frame(o, m);
+    scene_.add_spot_light(m.point(Vec3()), f.n, o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded),
                           float(std::cos(cutoff * M_PI / 180.0)), float(std::cos(inner * M_PI / 180.0)));
+    Light& l = scene_.lights.back();
+    l.falloff = SpotFalloff::linear_angle;
+    if (!o.has("texture")) return;
+    int32_t texture = -1;
+    const Rgb scale = textured_rgb(o, "texture", Rgb(1.f), folder_, &textures_, w_, &texture);
+    if (texture < 0) throw Error(o.loc(), "spot emitter: texture must be a bitmap (as in Mitsuba 3)");
+    if (!(cutoff < 89.0)) throw Error(o.loc(), "spot emitter: a texture needs cutoff_angle below 89 degrees");
+    const float k = float(0.5 / std::tan(cutoff * M_PI / 180.0));
+    l.value *= scale;
+    l.texture = texture;
+    l.axis_u = f.s;
+    l.axis_v = f.t;
+    l.uv_scale_u = k;
+    l.uv_scale_v = -k;  // Mitsuba's v = 0 is the image's top row, pathspace's the bottom
+  }
+
+  // Mitsuba 3's projector: `irradiance` (a bitmap, or a constant) on the plane at distance 1 along
+  // to_world's +z, over the perspective sensor's field of view (fov, fov_axis, focal_length) for the
+  // image's aspect ratio, times `scale`: intensity pi scale irradiance / cos^3 (Mitsuba 3's
+  // projector.cpp), u running against to_world's x (Mitsuba's camera x axis points left).
+  void projector(const Object& o) {
+    if (!o.has("irradiance")) throw Error(o.loc(), "projector emitter needs irradiance");
+    const Mat4 m = o.get_transform("to_world");
+    const Frame f = emitter_frame(o, m);
+    const Property* p = o.find("irradiance");
+    int32_t texture = -1;
+    const Rgb irradiance = p->tag == "texture" || p->tag == "ref"
+                               ? textured_rgb(o, "irradiance", Rgb(1.f), folder_, &textures_, w_, &texture)
+                               : o.get_rgb("irradiance", Rgb(1.f), folder_, w_, SpectrumUse::unbounded);
+    const double aspect = texture >= 0 ? double(scene_.textures[size_t(texture)].width) / scene_.textures[size_t(texture)].height : 1.0;
+    const FieldOfView fov = read_fov(o);
+    if (!(fov.degrees > 0.0 && fov.degrees < 180.0)) throw Error(o.loc(), "projector emitter: fov must lie between 0 and 180 degrees");
+    const HalfTangents t = half_tangents(fov, aspect, 1.0);
+    const float scale = float(o.get_float("scale", 1.0));
+    scene_.add_projector_light(m.point(Vec3()), f, irradiance * (kPi * scale), texture, float(-0.5 / t.x), float(0.5 / t.y), true);
   }
 
   // An image environment: Mitsuba's lat-long mapping in the to_world frame (local y up,
@@ -270,9 +345,8 @@ class Builder {
   bool has_sensor_ = false, has_environment_ = false;
   FileLoc sensor_loc_;
   Mat4 camera_to_world_;
-  double fov_ = 45.0;
+  FieldOfView fov_;
   float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole
-  std::string fov_axis_ = "x";
   int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;
 };
 

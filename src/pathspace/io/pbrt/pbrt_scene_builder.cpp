@@ -12,6 +12,7 @@
 #include <set>
 
 #include "pathspace/io/environment_file.h"
+#include "pathspace/io/image_io.h"
 #include "pathspace/io/pbrt/pbrt_environment.h"
 #include "pathspace/io/pbrt/pbrt_materials.h"
 #include "pathspace/io/spectrum/white_balance.h"
@@ -316,6 +317,8 @@ class Builder {
       const float cos_total = float(std::cos(cone * M_PI / 180.0));
       const float cos_falloff = float(std::cos(std::max(0.0, cone - delta) * M_PI / 180.0));
       scene_.add_spot_light(gs_.ctm.point(f), axis, i, cos_total, cos_falloff);
+    } else if (type == "projection") {
+      projection_light(st, scale);
     } else if (type == "distant") {
       const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
       const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
@@ -338,6 +341,46 @@ class Builder {
       warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
       mark_all(st);
     }
+  }
+
+  // pbrt-v4's projection light (scene/point_light_intensity.h): the image `filename` through a
+  // perspective frustum along the light's +z, `fov` (default 90 degrees) across the image's shorter
+  // axis, intensity scale * image (nearest texel, as pbrt-v4 looks it up); the image's top row lies
+  // towards the light's -y, as pbrt-v4's screen space puts it. A missing image: no light (the
+  // end-of-scene error, or a warning with --substitute-missing-textures).
+  void projection_light(const Statement& st, float scale) {
+    const Param* file = st.find("filename");
+    if (!file || file->strings.size() != 1) throw Error(st.loc, "projection light needs \"string filename\"");
+    file->used = true;
+    if (image_missing(st, *file, "projection image", "no light")) {
+      mark_all(st);
+      return;
+    }
+    std::filesystem::path path(file->strings[0]);
+    if (path.is_relative()) path = std::filesystem::path(folder_of(st)) / path;
+    const double fov = st.get_float("fov", 90.0);
+    if (!(fov > 0.0 && fov < 180.0)) throw Error(st.find("fov")->loc, "projection light: fov must lie between 0 and 180 degrees");
+    ImageTexture image;
+    try {
+      Image read = read_image(path.string());
+      image.width = read.width;
+      image.height = read.height;
+      image.texels = std::move(read.pixels);
+    } catch (const Error& e) {
+      throw Error(file->loc, std::string("projection light: ") + e.what());
+    }
+    if (!all_finite(image.mean())) throw Error(file->loc, "projection light: the image holds NaN or infinite values");
+    image.name = path.string();
+    image.nearest = true;
+    const double aspect = double(image.width) / image.height;
+    const uint32_t texture = scene_.add_texture(std::move(image));
+    const double t = std::tan(fov * M_PI / 360.0);
+    const double tu = aspect > 1.0 ? t * aspect : t, tv = aspect > 1.0 ? t : t / aspect;
+    const Vec3 z = gs_.ctm.vector(Vec3(0, 0, 1)), x = gs_.ctm.vector(Vec3(1, 0, 0)), y = gs_.ctm.vector(Vec3(0, 1, 0));
+    if (!(length(x) > 0.f && length(y) > 0.f && length(z) > 0.f)) throw Error(st.loc, "projection light: the transform is singular");
+    const Vec3 n = normalize(z), u = normalize(x - n * dot(x, n)), v = normalize(y - n * dot(y, n) - u * dot(y, u));
+    scene_.add_projector_light(gs_.ctm.point(Vec3()), Frame(u, v, n), Rgb(scale), int32_t(texture), float(0.5 / tu),
+                               float(-0.5 / tv), false);
   }
 
   // Constant environments add up exactly, so a second infinite light joins the first (a Scene holds one).
