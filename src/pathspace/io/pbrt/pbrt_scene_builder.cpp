@@ -35,7 +35,16 @@ struct GraphicsState {
   bool area_light = false;
   Rgb area_radiance;
   bool area_two_sided = false;
+  float area_power = 0.f;  // pbrt-v4's "power" (> 0): each shape emits this much (pbrt_scene_builder.cpp, light_power)
 };
+
+// pbrt-v4's optional "power" of a light: > 0 rescales the emission so that the light emits it (0:
+// not given; pbrt-v4 ignores values <= 0 as well). Must be finite.
+float light_power_param(const Statement& st) {
+  const double power = st.get_float("power", 0.0);
+  if (!std::isfinite(power)) throw Error(st.find("power")->loc, "\"power\" must be finite");
+  return power > 0.0 ? float(power) : 0.f;
+}
 
 Vec3 vec_at(const std::vector<double>& v, size_t i) { return Vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2])); }
 
@@ -196,6 +205,7 @@ class Builder {
       gs_.area_radiance =
           spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * float(st.get_float("scale", 1.0));
       gs_.area_two_sided = st.get_bool("twosided", false);
+      gs_.area_power = light_power_param(st);
     } else if (d == "Shape") {
       shape(st);
     } else if (d == "ObjectBegin") {
@@ -300,8 +310,11 @@ class Builder {
   void light(const Statement& st) {
     const std::string& type = st.strings[0];
     const float scale = float(st.get_float("scale", 1.0));
+    const float power = light_power_param(st);
     if (type == "point") {
-      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
+      // pbrt-v4: "power" over the sphere of directions.
+      const Rgb i = spectrum_param(st, "I", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale *
+                    (power > 0.f ? power / float(4.0 * M_PI) : 1.f);
       const std::vector<double> from = st.get_numbers("from");
       scene_.add_point_light(gs_.ctm.point(from.size() == 3 ? vec_at(from, 0) : Vec3()), i);
     } else if (type == "spot") {
@@ -316,11 +329,16 @@ class Builder {
       if (!(cone > 0.0 && cone <= 180.0) || !(delta >= 0.0)) throw Error(st.loc, "spot light: need 0 < coneangle <= 180 and conedelta >= 0");
       const float cos_total = float(std::cos(cone * M_PI / 180.0));
       const float cos_falloff = float(std::cos(std::max(0.0, cone - delta) * M_PI / 180.0));
-      scene_.add_spot_light(gs_.ctm.point(f), axis, i, cos_total, cos_falloff);
+      // pbrt-v4: "power" over the cone, the smoothstep's ramp counted at half.
+      const float cone_solid_angle = float(2.0 * M_PI) * ((1.f - cos_falloff) + 0.5f * (cos_falloff - cos_total));
+      scene_.add_spot_light(gs_.ctm.point(f), axis, i * (power > 0.f ? power / cone_solid_angle : 1.f), cos_total, cos_falloff);
     } else if (type == "projection") {
-      projection_light(st, scale);
+      projection_light(st, scale, power);
     } else if (type == "distant") {
-      const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale;
+      // pbrt-v4: "illuminance" (> 0) is the irradiance on a surface facing the light.
+      const double illuminance = st.get_float("illuminance", -1.0);
+      const Rgb l = spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale *
+                    (illuminance > 0.0 ? float(illuminance) : 1.f);
       const std::vector<double> from = st.get_numbers("from"), to = st.get_numbers("to");
       const Vec3 f = from.size() == 3 ? vec_at(from, 0) : Vec3(), t = to.size() == 3 ? vec_at(to, 0) : Vec3(0, 0, 1);
       const Vec3 dir = gs_.ctm.vector(t - f);
@@ -336,7 +354,11 @@ class Builder {
         image_environment(st, *f, scale);
         return;
       }
-      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale, st.loc);
+      // pbrt-v4: "illuminance" (> 0) is the irradiance on an upward-facing patch, pi L.
+      const double illuminance = st.get_float("illuminance", -1.0);
+      add_environment(spectrum_param(st, "L", Rgb(1.f), textures_, warnings_, SpectrumUse::illuminant) * scale *
+                          (illuminance > 0.0 ? float(illuminance / M_PI) : 1.f),
+                      st.loc);
     } else {
       warn(st.loc, "LightSource \"" + type + "\" is not supported; skipped");
       mark_all(st);
@@ -348,7 +370,7 @@ class Builder {
   // axis, intensity scale * image (nearest texel, as pbrt-v4 looks it up); the image's top row lies
   // towards the light's -y, as pbrt-v4's screen space puts it. A missing image: no light (the
   // end-of-scene error, or a warning with --substitute-missing-textures).
-  void projection_light(const Statement& st, float scale) {
+  void projection_light(const Statement& st, float scale, float power) {
     const Param* file = st.find("filename");
     if (!file || file->strings.size() != 1) throw Error(st.loc, "projection light needs \"string filename\"");
     file->used = true;
@@ -381,6 +403,13 @@ class Builder {
     const Vec3 n = normalize(z), u = normalize(x - n * dot(x, n)), v = normalize(y - n * dot(y, n) - u * dot(y, u));
     scene_.add_projector_light(gs_.ctm.point(Vec3()), Frame(u, v, n), Rgb(scale), int32_t(texture), float(0.5 / tu),
                                float(-0.5 / tv), false);
+    if (power > 0.f) {  // pbrt-v4: scale * power / (the image's luminance power at scale 1)
+      Light& l = scene_.lights.back();
+      l.value = Rgb(1.f);
+      const float unit_power = scene_.light_power(scene_.lights.size() - 1);
+      if (!(unit_power > 0.f)) throw Error(st.loc, "projection light: \"power\" given for a black image");
+      l.value = Rgb(scale * power / unit_power);
+    }
   }
 
   // Constant environments add up exactly, so a second infinite light joins the first (a Scene holds one).
@@ -505,7 +534,9 @@ class Builder {
       const ObjectMesh m = type == "disk"           ? disk_mesh(st, warnings_)
                            : type == "bilinearmesh" ? bilinear_mesh(st, warnings_)
                                                     : loop_subdivision_mesh(st);
-      add_mesh(st, m.positions, m.normals, m.uvs, m.indices);
+      // pbrt-v4 makes a disk one shape, a bilinear mesh one per patch, a subdivision surface one per
+      // triangle: what "power" of an area light is emitted by (add_mesh).
+      add_mesh(st, m.positions, m.normals, m.uvs, m.indices, type == "disk" ? 0 : type == "bilinearmesh" ? 2 : 1);
     } else {
       warn(st.loc, "Shape \"" + type + "\" is not supported; skipped");
       mark_all(st);
@@ -542,12 +573,21 @@ class Builder {
     return gs_.area_radiance;
   }
 
+  // The radiance of an area light whose pbrt shape has area `area`: with pbrt-v4's "power", the shape
+  // emits that power, cosine-distributed from one side (two with twosided).
+  Rgb shape_radiance(const Rgb& le, double area) const {
+    if (!(gs_.area_power > 0.f) || is_black(le)) return le;
+    return area > 0.0 ? le * float(gs_.area_power / ((gs_.area_two_sided ? 2.0 : 1.0) * M_PI * area)) : Rgb();
+  }
+
   // Positions, shading normals (N, with ReverseOrientation applied as for the face orientation) and
-  // uvs go to the scene's vertex arrays; N also orients the faces.
+  // uvs go to the scene's vertex arrays; N also orients the faces. `triangles_per_shape`: how many
+  // consecutive triangles make one pbrt-v4 shape (1: triangle meshes, 2: bilinear patches, 0: all of
+  // them), the area an area light's "power" is spread over.
   void add_mesh(const Statement& st, const std::vector<Vec3>& pos, const std::vector<Vec3>& normals,
-                const std::vector<std::array<float, 2>>& uvs, const std::vector<uint32_t>& idx) {
+                const std::vector<std::array<float, 2>>& uvs, const std::vector<uint32_t>& idx, int triangles_per_shape = 1) {
     const uint32_t material = shape_material(st);
-    const Rgb le = emission(st, material);
+    const Rgb le_shape = emission(st, material);
     Mat4 inv;
     if (!gs_.ctm.inverse(&inv)) throw Error(st.loc, "shape transform is singular");
     const bool flip_default = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
@@ -557,8 +597,22 @@ class Builder {
       scene_.uvs.resize(base);
       for (const auto& t : uvs) scene_.uvs.push_back(Point2{t[0], t[1]});
     }
+    // Each triangle's pbrt shape's area in world space (for "power").
+    std::vector<double> shape_area(idx.size() / 3, 0.0);
+    if (gs_.area_power > 0.f) {
+      const size_t n = shape_area.size(), group = triangles_per_shape > 0 ? size_t(triangles_per_shape) : std::max<size_t>(n, 1);
+      for (size_t first = 0; first < n; first += group) {
+        double sum = 0.0;
+        for (size_t t = first; t < std::min(n, first + group); ++t) {
+          const Vec3 a = scene_.positions[base + idx[3 * t]], b = scene_.positions[base + idx[3 * t + 1]], c = scene_.positions[base + idx[3 * t + 2]];
+          sum += 0.5 * double(length(cross(b - a, c - a)));
+        }
+        for (size_t t = first; t < std::min(n, first + group); ++t) shape_area[t] = sum;
+      }
+    }
     bool smooth = false;
     for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+      const Rgb le = shape_radiance(le_shape, shape_area[t / 3]);
       uint32_t v[3] = {base + idx[t], base + idx[t + 1], base + idx[t + 2]};
       const Vec3 ng = cross(scene_.positions[v[1]] - scene_.positions[v[0]], scene_.positions[v[2]] - scene_.positions[v[0]]);
       const float area2 = length(ng);
@@ -608,7 +662,8 @@ class Builder {
       throw Error(st.loc, "sphere under a non-uniform scale or shear is not supported");
     if (!(radius > 0.f)) throw Error(st.loc, "sphere radius must be > 0");
     const uint32_t material = shape_material(st);
-    const Rgb le = emission(st, material);
+    const double world_radius = double(radius) * double(s);
+    const Rgb le = shape_radiance(emission(st, material), 4.0 * M_PI * world_radius * world_radius);
     if (!is_black(le) && gs_.area_two_sided) warn(st.loc, "two-sided emission of a sphere: only the outside emits");
     const bool inward = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
     scene_.add_sphere(gs_.ctm.point(Vec3()), radius * s, material, le, inward);
