@@ -5,8 +5,8 @@
 //  - the same with an opacity texture: each pixel is 1 minus the opacity averaged over its
 //    footprint (quadrature over the same camera rays and lookups);
 //  - a white floor under a directional light shaded by a black cutout of opacity a above the
-//    camera: L = (1 - a) rho E / pi, by path tracing, light tracing and BPT (shadow rays, light
-//    paths and connections through cutouts).
+//    camera: L = (1 - a) rho E / pi, by path tracing, light tracing, BPT, SPPM and PCLT (shadow
+//    rays, light paths, connections and photons through cutouts).
 #include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"
@@ -19,7 +19,7 @@ namespace {
 
 using testing::Rendered;
 
-constexpr int kComparisons = 6;
+constexpr int kComparisons = 8;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 constexpr float kOpacity = 0.35f;
 
@@ -115,6 +115,14 @@ TEST(CutoutRender, ShadowsThroughACutoutMatchTheClosedForm) {
   lt.light_paths = 16384;
   expect_matches(testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(405)), 256), expected, "lt");
   expect_matches(testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(406)), 128), expected, "bpt");
+  // The gathering estimators: photons and light paths through the cutout onto a floor lit evenly, so
+  // their radius adds no bias.
+  SppmSettings sppm;
+  sppm.photons = 16384;
+  expect_matches(testing::render_integrator(scene, accel, make_render_config("sppm", sppm, testing::test_seed(407)), 64), expected, "sppm");
+  PcltSettings pclt;
+  pclt.light_paths = 16384;
+  expect_matches(testing::render_integrator(scene, accel, make_render_config("pclt", pclt, testing::test_seed(408)), 64), expected, "pclt");
 }
 
 }  // namespace
