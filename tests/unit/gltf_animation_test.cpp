@@ -231,13 +231,67 @@ TEST(GltfAnimation, AnotherAnimationByIndexOrName) {
   }
 }
 
-TEST(GltfAnimation, MorphWeightsAreAWarningAndStandStill) {
+// The unit triangle with one morph target that lifts every vertex by (0, 0, 1) and one that moves
+// vertex 1 by (1, 0, 0); `mesh_extra` and `node_extra` add to the mesh and node objects.
+std::string morph_file(GltfBuilder& b, const std::string& animations, const std::string& mesh_extra = "", const std::string& node_extra = "") {
+  const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int lift = b.floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3"), stretch = b.floats({0, 0, 0, 1, 0, 0, 0, 0, 0}, "VEC3");
+  return b.gltf(R"("scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0)" + node_extra + R"(},{"extensions":{"KHR_lights_punctual":{"light":0}}}],)"
+                R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(pos) + R"(},"targets":[{"POSITION":)" +
+                std::to_string(lift) + R"(},{"POSITION":)" + std::to_string(stretch) + "}]}]" + mesh_extra + "}],"
+                R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}})" +
+                (animations.empty() ? "" : ",\"animations\":" + animations));
+}
+
+TEST(GltfAnimation, MorphTargetsBlendByTheWeights) {
   testing::TempDir dir("gltf-anim");
+  std::vector<std::string> w;
+  // Still: the mesh's weights, or the node's in their place.
+  GltfBuilder b1;
+  testing::write_bytes(dir.file("m.gltf"), morph_file(b1, "", R"(,"weights":[0.5,2])"));
+  const Scene m = load_scene(dir.file("m.gltf"), {}, &w);
+  expect_near(vertex(m, 0), Vec3(0, 0, 0.5f));
+  expect_near(vertex(m, 1), Vec3(3, 0, 0.5f));
+  GltfBuilder b2;
+  testing::write_bytes(dir.file("n.gltf"), morph_file(b2, "", R"(,"weights":[0.5,2])", R"(,"weights":[0.25,0])"));
+  expect_near(vertex(load_scene(dir.file("n.gltf"), {}, &w), 1), Vec3(1, 0, 0.25f));
+  // Animated: two weights per key, LINEAR between keys at 0 s and 2 s; the mesh moves, so its
+  // triangles are the moving part of each frame.
   GltfBuilder b;
-  const int in = b.floats({0, 1}, "SCALAR"), out = b.floats({0, 1}, "SCALAR");
-  const Animated a = load(dir, "w.gltf", triangle_file(b, one_channel(0, "weights", in, out, "LINEAR")));
-  EXPECT_FALSE(a.scene_at) << "no node channel: the file stands still";
-  EXPECT_TRUE(a.warned("animations[0].channels[0].target.path 'weights' not supported (morph targets)"));
+  const int in = b.floats({0, 2}, "SCALAR"), out = b.floats({0, 0, 1, 0.5f}, "SCALAR");
+  const Animated a = load(dir, "a.gltf", morph_file(b, one_channel(0, "weights", in, out, "LINEAR")));
+  ASSERT_TRUE(a.scene_at);
+  const Scene half = a.scene_at(1.0);
+  expect_near(vertex(half, 0), Vec3(0, 0, 0.5f));
+  expect_near(vertex(half, 1), Vec3(1.25f, 0, 0.5f));
+  EXPECT_EQ(half.first_moving_triangle, 0u);
+  expect_near(vertex(a.scene_at(5.0), 1), Vec3(1.5f, 0, 1), "after the last key: clamped");
+  // STEP holds the first key's weights until the second.
+  GltfBuilder bs;
+  const int ins = bs.floats({0, 2}, "SCALAR"), outs = bs.floats({0, 0, 1, 0.5f}, "SCALAR");
+  expect_near(vertex(load(dir, "s.gltf", morph_file(bs, one_channel(0, "weights", ins, outs, "STEP"))).scene_at(1.9), 0), Vec3(0, 0, 0));
+}
+
+TEST(GltfAnimation, MorphTargetErrors) {
+  testing::TempDir dir("gltf-anim");
+  std::vector<std::string> w;
+  GltfBuilder b1;
+  testing::write_bytes(dir.file("count.gltf"), morph_file(b1, "", R"(,"weights":[0.5])"));
+  EXPECT_THROW(load_scene(dir.file("count.gltf"), {}, &w), Error);  // two targets, one weight
+  // A weights channel on a mesh without morph targets; with the wrong number of outputs.
+  GltfBuilder b2;
+  const int in = b2.floats({0, 1}, "SCALAR"), out = b2.floats({0, 1}, "SCALAR");
+  testing::write_bytes(dir.file("none.gltf"), triangle_file(b2, one_channel(0, "weights", in, out, "LINEAR")));
+  try {
+    load_scene_animation(dir.file("none.gltf"), {}, &w);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("whose mesh has no morph targets"), std::string::npos) << e.what();
+  }
+  GltfBuilder b3;
+  const int in3 = b3.floats({0, 1}, "SCALAR"), out3 = b3.floats({0, 1, 0}, "SCALAR");
+  testing::write_bytes(dir.file("outputs.gltf"), morph_file(b3, one_channel(0, "weights", in3, out3, "LINEAR")));
+  EXPECT_THROW(load_scene_animation(dir.file("outputs.gltf"), {}, &w), Error);
 }
 
 TEST(GltfAnimation, FilesWithoutAnimationStandStill) {

@@ -27,21 +27,27 @@ struct GltfAnimation::State {
 
   Context context(LoadWarnings* warnings) const { return Context{model, path, folder, warnings}; }
 
-  // The local transforms of the animated nodes at `seconds`: their own T, R, S with the animated ones replaced.
+  // The animated nodes at `seconds`: their own T, R, S with the animated ones replaced, and the
+  // morph weights of those whose weights are animated.
   NodePose pose_at(const Context& c, double seconds) const {
     NodePose pose;
     if (channels.empty()) return pose;
     std::vector<std::optional<Trs>> trs(model.nodes.size());
+    pose.weights.resize(model.nodes.size());
     for (const Channel& ch : channels) {
+      if (ch.property == AnimatedProperty::weights) {
+        pose.weights[size_t(ch.node)] = sample_values(ch, seconds);
+        continue;
+      }
       std::optional<Trs>& t = trs[size_t(ch.node)];
       if (!t) t = node_trs(c, model.nodes[size_t(ch.node)], element("nodes", size_t(ch.node)));
       const std::array<double, 4> v = sample(ch, seconds);
       double* target = ch.property == AnimatedProperty::translation ? t->t : ch.property == AnimatedProperty::rotation ? t->q : t->s;
       std::copy_n(v.begin(), ch.components(), target);
     }
-    pose.resize(trs.size());
+    pose.local.resize(trs.size());
     for (size_t i = 0; i < trs.size(); ++i)
-      if (trs[i]) pose[i] = trs_affine(*trs[i]);
+      if (trs[i]) pose.local[i] = trs_affine(*trs[i]);
     return pose;
   }
 };

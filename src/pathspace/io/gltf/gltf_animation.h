@@ -1,6 +1,7 @@
 // A glTF file whose scene can be produced at any time of its animation: node `translation`,
 // `rotation` and `scale` channels (gltf_channels.h, sampled by gltf_interpolation.h) move the meshes,
-// the KHR_lights_punctual lights and the camera of the animated nodes and their descendants.
+// the KHR_lights_punctual lights and the camera of the animated nodes and their descendants, and
+// `weights` channels blend their meshes' morph targets (gltf_meshes.h).
 // Only the file's first animation plays: glTF animations are separate clips (a walk, a run) that
 // often drive the same nodes, so playing them together would mix them; the others are a warning.
 // The file is parsed and checked once; each time re-walks the node trees with the animated local

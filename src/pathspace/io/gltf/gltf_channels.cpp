@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "pathspace/io/gltf/gltf_accessors.h"
+#include "pathspace/io/gltf/gltf_meshes.h"
 
 namespace pathspace::gltf {
 
@@ -63,15 +64,23 @@ std::vector<Channel> read_channels(const Context& c, size_t animation) {
     if (path == "translation") ch.property = AnimatedProperty::translation;
     else if (path == "rotation") ch.property = AnimatedProperty::rotation;
     else if (path == "scale") ch.property = AnimatedProperty::scale;
+    else if (path == "weights") ch.property = AnimatedProperty::weights;
     else {
-      c.warn(ch.name + ".target.path '" + path + "' not supported (" + (path == "weights" ? "morph targets" : "unknown path") +
-             "); channel skipped");
+      c.warn(ch.name + ".target.path '" + path + "' not supported (unknown path); channel skipped");
       continue;
     }
     check_index(c, ac.target_node, c.model.nodes.size(), ch.name + ".target.node");
     ch.node = ac.target_node;
     const std::string node = element("nodes", size_t(ch.node));
-    if (!c.model.nodes[size_t(ch.node)].matrix.empty()) c.fail(ch.name + " animates " + node + ", which has a matrix (glTF allows TRS only)");
+    const tinygltf::Node& target = c.model.nodes[size_t(ch.node)];
+    if (ch.property == AnimatedProperty::weights) {
+      if (target.mesh < 0) c.fail(ch.name + " animates the morph weights of " + node + ", which has no mesh");
+      check_index(c, target.mesh, c.model.meshes.size(), node + ".mesh");
+      ch.targets = morph_target_count(c, target.mesh);
+      if (ch.targets == 0) c.fail(ch.name + " animates the morph weights of " + node + ", whose mesh has no morph targets");
+    } else if (!target.matrix.empty()) {
+      c.fail(ch.name + " animates " + node + ", which has a matrix (glTF allows TRS only)");
+    }
     if (!targets.insert({ch.node, ch.property}).second) c.fail(ch.name + ": " + node + "." + path + " is animated twice in " + anim);
 
     check_index(c, ac.sampler, a.samplers.size(), ch.name + ".sampler");
@@ -80,12 +89,15 @@ std::vector<Channel> read_channels(const Context& c, size_t animation) {
     ch.interpolation = interpolation_of(c, s.interpolation, sampler);
     ch.times = to_double(read_floats(c, s.input, TINYGLTF_TYPE_SCALAR, false, sampler + ".input"));
     check_times(c, ch.times, sampler + ".input");
-    const int type = ch.property == AnimatedProperty::rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3;
-    // Rotations may be stored as normalized integers (the glTF spec); read_floats takes the unsigned ones.
-    ch.values = to_double(read_floats(c, s.output, type, ch.property == AnimatedProperty::rotation, sampler + ".output"));
+    const int type = ch.property == AnimatedProperty::rotation  ? TINYGLTF_TYPE_VEC4
+                     : ch.property == AnimatedProperty::weights ? TINYGLTF_TYPE_SCALAR
+                                                                : TINYGLTF_TYPE_VEC3;
+    // Rotations and weights may be stored as normalized integers (the glTF spec); read_floats takes the unsigned ones.
+    const bool normalized = ch.property == AnimatedProperty::rotation || ch.property == AnimatedProperty::weights;
+    ch.values = to_double(read_floats(c, s.output, type, normalized, sampler + ".output"));
     const size_t per_key = ch.interpolation == Interpolation::cubic_spline ? 3 : 1;
     const size_t have = ch.values.size() / ch.components(), want = ch.times.size() * per_key;
-    if (have != want)
+    if (have != want || ch.values.size() % ch.components() != 0)
       c.fail(sampler + ".output has " + std::to_string(have) + " values for " + std::to_string(ch.times.size()) + " key times; expected " +
              std::to_string(want) + (per_key == 3 ? " (CUBICSPLINE: in-tangent, value, out-tangent per key)" : ""));
     if (ch.property == AnimatedProperty::rotation) normalize_rotations(c, &ch);

@@ -19,16 +19,15 @@ bool normalize(Quaternion* q) {
   return true;
 }
 
-std::array<double, 4> value(const Channel& ch, size_t index) {
-  std::array<double, 4> v{0, 0, 0, 0};
-  std::copy_n(ch.values.begin() + std::ptrdiff_t(index * ch.components()), ch.components(), v.begin());
-  return v;
-}
+// The `index`-th stored value (components() numbers; CUBICSPLINE: in-tangent, value, out-tangent per key).
+const double* value(const Channel& ch, size_t index) { return ch.values.data() + index * ch.components(); }
 
-// CUBICSPLINE stores in-tangent, value, out-tangent for every key.
-std::array<double, 4> key_value(const Channel& ch, size_t key) {
+// The value of key `key`.
+const double* key_value(const Channel& ch, size_t key) {
   return value(ch, ch.interpolation == Interpolation::cubic_spline ? 3 * key + 1 : key);
 }
+
+Quaternion quaternion(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
 }  // namespace
 
@@ -51,35 +50,51 @@ Quaternion slerp(const Quaternion& a, const Quaternion& b_in, double u) {
   return r;
 }
 
-std::array<double, 4> sample(const Channel& ch, double seconds) {
+std::vector<double> sample_values(const Channel& ch, double seconds) {
   const std::vector<double>& t = ch.times;
-  if (!(seconds > t.front())) return key_value(ch, 0);  // before the first key (or at it): clamped
-  if (seconds >= t.back()) return key_value(ch, t.size() - 1);
+  const size_t n = ch.components();
+  const auto copy = [n](const double* v) { return std::vector<double>(v, v + n); };
+  if (!(seconds > t.front())) return copy(key_value(ch, 0));  // before the first key (or at it): clamped
+  if (seconds >= t.back()) return copy(key_value(ch, t.size() - 1));
   const size_t k = size_t(std::upper_bound(t.begin(), t.end(), seconds) - t.begin()) - 1;  // t[k] <= seconds < t[k+1]
   const double dt = t[k + 1] - t[k], u = (seconds - t[k]) / dt;
   const bool rotation = ch.property == AnimatedProperty::rotation;
   switch (ch.interpolation) {
-    case Interpolation::step: return key_value(ch, k);
+    case Interpolation::step: return copy(key_value(ch, k));
     case Interpolation::linear: {
-      const std::array<double, 4> a = key_value(ch, k), b = key_value(ch, k + 1);
-      if (rotation) return slerp(a, b, u);
-      std::array<double, 4> r{0, 0, 0, 0};
-      for (size_t i = 0; i < 3; ++i) r[i] = a[i] + u * (b[i] - a[i]);
+      const double *a = key_value(ch, k), *b = key_value(ch, k + 1);
+      if (rotation) {
+        const Quaternion q = slerp(quaternion(a), quaternion(b), u);
+        return {q.begin(), q.end()};
+      }
+      std::vector<double> r(n);
+      for (size_t i = 0; i < n; ++i) r[i] = a[i] + u * (b[i] - a[i]);
       return r;
     }
     case Interpolation::cubic_spline: {
-      const std::array<double, 4> v0 = value(ch, 3 * k + 1), out0 = value(ch, 3 * k + 2);
-      const std::array<double, 4> in1 = value(ch, 3 * (k + 1)), v1 = value(ch, 3 * (k + 1) + 1);
+      const double *v0 = value(ch, 3 * k + 1), *out0 = value(ch, 3 * k + 2);
+      const double *in1 = value(ch, 3 * (k + 1)), *v1 = value(ch, 3 * (k + 1) + 1);
       const double u2 = u * u, u3 = u2 * u;
       const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
-      std::array<double, 4> r{0, 0, 0, 0};
-      for (size_t i = 0; i < ch.components(); ++i) r[i] = h00 * v0[i] + h10 * dt * out0[i] + h01 * v1[i] + h11 * dt * in1[i];
-      // Tangents can pull a rotation through zero; the spherical path between the two keys stands in.
-      if (rotation && !normalize(&r)) return slerp(v0, v1, u);
+      std::vector<double> r(n);
+      for (size_t i = 0; i < n; ++i) r[i] = h00 * v0[i] + h10 * dt * out0[i] + h01 * v1[i] + h11 * dt * in1[i];
+      if (rotation) {
+        // Tangents can pull a rotation through zero; the spherical path between the two keys stands in.
+        Quaternion q = quaternion(r.data());
+        if (!normalize(&q)) q = slerp(quaternion(v0), quaternion(v1), u);
+        return {q.begin(), q.end()};
+      }
       return r;
     }
   }
-  return key_value(ch, k);
+  return copy(key_value(ch, k));
+}
+
+std::array<double, 4> sample(const Channel& ch, double seconds) {
+  const std::vector<double> v = sample_values(ch, seconds);
+  std::array<double, 4> r{0, 0, 0, 0};
+  std::copy_n(v.begin(), std::min<size_t>(4, v.size()), r.begin());
+  return r;
 }
 
 }  // namespace pathspace::gltf

@@ -32,13 +32,14 @@ class SceneWalk {
     visited_[size_t(index)] = true;
     const std::string name = element("nodes", size_t(index));
     const tinygltf::Node& n = m.nodes[size_t(index)];
-    const bool posed = size_t(index) < pose_.size() && pose_[size_t(index)].has_value();
-    const bool moves = parent_moves || posed;  // an animated node, or below one
-    const Affine world = parent * (posed ? *pose_[size_t(index)] : local_transform(c_, n, name));
+    const bool posed = size_t(index) < pose_.local.size() && pose_.local[size_t(index)].has_value();
+    const bool morphed = size_t(index) < pose_.weights.size() && pose_.weights[size_t(index)].has_value();
+    const bool moves = parent_moves || posed || morphed;  // an animated node, or below one
+    const Affine world = parent * (posed ? *pose_.local[size_t(index)] : local_transform(c_, n, name));
     if (n.skin >= 0 && part_ != Part::moving) c_.warn(name + ".skin ignored; the mesh is drawn as stored (bind pose)");
     if (n.mesh >= 0 && (part_ == Part::all || (part_ == Part::moving) == moves)) {
       check_index(c_, n.mesh, m.meshes.size(), name + ".mesh");
-      add_mesh(c_, n.mesh, world, materials_, scene_);
+      add_mesh(c_, n.mesh, world, morphed ? *pose_.weights[size_t(index)] : default_morph_weights(c_, n, name), materials_, scene_);
     }
     if (part_ == Part::moving) {  // lights and the camera were placed by the walk of the still part
       for (size_t i = 0; i < n.children.size(); ++i) node(n.children[i], world, name + "." + element("children", i), depth + 1, moves);
@@ -127,7 +128,8 @@ void walk_roots(const Context& c, SceneWalk& walk, bool report) {
 }  // namespace
 
 CameraNode add_scene_nodes(const Context& c, const NodePose& pose, Materials* materials, Scene* scene) {
-  const bool animated = std::any_of(pose.begin(), pose.end(), [](const std::optional<Affine>& p) { return p.has_value(); });
+  const bool animated = std::any_of(pose.local.begin(), pose.local.end(), [](const auto& p) { return p.has_value(); }) ||
+                        std::any_of(pose.weights.begin(), pose.weights.end(), [](const auto& w) { return w.has_value(); });
   if (!animated) {  // a still file: one walk, in the file's order
     SceneWalk walk(c, pose, materials, scene);
     walk_roots(c, walk, true);

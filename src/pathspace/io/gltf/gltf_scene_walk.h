@@ -12,8 +12,12 @@
 
 namespace pathspace::gltf {
 
-// Local transforms indexed by node: an entry replaces the node's own; nullopt (or past the end): its own.
-using NodePose = std::vector<std::optional<Affine>>;
+// An animation's state of the nodes, indexed by node: an entry replaces the node's own local
+// transform, or the morph weights its mesh is drawn with; nullopt (or past the end): its own.
+struct NodePose {
+  std::vector<std::optional<Affine>> local;
+  std::vector<std::optional<std::vector<double>>> weights;
+};
 
 // The first camera's node met in the walk (index -1: none) and its world transform.
 struct CameraNode {
