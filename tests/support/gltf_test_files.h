@@ -26,6 +26,8 @@ class GltfBuilder {
   int floats(const std::vector<float>& v, const std::string& type) { return add(v.data(), v.size() * 4, 5126, type, count_of(v.size(), type)); }
   // An accessor of unsigned int indices.
   int indices(const std::vector<uint32_t>& v) { return add(v.data(), v.size() * 4, 5125, "SCALAR", v.size()); }
+  // An accessor of unsigned int elements ("VEC4": skin joints).
+  int uints(const std::vector<uint32_t>& v, const std::string& type) { return add(v.data(), v.size() * 4, 5125, type, count_of(v.size(), type)); }
   // A bufferView holding raw bytes (an embedded image); returns the view's index.
   int view(const std::string& bytes) { return add_view(bytes.data(), bytes.size()); }
 
@@ -51,7 +53,9 @@ class GltfBuilder {
   }
 
  private:
-  static size_t count_of(size_t n, const std::string& type) { return type == "VEC2" ? n / 2 : type == "VEC3" ? n / 3 : type == "VEC4" ? n / 4 : n; }
+  static size_t count_of(size_t n, const std::string& type) {
+    return type == "VEC2" ? n / 2 : type == "VEC3" ? n / 3 : type == "VEC4" ? n / 4 : type == "MAT4" ? n / 16 : n;
+  }
   static void u32(std::string* s, uint32_t v) { s->append(reinterpret_cast<const char*>(&v), 4); }
   int add_view(const void* p, size_t bytes) {
     while (data_.size() % 4) data_ += '\0';

@@ -272,6 +272,46 @@ TEST(GltfAnimation, MorphTargetsBlendByTheWeights) {
   expect_near(vertex(load(dir, "s.gltf", morph_file(bs, one_channel(0, "weights", ins, outs, "STEP"))).scene_at(1.9), 0), Vec3(0, 0, 0));
 }
 
+// A triangle skinned to two joints (glTF sec. 3.7.3): vertex 0 to joint 0 (node 1, at rest), vertex
+// 1 to joint 1 (node 2, whose translation is animated from (1,0,0) to (1,0,2) over 2 s; its inverse
+// bind matrix undoes the rest translation), vertex 2 half to each. The mesh node's own translation
+// (5,5,5) must not apply.
+std::string skinned_file(GltfBuilder& b, const std::string& animations) {
+  const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int joints = b.uints({0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}, "VEC4");
+  const int weights = b.floats({1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}, "VEC4");
+  const int ibm = b.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,  // column-major: identity
+                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1},  // translate (-1, 0, 0)
+                           "MAT4");
+  return b.gltf(R"("scenes":[{"nodes":[0,1,2,3]}],"nodes":[{"mesh":0,"skin":0,"translation":[5,5,5]},{},{"translation":[1,0,0]},)"
+                R"({"extensions":{"KHR_lights_punctual":{"light":0}}}],"skins":[{"joints":[1,2],"inverseBindMatrices":)" +
+                std::to_string(ibm) + R"(}],"meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(pos) +
+                R"(,"JOINTS_0":)" + std::to_string(joints) + R"(,"WEIGHTS_0":)" + std::to_string(weights) + "}}]}],"
+                R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}})" +
+                (animations.empty() ? "" : ",\"animations\":" + animations));
+}
+
+TEST(GltfAnimation, SkinsFollowTheirJoints) {
+  testing::TempDir dir("gltf-anim");
+  std::vector<std::string> w;
+  GltfBuilder still;
+  testing::write_bytes(dir.file("still.gltf"), skinned_file(still, ""));
+  const Scene rest = load_scene(dir.file("still.gltf"), {}, &w);
+  expect_near(vertex(rest, 0), Vec3(0, 0, 0), "the bind pose; the mesh node's translation does not apply");
+  expect_near(vertex(rest, 1), Vec3(1, 0, 0));
+  expect_near(vertex(rest, 2), Vec3(0, 1, 0));
+  for (const std::string& m : w) EXPECT_EQ(m.find("JOINTS_0"), std::string::npos) << m;
+  GltfBuilder b;
+  const int in = b.floats({0, 2}, "SCALAR"), out = b.floats({1, 0, 0, 1, 0, 2}, "VEC3");
+  const Animated a = load(dir, "skin.gltf", skinned_file(b, one_channel(2, "translation", in, out, "LINEAR")));
+  ASSERT_TRUE(a.scene_at);
+  const Scene s = a.scene_at(1.0);
+  expect_near(vertex(s, 0), Vec3(0, 0, 0));
+  expect_near(vertex(s, 1), Vec3(1, 0, 1), "moves with joint 1");
+  expect_near(vertex(s, 2), Vec3(0, 1, 0.5f), "half with each joint");
+  EXPECT_EQ(s.first_moving_triangle, 0u) << "a skinned mesh moves with its joints";
+}
+
 TEST(GltfAnimation, MorphTargetErrors) {
   testing::TempDir dir("gltf-anim");
   std::vector<std::string> w;

@@ -28,6 +28,7 @@ size_t components_of(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT4: return 16;
     default: return 0;
   }
 }
@@ -100,6 +101,21 @@ std::vector<float> read_floats(const Context& c, int index, int type, bool allow
       else x = float(load<uint16_t>(p)) / 65535.f;
       if (!std::isfinite(x)) c.fail(element("accessors", size_t(index)) + " (" + what + ") holds a NaN or infinite value");
       out[i * n + k] = x;
+    }
+  return out;
+}
+
+std::vector<uint32_t> read_unsigned(const Context& c, int index, int type, const std::string& what) {
+  const ElementSpan s = locate(c, index, type, what);
+  const int ct = c.model.accessors[size_t(index)].componentType;
+  if (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    c.fail(element("accessors", size_t(index)) + " (" + what + ") has componentType " + std::to_string(ct) + "; expected an unsigned integer type");
+  const size_t n = components_of(type), size = component_size(ct);
+  std::vector<uint32_t> out(s.count * n);
+  for (size_t i = 0; i < s.count; ++i)
+    for (size_t k = 0; k < n; ++k) {
+      const unsigned char* p = s.at(i) + k * size;
+      out[i * n + k] = size == 1 ? *p : size == 2 ? load<uint16_t>(p) : load<uint32_t>(p);
     }
   return out;
 }

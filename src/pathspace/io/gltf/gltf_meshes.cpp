@@ -6,6 +6,7 @@
 #include <set>
 
 #include "pathspace/io/gltf/gltf_accessors.h"
+#include "pathspace/io/gltf/gltf_skin.h"
 
 namespace pathspace::gltf {
 
@@ -32,15 +33,16 @@ void blend_morph_targets(const Context& c, const tinygltf::Primitive& p, const s
   }
 }
 
-void add_primitive(const Context& c, const tinygltf::Primitive& p, const std::string& name, const Affine& world,
-                   const std::vector<double>& weights, Materials* materials, Scene* scene) {
+void add_primitive(const Context& c, const tinygltf::Primitive& p, const std::string& name, const Affine& world_of_node,
+                   const std::vector<double>& weights, const std::vector<Affine>* joints, Materials* materials, Scene* scene) {
   const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES) {
     c.warn(name + ".mode " + std::to_string(mode) + " (points, lines, strips or fans) not supported; primitive skipped");
     return;
   }
   for (const auto& [attr, accessor] : p.attributes)
-    if (attr != "POSITION" && attr != "NORMAL" && attr != "TEXCOORD_0") c.warn(name + ".attributes." + attr + " ignored");
+    if (attr != "POSITION" && attr != "NORMAL" && attr != "TEXCOORD_0" && !(joints && (attr == "JOINTS_0" || attr == "WEIGHTS_0")))
+      c.warn(name + ".attributes." + attr + " ignored");
   const int pos_index = attribute(p, "POSITION");
   if (pos_index < 0) c.fail(name + " has no POSITION attribute");
   std::vector<float> pos = read_floats(c, pos_index, TINYGLTF_TYPE_VEC3, false, name + ".attributes.POSITION");
@@ -51,6 +53,9 @@ void add_primitive(const Context& c, const tinygltf::Primitive& p, const std::st
   if (!nrm.empty() && nrm.size() != 3 * n) c.fail(name + ".attributes.NORMAL count differs from POSITION's");
   if (!uv.empty() && uv.size() != 2 * n) c.fail(name + ".attributes.TEXCOORD_0 count differs from POSITION's");
   blend_morph_targets(c, p, name, weights, &pos, &nrm);
+  // A skinned mesh is in world space once skinned: the node's transform does not apply.
+  if (joints) skin_primitive(c, p, name, *joints, &pos, &nrm);
+  const Affine world = joints ? Affine() : world_of_node;
 
   std::vector<uint32_t> indices;
   if (p.indices >= 0) {
@@ -134,12 +139,12 @@ std::vector<double> default_morph_weights(const Context& c, const tinygltf::Node
   return w;
 }
 
-void add_mesh(const Context& c, int mesh_index, const Affine& world, const std::vector<double>& weights, Materials* materials,
-              Scene* scene) {
+void add_mesh(const Context& c, int mesh_index, const Affine& world, const std::vector<double>& weights,
+              const std::vector<Affine>* joints, Materials* materials, Scene* scene) {
   const std::string name = element("meshes", size_t(mesh_index));
   const tinygltf::Mesh& mesh = c.model.meshes[size_t(mesh_index)];
   for (size_t i = 0; i < mesh.primitives.size(); ++i)
-    add_primitive(c, mesh.primitives[i], name + "." + element("primitives", i), world, weights, materials, scene);
+    add_primitive(c, mesh.primitives[i], name + "." + element("primitives", i), world, weights, joints, materials, scene);
 }
 
 }  // namespace pathspace::gltf

@@ -20,9 +20,10 @@ size_t morph_target_count(const Context& c, int mesh_index);
 std::vector<double> default_morph_weights(const Context& c, const tinygltf::Node& node, const std::string& node_name);
 
 // Appends every primitive of mesh `mesh_index` as placed by `world`, its morph targets' POSITION and
-// NORMAL displacements blended in with `weights` (one per target, or empty: none). Emissive
-// materials make each triangle of positive area an area light.
-void add_mesh(const Context& c, int mesh_index, const Affine& world, const std::vector<double>& weights, Materials* materials,
-              Scene* scene);
+// NORMAL displacements blended in with `weights` (one per target, or empty: none); with `joints`
+// (a skinned node's joint matrices, gltf_skin.h) skinned by them instead of placed by `world`.
+// Emissive materials make each triangle of positive area an area light.
+void add_mesh(const Context& c, int mesh_index, const Affine& world, const std::vector<double>& weights,
+              const std::vector<Affine>* joints, Materials* materials, Scene* scene);
 
 }  // namespace pathspace::gltf

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pathspace/io/gltf/gltf_meshes.h"
+#include "pathspace/io/gltf/gltf_skin.h"
 
 namespace pathspace::gltf {
 
@@ -18,10 +19,40 @@ constexpr int kMaxDepth = 1000;  // recursion bound: real hierarchies are far sh
 // structure of what does not move) first those of nodes that do not move, then those that do.
 enum class Part { all, still, moving };
 
+// The world transform of every node under `pose` (a node in no tree, or below a malformed one, keeps
+// the identity: the walk itself reports malformed trees). Skins need their joints' transforms before
+// the walk reaches them.
+std::vector<Affine> world_transforms(const Context& c, const NodePose& pose) {
+  const std::vector<tinygltf::Node>& nodes = c.model.nodes;
+  std::vector<Affine> world(nodes.size());
+  std::vector<bool> child(nodes.size(), false), done(nodes.size(), false);
+  for (const tinygltf::Node& n : nodes)
+    for (int k : n.children)
+      if (k >= 0 && size_t(k) < nodes.size()) child[size_t(k)] = true;
+  std::vector<std::pair<int, Affine>> stack;
+  for (size_t i = 0; i < nodes.size(); ++i)
+    if (!child[i]) stack.push_back({int(i), Affine()});
+  while (!stack.empty()) {
+    const auto [index, parent] = stack.back();
+    stack.pop_back();
+    if (done[size_t(index)]) continue;  // reached twice: malformed, reported by the walk
+    done[size_t(index)] = true;
+    const tinygltf::Node& n = nodes[size_t(index)];
+    const bool posed = size_t(index) < pose.local.size() && pose.local[size_t(index)].has_value();
+    world[size_t(index)] = parent * (posed ? *pose.local[size_t(index)] : local_transform(c, n, element("nodes", size_t(index))));
+    for (int k : n.children)
+      if (k >= 0 && size_t(k) < nodes.size()) stack.push_back({k, world[size_t(index)]});
+  }
+  return world;
+}
+
 class SceneWalk {
  public:
   SceneWalk(const Context& c, const NodePose& pose, Materials* materials, Scene* scene, Part part = Part::all)
-      : c_(c), pose_(pose), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false), part_(part) {}
+      : c_(c), pose_(pose), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false), part_(part) {
+    if (!c.model.skins.empty()) world_ = world_transforms(c, pose);
+    animated_ = std::any_of(pose.local.begin(), pose.local.end(), [](const auto& p) { return p.has_value(); });
+  }
 
   void node(int index, const Affine& parent, const std::string& referrer, int depth = 0, bool parent_moves = false) {
     const tinygltf::Model& m = c_.model;
@@ -36,10 +67,15 @@ class SceneWalk {
     const bool morphed = size_t(index) < pose_.weights.size() && pose_.weights[size_t(index)].has_value();
     const bool moves = parent_moves || posed || morphed;  // an animated node, or below one
     const Affine world = parent * (posed ? *pose_.local[size_t(index)] : local_transform(c_, n, name));
-    if (n.skin >= 0 && part_ != Part::moving) c_.warn(name + ".skin ignored; the mesh is drawn as stored (bind pose)");
-    if (n.mesh >= 0 && (part_ == Part::all || (part_ == Part::moving) == moves)) {
+    // A skinned mesh follows its joints, wherever they are in the trees: it moves whenever any node does.
+    const bool skinned = n.skin >= 0 && n.mesh >= 0;
+    const bool mesh_moves = moves || (skinned && animated_);
+    if (n.mesh >= 0 && (part_ == Part::all || (part_ == Part::moving) == mesh_moves)) {
       check_index(c_, n.mesh, m.meshes.size(), name + ".mesh");
-      add_mesh(c_, n.mesh, world, morphed ? *pose_.weights[size_t(index)] : default_morph_weights(c_, n, name), materials_, scene_);
+      std::vector<Affine> joints;
+      if (skinned) joints = joint_matrices(c_, n.skin, world_);
+      add_mesh(c_, n.mesh, world, morphed ? *pose_.weights[size_t(index)] : default_morph_weights(c_, n, name), skinned ? &joints : nullptr,
+               materials_, scene_);
     }
     if (part_ == Part::moving) {  // lights and the camera were placed by the walk of the still part
       for (size_t i = 0; i < n.children.size(); ++i) node(n.children[i], world, name + "." + element("children", i), depth + 1, moves);
@@ -98,6 +134,8 @@ class SceneWalk {
 
   const Context& c_;
   const NodePose& pose_;
+  std::vector<Affine> world_;  // of every node, when the file has skins
+  bool animated_ = false;      // some node's transform is replaced by the pose
   Scene* scene_;
   Materials* materials_;
   std::vector<bool> visited_;
