@@ -1,5 +1,5 @@
-// Light records (plain data, selected by LightType). What `value` means depends on the type,
-// exactly as in docs/scenes.md §5:
+// Light records (plain data, selected by LightType). What `value` means depends on the type, as in
+// docs/scenes.md §5 and docs/conventions.md ("Lights and units"):
 //   area_triangle / area_sphere: emitted radiance L_e (front side only unless two_sided)
 //   point:       radiant intensity I (W/sr); irradiance at x is I cos / |x - p|^2
 //   spot:        a point light whose intensity I is scaled by a falloff around an axis (pbrt-v4's
@@ -31,7 +31,7 @@ struct Light {
   uint32_t shape = 0;  // triangle or sphere index for area lights
   Rgb value;
   Vec3 position;       // point, spot
-  Vec3 direction;      // directional: unit direction of propagation; spot: unit axis of the cone
+  Vec3 direction;      // directional: unit direction of propagation; spot, projector: unit axis
   bool two_sided = false;
   float cos_total = -1.f;   // spot: no emission at angles whose cosine to the axis is below this
   float cos_falloff = 1.f;  // spot: full intensity above this cosine; `falloff` in between
