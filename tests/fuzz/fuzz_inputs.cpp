@@ -65,6 +65,13 @@ Scene load(Format format, std::string_view bytes, const std::string& folder) {
         const Image image = decode_image(name, std::string(bytes.substr(1)));
         if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height))
           throw std::logic_error("image reader returned an inconsistent image");
+        // The same bytes as a scalar texture (alpha, or the mean colour: cutout opacity) must decode to
+        // the same size, every texel one value in all three channels (NaN excepted: it differs from itself).
+        const Image scalar = decode_image(name, std::string(bytes.substr(1)), LdrEncoding::linear, ImageContent::scalar);
+        if (scalar.width != image.width || scalar.height != image.height || scalar.pixels.size() != image.pixels.size())
+          throw std::logic_error("the scalar read of an image has another size");
+        for (const Rgb& t : scalar.pixels)
+          if ((t.r == t.r) && (t.g != t.r || t.b != t.r)) throw std::logic_error("a scalar texel differs between channels");
       } catch (const Error& e) {
         // The readers name the file at the start of the message; the fuzz contract wants it as a location.
         if (std::string_view(e.what()).substr(0, name.size()) != name) throw std::logic_error(std::string("image error without its file: ") + e.what());
