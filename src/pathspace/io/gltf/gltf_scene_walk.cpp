@@ -48,9 +48,11 @@ std::vector<Affine> world_transforms(const Context& c, const NodePose& pose) {
 
 class SceneWalk {
  public:
-  SceneWalk(const Context& c, const NodePose& pose, Materials* materials, Scene* scene, Part part = Part::all)
-      : c_(c), pose_(pose), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false), part_(part) {
-    if (!c.model.skins.empty()) world_ = world_transforms(c, pose);
+  // `world`: every node's world transform under `pose` (world_transforms), which skins need; empty
+  // when the file has none.
+  SceneWalk(const Context& c, const NodePose& pose, const std::vector<Affine>& world, Materials* materials, Scene* scene,
+            Part part = Part::all)
+      : c_(c), pose_(pose), world_(world), scene_(scene), materials_(materials), visited_(c.model.nodes.size(), false), part_(part) {
     animated_ = std::any_of(pose.local.begin(), pose.local.end(), [](const auto& p) { return p.has_value(); });
   }
 
@@ -134,7 +136,7 @@ class SceneWalk {
 
   const Context& c_;
   const NodePose& pose_;
-  std::vector<Affine> world_;  // of every node, when the file has skins
+  const std::vector<Affine>& world_;  // of every node, when the file has skins
   bool animated_ = false;      // some node's transform is replaced by the pose
   Scene* scene_;
   Materials* materials_;
@@ -168,16 +170,18 @@ void walk_roots(const Context& c, SceneWalk& walk, bool report) {
 CameraNode add_scene_nodes(const Context& c, const NodePose& pose, Materials* materials, Scene* scene) {
   const bool animated = std::any_of(pose.local.begin(), pose.local.end(), [](const auto& p) { return p.has_value(); }) ||
                         std::any_of(pose.weights.begin(), pose.weights.end(), [](const auto& w) { return w.has_value(); });
+  // Skins read their joints' world transforms: computed once for both walks below.
+  const std::vector<Affine> world = c.model.skins.empty() ? std::vector<Affine>() : world_transforms(c, pose);
   if (!animated) {  // a still file: one walk, in the file's order
-    SceneWalk walk(c, pose, materials, scene);
+    SceneWalk walk(c, pose, world, materials, scene);
     walk_roots(c, walk, true);
     return walk.camera();
   }
   // The meshes of nodes that do not move first, those that do after them (Scene::first_moving_triangle).
-  SceneWalk still(c, pose, materials, scene, Part::still);
+  SceneWalk still(c, pose, world, materials, scene, Part::still);
   walk_roots(c, still, true);
   scene->first_moving_triangle = uint32_t(scene->triangles.size());
-  SceneWalk moving(c, pose, materials, scene, Part::moving);
+  SceneWalk moving(c, pose, world, materials, scene, Part::moving);
   walk_roots(c, moving, false);
   return still.camera();
 }
