@@ -21,6 +21,7 @@
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
+#include "support/test_scenes.h"
 
 namespace pathspace {
 namespace {
@@ -28,51 +29,8 @@ namespace {
 constexpr int kComparisons = 4;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
-// The Cornell box's diffuse walls, each coated in turn by one of three layered materials; with
-// white_stays_diffuse the white walls keep their Lambertian material (PCLT's projection and pixel
-// cache need Lambertian surfaces: through coated ones its eye paths continue by BSDF sampling alone).
-Scene coated_cornell_box(bool smooth_coats, bool white_stays_diffuse = false) {
-  Scene s = make_cornell_box(1, 16, 16);
-  std::vector<bool> wall(s.materials.size(), false);
-  for (const Triangle& t : s.triangles) {
-    const Material& m = s.materials[t.material];
-    const bool white = m.diffuse.r == m.diffuse.g && m.diffuse.g == m.diffuse.b;
-    if (t.light == kNoLight && m.type == MaterialType::standard && !is_black(m.diffuse) && !(white_stays_diffuse && white))
-      wall[t.material] = true;
-  }
-  int k = 0;
-  for (size_t i = 0; i < s.materials.size(); ++i) {
-    if (!wall[i]) continue;
-    Material& m = s.materials[i];
-    m.ior = 1.5f;
-    m.thickness = 0.05f;
-    switch (k++ % 3) {
-      case 0:
-        m.type = MaterialType::coated_diffuse;
-        m.alpha = smooth_coats ? 0.f : 0.2f;
-        break;
-      case 1:
-        m.type = MaterialType::coated_diffuse;
-        m.alpha = 0.4f;
-        m.medium_albedo = Rgb(0.6f, 0.7f, 0.8f);
-        m.g = 0.3f;
-        m.thickness = 0.4f;
-        break;
-      default:
-        m.type = MaterialType::coated_conductor;
-        m.alpha = smooth_coats ? 0.f : 0.15f;
-        m.base_alpha = 0.3f;
-        m.eta = Rgb(0.2f, 0.9f, 1.1f) * (1.f / m.ior);
-        m.k = Rgb(3.9f, 2.4f, 2.2f) * (1.f / m.ior);
-        break;
-    }
-  }
-  s.finalize();
-  return s;
-}
-
 TEST(LayeredMaterial, BidirectionalPathTracingAgreesWithPathTracing) {
-  const Scene scene = coated_cornell_box(true);
+  const Scene scene = testing::make_coated_cornell_box(16, true);
   const testing::Rendered bpt =
       testing::render_integrator(scene, make_render_config("bpt", BptSettings{}, testing::test_seed(501)), 256);
   const testing::Rendered pt =
@@ -81,7 +39,7 @@ TEST(LayeredMaterial, BidirectionalPathTracingAgreesWithPathTracing) {
 }
 
 TEST(LayeredMaterial, LightTracingAgreesWithPathTracing) {
-  const Scene scene = coated_cornell_box(false);
+  const Scene scene = testing::make_coated_cornell_box(16, false);
   LtSettings lt;
   lt.light_paths = 4096;
   const testing::Rendered a = testing::render_integrator(scene, make_render_config("lt", lt, testing::test_seed(503)), 256);
@@ -91,7 +49,7 @@ TEST(LayeredMaterial, LightTracingAgreesWithPathTracing) {
 }
 
 TEST(LayeredMaterial, GatheringAgreesWithBidirectionalPathTracing) {
-  const Scene scene = coated_cornell_box(false, true);
+  const Scene scene = testing::make_coated_cornell_box(16, false, true);
   const Accel accel(scene);
   constexpr float kRadius = 0.04f;  // box side 2.56; ~0.017 after 128 iterations (alpha 2/3)
   SppmSettings sppm;

@@ -13,6 +13,7 @@
 #include "pathspace/gpu/cuda_vertex_buffer.h"
 #include "pathspace/gpu/gpu_info.h"
 #include "pathspace/stats/statistics.h"
+#include "gpu_comparison.h"
 #include "support/filter_pass_buffers.h"
 
 namespace pathspace {
@@ -23,15 +24,6 @@ using testing::PassBuffer;
 
 constexpr int kWidth = 320, kHeight = 240;
 
-#define PS_REQUIRE_GPU()                                                                  \
-  do {                                                                                    \
-    const gpu::GpuInfo& info = gpu::gpu_info();                                           \
-    if (!info.available) {                                                                \
-      std::printf("no GPU: %s\n", info.reason.c_str());                                   \
-      GTEST_SKIP() << "no CUDA device: " << info.reason;                                  \
-    }                                                                                     \
-  } while (0)
-
 const PassBuffer& pass_buffer(const std::string& scene, int nth) {
   static std::map<std::pair<std::string, int>, PassBuffer> buffers;
   auto it = buffers.find({scene, nth});
@@ -40,7 +32,7 @@ const PassBuffer& pass_buffer(const std::string& scene, int nth) {
 }
 
 TEST(CudaVertexBuffer, UploadDownloadRoundTrips) {
-  PS_REQUIRE_GPU();
+  PATHSPACE_REQUIRE_GPU();
   const PassBuffer& pb = pass_buffer("cornell-glossy", 2);
   gpu::DeviceVertexBuffer device;
   device.upload(pb.buffer);
@@ -74,7 +66,7 @@ TEST(CudaVertexBuffer, UploadDownloadRoundTrips) {
 class CudaHashedFilterTest : public ::testing::TestWithParam<FilterCase> {};
 
 TEST_P(CudaHashedFilterTest, EqualsTheCpuFilterBitForBit) {
-  PS_REQUIRE_GPU();
+  PATHSPACE_REQUIRE_GPU();
   const FilterCase& c = GetParam();
   const PassBuffer& pb = pass_buffer(c.scene, c.nth);
   gpu::DeviceVertexBuffer device;

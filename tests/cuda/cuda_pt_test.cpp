@@ -5,16 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <cstring>
 #include <string>
 
-#include "pathspace/accel/accel.h"
-#include "pathspace/film/film.h"
-#include "pathspace/gpu/cuda_pt_integrator.h"
-#include "pathspace/gpu/gpu_info.h"
-#include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "gpu_comparison.h"
 #include "support/integrator_comparison.h"
 #include "support/shared_data.h"
 #include "support/statistics.h"
@@ -25,11 +20,6 @@ namespace {
 constexpr int kComparisons = 4;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
-#define PATHSPACE_REQUIRE_GPU()                                                   \
-  do {                                                                            \
-    if (!gpu::gpu_info().available) GTEST_SKIP() << gpu::gpu_info().reason;       \
-  } while (0)
-
 // The shared scenes' folder: PATHSPACE_SHARED_SCENES_DIR in the environment (a GPU machine with a
 // copy elsewhere) or the build's.
 std::string shared_scenes_dir() {
@@ -38,12 +28,7 @@ std::string shared_scenes_dir() {
 }
 
 void expect_gpu_matches_cpu(const Scene& scene, const RenderConfig& cpu_config, uint32_t passes, const std::string& what) {
-  RenderConfig gpu_config = cpu_config;
-  gpu_config.device = "cuda";
-  gpu_config.seed = cpu_config.seed + 1000;  // independent samples: the z-test assumes them
-  const testing::Rendered gpu_image = testing::render_integrator(scene, gpu_config, passes);
-  const testing::Rendered cpu_image = testing::render_integrator(scene, cpu_config, passes);
-  testing::expect_same_image(gpu_image, cpu_image, what, kAlphaImage, "cuda", "cpu");
+  testing::expect_gpu_matches_cpu(scene, cpu_config, passes, what, kAlphaImage);
 }
 
 TEST(CudaPt, CornellBoxMatchesCpu) {
@@ -79,32 +64,12 @@ TEST(CudaPt, FilteredCornellBoxMatchesCpu) {
   expect_gpu_matches_cpu(make_builtin_scene("cornell-box", 64, 64), config, 256, "cornell-box pt + hashed cuda vs cpu");
 }
 
-// The wavefront and the megakernel run the same steps in the same order per path: equal images.
-void expect_pipelines_agree(const Scene& scene, const FilterChoice& filter) {
-  const Accel accel(scene);
-  const IntegratorContext context{scene, accel, 5, filter};
-  auto mega = gpu::make_cuda_pt_integrator(context, PtSettings{}, gpu::CudaPtPipeline::megakernel);
-  auto wave = gpu::make_cuda_pt_integrator(context, PtSettings{}, gpu::CudaPtPipeline::wavefront);
-  Film a(scene.camera.width, scene.camera.height), b(scene.camera.width, scene.camera.height);
-  PathCounters ca, cb;
-  for (uint32_t pass = 0; pass < 4; ++pass) {
-    mega->render_pass(pass, a, ca);
-    wave->render_pass(pass, b, cb);
-  }
-  EXPECT_EQ(ca.rays, cb.rays);
-  EXPECT_EQ(ca.shadow_rays, cb.shadow_rays);
-  const Image ma = a.mean(), mb = b.mean();
-  size_t differing = 0;
-  for (size_t i = 0; i < ma.size(); ++i) differing += std::memcmp(&ma.pixels[i], &mb.pixels[i], sizeof(Rgb)) != 0;
-  EXPECT_EQ(differing, 0u) << "of " << ma.size() << " pixels";
-}
-
 TEST(CudaPt, WavefrontEqualsMegakernelBitForBit) {
   PATHSPACE_REQUIRE_GPU();
-  expect_pipelines_agree(make_builtin_scene("cornell-glossy", 64, 64), FilterChoice{});
+  testing::expect_pipelines_agree(make_builtin_scene("cornell-glossy", 64, 64), FilterChoice{});
   FilterChoice hashed;
   hashed.name = "hashed";
-  expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
+  testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
 }
 
 TEST(CudaDevice, OptionsTheGpuDoesNotRunAreUsageErrors) {

@@ -1,5 +1,9 @@
 #include "support/test_scenes.h"
 
+#include <vector>
+
+#include "pathspace/scene/builtin_scenes.h"
+
 namespace pathspace::testing {
 
 namespace {
@@ -68,6 +72,46 @@ Scene make_plane_under_sky(float albedo, float sky, int resolution) {
   s.add_environment_light(Rgb(sky));
   s.camera = make_perspective_camera(Vec3(0, 0, 1), Vec3(0.1f, 0.2f, -1.f), Vec3(0, 1, 0), 60.f, resolution, resolution);
   s.ray_epsilon = 1e-4f;
+  s.finalize();
+  return s;
+}
+
+Scene make_coated_cornell_box(int resolution, bool smooth_coats, bool white_stays_diffuse) {
+  Scene s = make_cornell_box(1, resolution, resolution);
+  std::vector<bool> wall(s.materials.size(), false);
+  for (const Triangle& t : s.triangles) {
+    const Material& m = s.materials[t.material];
+    const bool white = m.diffuse.r == m.diffuse.g && m.diffuse.g == m.diffuse.b;
+    if (t.light == kNoLight && m.type == MaterialType::standard && !is_black(m.diffuse) && !(white_stays_diffuse && white))
+      wall[t.material] = true;
+  }
+  int k = 0;
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    if (!wall[i]) continue;
+    Material& m = s.materials[i];
+    m.ior = 1.5f;
+    m.thickness = 0.05f;
+    switch (k++ % 3) {
+      case 0:
+        m.type = MaterialType::coated_diffuse;
+        m.alpha = smooth_coats ? 0.f : 0.2f;
+        break;
+      case 1:
+        m.type = MaterialType::coated_diffuse;
+        m.alpha = 0.4f;
+        m.medium_albedo = Rgb(0.6f, 0.7f, 0.8f);
+        m.g = 0.3f;
+        m.thickness = 0.4f;
+        break;
+      default:
+        m.type = MaterialType::coated_conductor;
+        m.alpha = smooth_coats ? 0.f : 0.15f;
+        m.base_alpha = 0.3f;
+        m.eta = Rgb(0.2f, 0.9f, 1.1f) * (1.f / m.ior);
+        m.k = Rgb(3.9f, 2.4f, 2.2f) * (1.f / m.ior);
+        break;
+    }
+  }
   s.finalize();
   return s;
 }

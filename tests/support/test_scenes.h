@@ -18,4 +18,10 @@ Scene make_emissive_sphere(float radius, float emission, float albedo, int resol
 // A large diffuse square (albedo a) under a constant environment L seen from above: L_out = a L.
 Scene make_plane_under_sky(float albedo, float sky, int resolution = 16);
 
+// The Cornell box's diffuse walls, each coated in turn by one of three layered materials; with
+// white_stays_diffuse the white walls keep their Lambertian material (PCLT's projection and pixel
+// cache need Lambertian surfaces: through coated ones its eye paths continue by BSDF sampling alone).
+// Used by the layered material test and the GPU test of features.
+Scene make_coated_cornell_box(int resolution, bool smooth_coats, bool white_stays_diffuse = false);
+
 }  // namespace pathspace::testing
