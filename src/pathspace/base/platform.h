@@ -18,3 +18,13 @@
 #endif
 
 #define PS_INLINE PS_HD inline
+
+// PS_INLINE, but kept out of line in device code: for a rarely taken branch of a hot loop or a
+// large function called from many places, whose registers and stack would otherwise weigh on every
+// thread of the kernel that inlines it (docs/gpu.md, "Register and stack pressure"). Host code is
+// inlined as the compiler sees fit.
+#if defined(__CUDA_ARCH__)
+#define PS_INLINE_HOST_ONLY PS_HD __noinline__
+#else
+#define PS_INLINE_HOST_ONLY PS_HD inline
+#endif

@@ -216,8 +216,11 @@ PS_INLINE Rgb mirror_reflectance(const Material& m, float cos_o) {
 PS_INLINE bool pure_mirror(const Material& m) { return coat_smooth(m) && base_delta(m); }
 
 // ---- eval: f of the non-delta part, wo and wi above the surface (bsdf.h mirrors two-sided materials).
+// eval, pdf and sample are out of line on the GPU (PS_INLINE_HOST_ONLY): inlined, their random walks
+// cost every path tracing thread registers and spills, coated or not (1.66x the frame time on the
+// Cornell box, docs/gpu.md).
 
-PS_INLINE Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi, TransportMode mode) {
+PS_INLINE_HOST_ONLY Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi, TransportMode mode) {
   if (wo.z < kMinCosine || wi.z < kMinCosine || pure_mirror(m)) return {};
   const Material coat = coat_material(m);
   Rgb f = coat_eval(m, coat, wo, wi, mode);
@@ -342,7 +345,7 @@ PS_INLINE Proposal proposal(const Material& m, const Vec3& wo) {
   return p;
 }
 
-PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
+PS_INLINE_HOST_ONLY float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
   if (wo.z < kMinCosine || wi.z < kMinCosine) return 0.f;
   const Proposal p = proposal(m, wo);
   float pdf = p.floor * cosine_hemisphere_pdf(wi);
@@ -353,7 +356,7 @@ PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
   return pdf;
 }
 
-PS_INLINE bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u, TransportMode mode, BsdfSample* s) {
+PS_INLINE_HOST_ONLY bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u, TransportMode mode, BsdfSample* s) {
   if (wo.z < kMinCosine) return false;
   const Proposal p = proposal(m, wo);
   if (u_lobe < p.mirror) {

@@ -30,9 +30,10 @@ PS_INLINE float triangle_opacity(const Triangle& tri, const Material& m, const P
 }
 
 // Whether the ray (o, d) passes through triangle `prim` at barycentrics (b1, b2) instead of hitting it.
-PS_INLINE bool ray_passes_cutout(const Triangle* triangles, const Material* materials, const Point2* uvs,
-                                 const TextureView* textures, uint32_t prim, float b1, float b2, const Vec3& o,
-                                 const Vec3& d) {
+// Out of line on the GPU: called from the BVH's triangle test, only in scenes with cutouts.
+PS_INLINE_HOST_ONLY bool ray_passes_cutout(const Triangle* triangles, const Material* materials, const Point2* uvs,
+                                           const TextureView* textures, uint32_t prim, float b1, float b2,
+                                           const Vec3& o, const Vec3& d) {
   const Triangle& tri = triangles[prim];
   const Material& m = materials[tri.material];
   if (!has_cutout(m) || tri.light != kNoLight) return false;
