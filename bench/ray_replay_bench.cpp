@@ -68,7 +68,7 @@ std::vector<std::vector<RecordedRay>> record_pass(const Scene& scene, const Acce
       PathCounters counters;
       for (size_t pixel = c * kChunkPixels; pixel < std::min(pixels, (c + 1) * kChunkPixels); ++pixel) {
         const Sampler sampler(0, pixel, 0);
-        pt_trace_path(view, tracer, sampler, sample_camera_ray(view.camera, sampler, uint32_t(pixel)), settings, &counters);
+        pt_trace_path(view, tracer, sampler, sample_camera_ray(view.camera, sampler, uint32_t(pixel), camera_path_time(view, sampler)), settings, &counters);
       }
     }
   });

@@ -61,6 +61,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const Material& m : scene.materials) ++materials[material_kind(m)];
   size_t texels = 0;
   for (const ImageTexture& t : scene.textures) texels += t.texels.size();
+  size_t moving_vertices = 0;  // motion blur (scene/motion.h): vertices that move while the shutter is open
+  for (size_t i = 0; i < scene.positions_end.size(); ++i) moving_vertices += !(scene.positions_end[i] == scene.positions[i]);
   const PerspectiveCamera& c = scene.camera;
   if (json) {
     nlohmann::ordered_json j;
@@ -68,6 +70,7 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
     j["builtin"] = builtin ? nlohmann::ordered_json(path) : nlohmann::ordered_json(nullptr);
     j["vertices"] = scene.positions.size();
     j["triangles"] = scene.triangles.size();
+    j["moving_vertices"] = moving_vertices;
     j["spheres"] = scene.spheres.size();
     j["textures"] = scene.textures.size();
     j["texels"] = texels;
@@ -84,6 +87,7 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   }
   fmt::print("{} {}\n", builtin ? "built-in scene" : "scene", path);
   fmt::print("  geometry     {} triangles ({} vertices), {} spheres\n", scene.triangles.size(), scene.positions.size(), scene.spheres.size());
+  if (moving_vertices > 0) fmt::print("  motion blur  {} vertices move while the shutter is open\n", moving_vertices);
   fmt::print("  textures     {} ({} texels){}\n", scene.textures.size(), texels,
              scene.environment_image.empty()
                  ? std::string()

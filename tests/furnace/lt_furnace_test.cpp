@@ -111,12 +111,12 @@ void expect_flux(const Scene& scene, double expected) {
     const Sampler s(11, uint64_t(i), 0);
     EmissionSample e;
     double w = 0;
-    if (sample_emission(view, light, {s.at(0), s.at(1)}, {s.at(2), s.at(3)}, &e)) {
+    if (sample_emission(view, light, 0.f, {s.at(0), s.at(1)}, {s.at(2), s.at(3)}, &e)) {
       w = e.weight.r;
       const float c = e.delta_position || e.infinite ? 1.f : fabsf(dot(e.n, e.d));
       EXPECT_NEAR(e.weight.r, e.le.r * c / (e.pdf_a * e.pdf_w), 1e-4f * e.weight.r);
       float pdf_a, pdf_w;
-      emission_pdf(view, light, e.ng, e.d, &pdf_a, &pdf_w);
+      emission_pdf(view, light, e.ng, e.d, 0.f, &pdf_a, &pdf_w);
       EXPECT_NEAR(pdf_a, e.pdf_a, 1e-5f * pdf_a);
       EXPECT_NEAR(pdf_w, e.pdf_w, 1e-5f * pdf_w + 1e-6f);
     }

@@ -224,8 +224,8 @@ TEST_F(Robustness, BinaryBytesAreEscapedInMessages) {
 }
 
 TEST_F(Robustness, LoadFailurePrintsTheWarningsSoFar) {
-  write("w.pbrt", "TransformTimes 0 1\n" + std::string(kCamera) + "Shape \"sphere\" \"float radius\" [ 1\n");
-  expect("render w.pbrt -o a.exr -q", 1, {"warning: TransformTimes ignored", "error: w.pbrt:"});
+  write("w.pbrt", "Option \"bool disablepixeljitter\" true\n" + std::string(kCamera) + "Shape \"sphere\" \"float radius\" [ 1\n");
+  expect("render w.pbrt -o a.exr -q", 1, {"warning: Option is not supported", "error: w.pbrt:"});
 }
 
 }  // namespace

@@ -110,13 +110,13 @@ void check_nee(const char* name, EnvironmentMapping m, int w, int h, uint64_t se
       [&](Pcg32& rng) {
         LightSample ls;
         // A sample is rejected only where the (bilinear) radiance is black: still a sampled direction.
-        const bool ok = sample_light(v, s.light, ref, {rng.next_float(), rng.next_float()}, &ls);
+        const bool ok = sample_light(v, s.light, ref, 0.f, {rng.next_float(), rng.next_float()}, &ls);
         if (!ok && !(ls.pdf_w > 0.f && is_black(ls.li))) return testing::Outcome{};
         // environment_pdf is what MIS evaluates for an escaping ray: exactly the sample's pdf.
         // light_pdf takes a point (ref + wi) and evaluates it for the renormalised difference.
         const float pdf = environment_pdf(v, ls.wi);
         const Vec3 p = ref + ls.wi;
-        const float via_point = light_pdf(v, s.light, ref, p, Vec3());
+        const float via_point = light_pdf(v, s.light, ref, p, Vec3(), 0.f);
         const Rgb le = environment_radiance(v, s.light, ls.wi);
         if (pdf != ls.pdf_w || via_point != environment_pdf(v, normalize(p - ref)) || !(le == ls.li) || ls.delta ||
             !std::isinf(ls.dist)) {
@@ -124,7 +124,7 @@ void check_nee(const char* name, EnvironmentMapping m, int w, int h, uint64_t se
         }
         return testing::Outcome{0, 0, 0, ls.wi};
       },
-      [&](const Vec3& wdir) { return double(light_pdf(v, s.light, ref, ref + wdir, Vec3())); }, o);
+      [&](const Vec3& wdir) { return double(light_pdf(v, s.light, ref, ref + wdir, Vec3(), 0.f)); }, o);
   report(name, r);
   EXPECT_EQ(bad, 0u) << first;
 }
@@ -147,11 +147,11 @@ void check_emission(const char* name, EnvironmentMapping m, int w, int h, uint64
       [&](Pcg32& rng) {
         EmissionSample e;
         const bool ok =
-            sample_emission(v, s.light, {rng.next_float(), rng.next_float()}, {rng.next_float(), rng.next_float()}, &e);
+            sample_emission(v, s.light, 0.f, {rng.next_float(), rng.next_float()}, {rng.next_float(), rng.next_float()}, &e);
         if (!ok && !(e.pdf_w > 0.f && is_black(e.le))) return testing::Outcome{};
         if (!ok) return testing::Outcome{0, 0, 0, e.d};  // black direction: sampled, not emitted
         float pa, pw;
-        emission_pdf(v, s.light, e.n, e.d, &pa, &pw);
+        emission_pdf(v, s.light, e.n, e.d, 0.f, &pa, &pw);
         const Rgb expected_weight = environment_radiance(v, s.light, -e.d) / (pa * pw);
         const bool weight_ok = fabsf(e.weight.r - expected_weight.r) <= 1e-5f * expected_weight.r;
         // The origin lies on the disk of the bounding sphere's radius, upstream of the scene.
@@ -164,7 +164,7 @@ void check_emission(const char* name, EnvironmentMapping m, int w, int h, uint64
       },
       [&](const Vec3& d) {
         float pa, pw;
-        emission_pdf(v, s.light, d, d, &pa, &pw);
+        emission_pdf(v, s.light, d, d, 0.f, &pa, &pw);
         return double(pw);
       },
       o);

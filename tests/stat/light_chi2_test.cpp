@@ -73,12 +73,12 @@ double direction_pdf(const OneLight& s, const SceneView& v, const Vec3& ref, con
   if (s.light.type == LightType::area_triangle) {
     const Vec3 p0 = s.positions[0], p1 = s.positions[1], p2 = s.positions[2];
     if (!hit_triangle(ref, w, p0, p1, p2, &t)) return 0.0;
-    return light_pdf(v, s.light, ref, ref + w * t, triangle_normal(p0, p1, p2));
+    return light_pdf(v, s.light, ref, ref + w * t, triangle_normal(p0, p1, p2), 0.f);
   }
   const Sphere& sp = s.spheres[0];
   if (!intersect_sphere(sp, ref, w, 0.f, kInfinity, &t)) return 0.0;
   const Vec3 p = ref + w * t;
-  return light_pdf(v, s.light, ref, p, sphere_normal(sp, p));
+  return light_pdf(v, s.light, ref, p, sphere_normal(sp, p), 0.f);
 }
 
 void check_light(const char* name, const OneLight& s, const Vec3& ref, const Vec3& axis, uint64_t seed) {
@@ -94,12 +94,12 @@ void check_light(const char* name, const OneLight& s, const Vec3& ref, const Vec
       {axis},
       [&](Pcg32& rng) {
         LightSample ls;
-        if (!sample_light(v, s.light, ref, {rng.next_float(), rng.next_float()}, &ls)) return testing::Outcome{};
+        if (!sample_light(v, s.light, ref, 0.f, {rng.next_float(), rng.next_float()}, &ls)) return testing::Outcome{};
         // The sample's own pdf must be light_pdf at the sampled point, and wi must point at it.
         const Vec3 n = s.light.type == LightType::area_triangle
                            ? triangle_normal(s.positions[0], s.positions[1], s.positions[2])
                            : sphere_normal(s.spheres[0], ls.p);
-        const float pdf = light_pdf(v, s.light, ref, ls.p, n);
+        const float pdf = light_pdf(v, s.light, ref, ls.p, n, 0.f);
         const float dir_err = length(normalize(ls.p - ref) - ls.wi);
         if (!(fabsf(pdf - ls.pdf_w) <= 1e-3f * pdf) || dir_err > 1e-4f || ls.delta) {
           if (bad++ == 0)

@@ -75,7 +75,7 @@ std::vector<Ray> test_rays(const Traced& t, size_t count, uint64_t seed) {
     const Ray camera = cam.generate_ray(float(cam.width) * rng.next_float(), float(cam.height) * rng.next_float());
     rays.push_back(camera);
     SurfaceHit hit;
-    if (kind >= 6 && t.accel.intersect(camera, &hit)) rays.push_back(spawn_ray(hit.p, hit.ng, d, t.scene.ray_epsilon));
+    if (kind >= 6 && t.accel.intersect(camera, &hit)) rays.push_back(spawn_ray(hit.p, hit.ng, d, t.scene.ray_epsilon, 0.f));
   }
   rays.resize(count);
   return rays;
@@ -273,7 +273,7 @@ TEST(BvhTracer, PathTracedImageMatchesEmbreePathByPath) {
   for (uint32_t pixel = 0; pixel < 64 * 64; ++pixel)
     for (uint64_t s = 0; s < 64; ++s) {
       const Sampler sampler(5, pixel, s);
-      const Ray ray = sample_camera_ray(t.view.camera, sampler, pixel);
+      const Ray ray = sample_camera_ray(t.view.camera, sampler, pixel, 0.f);
       PathCounters ce, cb;
       const Rgb e = pt_trace_path(t.view, t.accel, sampler, ray, settings, &ce);
       const Rgb b = pt_trace_path(t.view, t.tracer, sampler, ray, settings, &cb);

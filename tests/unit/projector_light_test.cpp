@@ -51,7 +51,7 @@ Scene projector_scene(bool irradiance_plane, bool textured) {
 Rgb irradiance_at(const Scene& s, float x, float y) {
   LightSample ls;
   const Vec3 p(x, y, 1.f);
-  if (!sample_light(s.view(), s.lights[0], p, {0.5f, 0.5f}, &ls)) return Rgb();
+  if (!sample_light(s.view(), s.lights[0], p, 0.f, {0.5f, 0.5f}, &ls)) return Rgb();
   return ls.li * std::fabs(ls.wi.z);
 }
 
@@ -71,7 +71,7 @@ TEST(ProjectorLight, MitsubaProjectorLightsItsPlaneWithTheImage) {
   EXPECT_EQ(irradiance_at(s, 0.6f, 0.f), Rgb());               // outside the frustum
   EXPECT_EQ(irradiance_at(s, 0.f, 0.3f), Rgb());
   LightSample ls;
-  EXPECT_FALSE(sample_light(s.view(), s.lights[0], Vec3(0, 0, -1), {0.5f, 0.5f}, &ls));  // behind
+  EXPECT_FALSE(sample_light(s.view(), s.lights[0], Vec3(0, 0, -1), 0.f, {0.5f, 0.5f}, &ls));  // behind
   // A constant image lights the plane evenly.
   const Scene c = projector_scene(true, false);
   for (float x : {0.f, 0.2f, -0.45f}) EXPECT_NEAR(irradiance_at(c, x, 0.2f).g, 2.f, 1e-5f);
@@ -95,9 +95,9 @@ void expect_emission_carries_power(const Scene& s, double power, const std::stri
   for (int i = 0; i < n; ++i) {
     EmissionSample e;
     const Point2 up{rng.next_float(), rng.next_float()}, ud{rng.next_float(), rng.next_float()};
-    if (sample_emission(v, l, up, ud, &e)) {
+    if (sample_emission(v, l, 0.f, up, ud, &e)) {
       float pa, pw;
-      emission_pdf(v, l, e.n, e.d, &pa, &pw);
+      emission_pdf(v, l, e.n, e.d, 0.f, &pa, &pw);
       ASSERT_NEAR(pw, e.pdf_w, 1e-4f * e.pdf_w);
       sum += luminance(e.weight);
       sum_sq += double(luminance(e.weight)) * luminance(e.weight);

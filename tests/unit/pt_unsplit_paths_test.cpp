@@ -26,7 +26,7 @@ TEST(PtUnsplitPaths, SameRaysAndValuesAsTheSplitPath) {
     for (uint32_t pass = 0; pass < 4; ++pass)
       for (uint32_t pixel = 0; pixel < 32 * 32; ++pixel) {
         const Sampler sampler(3, pixel, pass);
-        const Ray ray = sample_camera_ray(view.camera, sampler, pixel);
+        const Ray ray = sample_camera_ray(view.camera, sampler, pixel, 0.f);
         PathCounters a, b;
         PathSample whole;
         pt_trace_path(view, accel, sampler, ray, plain, &a, &whole);

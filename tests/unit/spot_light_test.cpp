@@ -42,10 +42,10 @@ TEST(SpotLight, NextEventEstimationSeesTheFalloff) {
   const Scene s = spot_scene();
   const SceneView v = s.view();
   LightSample ls;
-  ASSERT_TRUE(sample_light(v, s.lights[0], Vec3(0, 0, 0), {0.5f, 0.5f}, &ls));
+  ASSERT_TRUE(sample_light(v, s.lights[0], Vec3(0, 0, 0), 0.f, {0.5f, 0.5f}, &ls));
   EXPECT_TRUE(ls.delta);
   EXPECT_NEAR(ls.li.r, 3.f / 4.f, 1e-6f);  // I / d^2 on the axis
-  EXPECT_FALSE(sample_light(v, s.lights[0], Vec3(5, 0, 1.9f), {0.5f, 0.5f}, &ls));  // outside the cone
+  EXPECT_FALSE(sample_light(v, s.lights[0], Vec3(5, 0, 1.9f), 0.f, {0.5f, 0.5f}, &ls));  // outside the cone
 }
 
 TEST(SpotLight, EmissionStaysInTheConeAndCarriesThePower) {
@@ -58,10 +58,10 @@ TEST(SpotLight, EmissionStaysInTheConeAndCarriesThePower) {
   for (int i = 0; i < n; ++i) {
     EmissionSample e;
     const Point2 up{rng.next_float(), rng.next_float()}, ud{rng.next_float(), rng.next_float()};
-    if (!sample_emission(v, l, up, ud, &e)) continue;  // falloff 0 at the cone's very edge: weight 0
+    if (!sample_emission(v, l, 0.f, up, ud, &e)) continue;  // falloff 0 at the cone's very edge: weight 0
     ASSERT_GE(dot(e.d, l.direction), l.cos_total - 1e-6f);
     float pa, pw;
-    emission_pdf(v, l, e.n, e.d, &pa, &pw);
+    emission_pdf(v, l, e.n, e.d, 0.f, &pa, &pw);
     ASSERT_NEAR(pw, e.pdf_w, 1e-4f * e.pdf_w);
     sum += e.weight.r;
     sum_sq += double(e.weight.r) * e.weight.r;

@@ -62,7 +62,7 @@ TEST(ThinLens, ZeroRadiusIsThePinholeBitForBit) {
   }
   // A pinhole reads no lens dimension: the sampled camera ray is the chief ray of the jittered raster position.
   const Sampler s(1, 77, 3);
-  const Ray r = sample_camera_ray(c, s, 77);
+  const Ray r = sample_camera_ray(c, s, 77, 0.f);
   const Ray chief = c.generate_ray(float(77 % 32) + s.at(dims::kPixelX), float(77 / 32) + s.at(dims::kPixelY));
   EXPECT_TRUE(same_bits(r.o, chief.o) && same_bits(r.d, chief.d));
   // Invalid lens parameters leave the camera alone.

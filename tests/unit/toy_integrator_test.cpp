@@ -42,7 +42,7 @@ class ToyIntegrator final : public Integrator {
         const Sampler sampler(seed_, pixel, pass);
         SurfaceHit hit;
         Rgb value;
-        if (accel_.intersect(sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), &hit))
+        if (accel_.intersect(sample_camera_ray(view_.camera, sampler, uint32_t(pixel), 0.f), &hit))
           value = Rgb(hit.ns.x * 0.5f + 0.5f, hit.ns.y * 0.5f + 0.5f, hit.ns.z * 0.5f + 0.5f) * settings_.scale;
         film.add_sample(uint32_t(pixel), value);
       }

@@ -33,7 +33,7 @@ Traced megakernel_order(const SceneView& view, const Accel& accel, const PtSetti
   parallel_for(n, 256, [&](size_t b, size_t e) {
     for (size_t i = b; i < e; ++i) {
       const Sampler sampler(seed, i, pass);
-      pt_trace_path(view, accel, sampler, sample_camera_ray(view.camera, sampler, uint32_t(i)), settings, &per_path[i], &t.samples[i]);
+      pt_trace_path(view, accel, sampler, sample_camera_ray(view.camera, sampler, uint32_t(i), 0.f), settings, &per_path[i], &t.samples[i]);
     }
   });
   for (const PathCounters& c : per_path) t.counters += c;

@@ -176,6 +176,8 @@ BvhView FlatBvh::view() const {
 }
 
 FlatBvh build_bvh(const SceneView& scene) {
+  if (scene.positions_end)
+    throw Error("the BVH tracer (the GPU's, --device cuda) does not trace moving geometry yet (motion blur: render on the CPU)");
   const auto start = std::chrono::steady_clock::now();
   FlatBvh out;
   std::vector<RTCBuildPrimitive> prims;

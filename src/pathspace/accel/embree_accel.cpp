@@ -119,7 +119,7 @@ inline void fill_ray(const Ray& r, RTCRay* out) {
   out->dir_z = r.d.z;
   out->tnear = r.tmin;
   out->tfar = r.tmax;
-  out->time = 0.f;
+  out->time = r.time;
   out->mask = 0xffffffffu;
   out->id = 0;
   out->flags = 0;
@@ -198,6 +198,16 @@ RTCScene build_part(RTCDevice device, const Scene& scene, uint32_t tri_begin, ui
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                  3 * sizeof(uint32_t), tri_end - tri_begin));
   std::copy(scene.positions.begin() + range.first, scene.positions.begin() + range.first + range.count(), vertices);
+  if (!scene.positions_end.empty()) {
+    // Motion blur (scene/motion.h): time step 1 holds the vertices at shutter close; Embree blends the
+    // two linearly at each ray's time.
+    if (scene.positions_end.size() != scene.positions.size())
+      throw Error("motion blur: one end position per vertex is needed (Scene::finalize pads them)");
+    rtcSetGeometryTimeStepCount(tri_geom, 2);
+    auto* end = static_cast<Vec3*>(rtcSetNewGeometryBuffer(tri_geom, RTC_BUFFER_TYPE_VERTEX, 1, RTC_FORMAT_FLOAT3,
+                                                           sizeof(Vec3), range.count()));
+    std::copy(scene.positions_end.begin() + range.first, scene.positions_end.begin() + range.first + range.count(), end);
+  }
   for (uint32_t i = tri_begin; i < tri_end; ++i)
     for (int k = 0; k < 3; ++k) indices[3 * (i - tri_begin) + k] = scene.triangles[i].v[k] - range.first;
   rtcCommitGeometry(tri_geom);
@@ -224,6 +234,8 @@ uint64_t static_hash(const Scene& scene, uint32_t triangles, uint32_t spheres, b
   h = hash_bytes(scene.triangles.data(), triangles * sizeof(Triangle), h);  // no padding: five 32-bit fields
   const VertexRange range = vertex_range(scene, 0, triangles);
   if (range.count() > 0) h = hash_bytes(&scene.positions[range.first], range.count() * sizeof(Vec3), h);
+  if (range.count() > 0 && !scene.positions_end.empty())
+    h = hash_bytes(&scene.positions_end[range.first], range.count() * sizeof(Vec3), h);
   for (uint32_t i = 0; i < spheres; ++i) {
     const Sphere& s = scene.spheres[i];
     h = hash_bytes(&s.center, sizeof s.center, h);
@@ -239,6 +251,8 @@ SceneView geometry_view(const Scene& scene) {
   v.positions = scene.positions.data();
   v.uvs = !scene.uvs.empty() && scene.uvs.size() == scene.positions.size() ? scene.uvs.data() : nullptr;
   v.normals = !scene.normals.empty() && scene.normals.size() == scene.positions.size() ? scene.normals.data() : nullptr;
+  v.positions_end = scene.positions_end.size() == scene.positions.size() && !scene.positions_end.empty() ? scene.positions_end.data() : nullptr;
+  v.normals_end = v.positions_end && v.normals && scene.normals_end.size() == scene.normals.size() ? scene.normals_end.data() : nullptr;
   v.triangles = scene.triangles.data();
   v.num_triangles = uint32_t(scene.triangles.size());
   v.spheres = scene.spheres.data();

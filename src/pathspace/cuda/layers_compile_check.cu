@@ -54,6 +54,7 @@
 #include "pathspace/scene/scene_view.h"
 #include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/scene/shading_material.h"
+#include "pathspace/scene/motion.h"
 #include "pathspace/scene/surface_opacity.h"
 #include "pathspace/scene/texture.h"
 #include "pathspace/film/splat_film.h"
@@ -93,14 +94,14 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
   const Light& light = scene.lights[scene.light_selection.sample(sampler.next_1d(), &light_prob)];
   LightSample ls;
   Rgb sum;
-  if (sample_light(scene, light, hit.p, u, &ls)) {
+  if (sample_light(scene, light, hit.p, hit.time, u, &ls)) {
     sum += ls.li * (1.f / ls.pdf_w);
-    acc += light_pdf(scene, light, hit.p, ls.p, hit.ng);
+    acc += light_pdf(scene, light, hit.p, ls.p, hit.ng, hit.time);
   }
   EmissionSample es;
-  if (sample_emission(scene, light, u, v, &es)) {
+  if (sample_emission(scene, light, hit.time, u, v, &es)) {
     float pdf_a = 0.f, pdf_w = 0.f;
-    emission_pdf(scene, light, es.n, es.d, &pdf_a, &pdf_w);
+    emission_pdf(scene, light, es.n, es.d, es.time, &pdf_a, &pdf_w);
     sum += es.weight * (pdf_a + pdf_w);
   }
   if (scene.environment_light >= 0) {
@@ -140,7 +141,7 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
     acc += triangle_uv(tri, scene.uvs, 0.25f, 0.25f).y;
     sum += Rgb(triangle_shading_normal(tri, scene.normals, 0.25f, 0.25f, hit.ng).x);
   }
-  const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon);
+  const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon, hit.time);
   acc += shadow.tmax + scene.bounds.radius;
   acc += cosine_hemisphere_pdf(square_to_cosine_hemisphere(u)) + uniform_cone_pdf(0.5f) +
          square_to_uniform_sphere(disk_concentric_to_square(square_to_disk_concentric(u))).z;

@@ -22,6 +22,7 @@ struct SurfaceHit {
   ShapeKind kind = ShapeKind::triangle;
   uint32_t material = 0;
   int32_t light = kNoLight;
+  float time = 0.f;  // the ray's time (geometry/ray.h): rays leaving the hit inherit it
 };
 
 }  // namespace pathspace

@@ -21,6 +21,7 @@ struct EmissionSample {
   bool delta_position = false;   // point light: nothing can hit it
   bool delta_direction = false;  // directional light
   bool infinite = false;         // directional / environment: p is a proxy on a disk
+  float time = 0.f;              // the light path's time (scene/motion.h); its rays carry it
 };
 
 namespace emission_detail {
@@ -53,18 +54,21 @@ PS_INLINE Vec3 disk_point(const Vec3& c, const Vec3& d, float r, Point2 u) {
 }
 }  // namespace emission_detail
 
-// Samples an emission from light l with four uniform numbers. Returns false for a zero sample.
-PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, Point2 u_pos, Point2 u_dir, EmissionSample* e) {
+// Samples an emission from light l at `time` (a moving emitter where it is then) with four uniform
+// numbers. Returns false for a zero sample.
+PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float time, Point2 u_pos, Point2 u_dir,
+                               EmissionSample* e) {
   using namespace emission_detail;
   e->delta_position = e->delta_direction = e->infinite = false;
+  e->time = time;
   switch (l.type) {
     case LightType::area_triangle:
     case LightType::area_sphere: {
       Vec3 p, n;
       float area;
       if (l.type == LightType::area_triangle) {
-        const Triangle& tri = scene.triangles[l.shape];
-        const Vec3 p0 = scene.positions[tri.v[0]], p1 = scene.positions[tri.v[1]], p2 = scene.positions[tri.v[2]];
+        const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+        const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
         const Point2 b = square_to_triangle_barycentric(u_pos);
         p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
         n = triangle_normal(p0, p1, p2);
@@ -154,8 +158,9 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, Point2 u_
 }
 
 // Densities with which sample_emission produces the emission (p, d) from light l (for MIS in BPT):
-// pdf_a of the origin and pdf_w of the direction. For area lights n is the light's geometric normal at p.
-PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& n, const Vec3& d, float* pdf_a,
+// pdf_a of the origin and pdf_w of the direction. For area lights n is the light's geometric normal at p,
+// at `time`.
+PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& n, const Vec3& d, float time, float* pdf_a,
                             float* pdf_w) {
   *pdf_a = 0.f;
   *pdf_w = 0.f;
@@ -164,8 +169,8 @@ PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::area_sphere: {
       float area;
       if (l.type == LightType::area_triangle) {
-        const Triangle& tri = scene.triangles[l.shape];
-        area = triangle_area(scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]]);
+        const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+        area = triangle_area(tv.p0, tv.p1, tv.p2);
       } else {
         const float r = scene.spheres[l.shape].radius;
         area = kFourPi * r * r;

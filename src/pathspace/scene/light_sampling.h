@@ -10,6 +10,7 @@
 #include "pathspace/lights/light.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/warps.h"
+#include "pathspace/scene/motion.h"
 #include "pathspace/scene/scene_view.h"
 
 namespace pathspace {
@@ -30,11 +31,12 @@ PS_INLINE float solid_angle_from_area(float pdf_a, const Vec3& ref, const Vec3& 
 }
 }  // namespace detail
 
-PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& ref, Point2 u, LightSample* s) {
+// A direction from `ref` towards light l at `time` (a moving emitter where it is then).
+PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& ref, float time, Point2 u, LightSample* s) {
   switch (l.type) {
     case LightType::area_triangle: {
-      const Triangle& tri = scene.triangles[l.shape];
-      const Vec3 p0 = scene.positions[tri.v[0]], p1 = scene.positions[tri.v[1]], p2 = scene.positions[tri.v[2]];
+      const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+      const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
       const Point2 b = square_to_triangle_barycentric(u);
       const Vec3 p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
       const Vec3 n = triangle_normal(p0, p1, p2);
@@ -115,13 +117,12 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
 
 // Solid-angle pdf with which sample_light would produce the direction from `ref` to the point `p`
 // (normal n) on light l; for the environment light only the direction p - ref matters (pass
-// ref + w).
-PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& ref, const Vec3& p, const Vec3& n) {
+// ref + w). `time`: the path's, at which a moving emitter's area is taken.
+PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& ref, const Vec3& p, const Vec3& n, float time) {
   switch (l.type) {
     case LightType::area_triangle: {
-      const Triangle& tri = scene.triangles[l.shape];
-      const Vec3 p0 = scene.positions[tri.v[0]], p1 = scene.positions[tri.v[1]], p2 = scene.positions[tri.v[2]];
-      return detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
+      const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+      return detail::solid_angle_from_area(1.f / triangle_area(tv.p0, tv.p1, tv.p2), ref, p, n);
     }
     case LightType::area_sphere: {
       const Sphere& sp = scene.spheres[l.shape];

@@ -124,7 +124,10 @@ void Scene::add_environment_map(EnvironmentImage image, const Rgb& scale) {
 Bounds3 Scene::geometry_bounds() const {
   Bounds3 b;
   for (const Triangle& t : triangles)
-    for (uint32_t v : t.v) b.expand(positions[v]);
+    for (uint32_t v : t.v) {
+      b.expand(positions[v]);
+      if (v < positions_end.size()) b.expand(positions_end[v]);  // everywhere the shutter sees it
+    }
   for (const Sphere& s : spheres) {
     b.expand(s.center - Vec3(s.radius));
     b.expand(s.center + Vec3(s.radius));
@@ -226,6 +229,22 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
       b.w = triangle_normal(p0, p1, p2);
       if (!all_finite(b.w)) b.phi = 0.f;  // a degenerate triangle emits nothing
       b.cos_theta_o = 1.f;
+      if (!positions_end.empty()) {
+        // Moving (motion blur): the box holds both ends of the motion, which is linear per vertex, and
+        // the normal cone both ends' normals (a blend of the two lies between them).
+        const Vec3 q0 = positions_end[t.v[0]], q1 = positions_end[t.v[1]], q2 = positions_end[t.v[2]];
+        for (const Vec3& q : {q0, q1, q2}) b.box.expand(q);
+        const Vec3 w_end = triangle_normal(q0, q1, q2);
+        if (!all_finite(w_end)) b.phi = 0.f;
+        const Vec3 sum = b.w + w_end;
+        if (length_squared(sum) > 1e-12f) {
+          const Vec3 w = normalize(sum);
+          b.cos_theta_o = std::min(dot(w, b.w), dot(w, w_end));
+          b.w = w;
+        } else {
+          b.cos_theta_o = -1.f;  // opposite normals: every direction
+        }
+      }
       b.cos_theta_e = 0.f;
       b.two_sided = l.two_sided;
       return b;
@@ -299,6 +318,14 @@ void Scene::finalize() {
     throw Error("more vertex uvs or normals than vertices");
   if (!uvs.empty()) uvs.resize(positions.size());
   if (!normals.empty()) normals.resize(positions.size());
+  if (positions_end.size() > positions.size() || normals_end.size() > normals.size())
+    throw Error("more end positions or normals (motion blur) than vertices");
+  if (!positions_end.empty()) {
+    for (size_t i = positions_end.size(); i < positions.size(); ++i) positions_end.push_back(positions[i]);
+    for (size_t i = normals_end.size(); i < normals.size(); ++i) normals_end.push_back(normals[i]);
+  } else if (!normals_end.empty()) {
+    throw Error("end normals (motion blur) without end positions");
+  }
   if (camera.width <= 0 || camera.height <= 0) throw Error("scene has no camera resolution");
 
   const Bounds3 b = geometry_bounds();
@@ -346,6 +373,8 @@ SceneView Scene::view() const {
   v.positions = positions.data();
   v.uvs = uvs.size() == positions.size() && !uvs.empty() ? uvs.data() : nullptr;
   v.normals = normals.size() == positions.size() && !normals.empty() ? normals.data() : nullptr;
+  v.positions_end = positions_end.empty() ? nullptr : positions_end.data();
+  v.normals_end = v.positions_end && v.normals ? normals_end.data() : nullptr;
   v.triangles = triangles.data();
   v.num_triangles = uint32_t(triangles.size());
   v.spheres = spheres.data();

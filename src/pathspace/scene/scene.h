@@ -38,6 +38,11 @@ class Scene {
   // position; finalize pads vertices added without them with uv (0, 0) and normal 0 (flat shading).
   std::vector<Point2> uvs;
   std::vector<Vec3> normals;
+  // Motion blur (scene/motion.h): the vertices and normals at shutter close, empty in a still scene;
+  // else positions_end has one per position (finalize pads it with the positions, so vertices added
+  // without an end position stand still) and normals_end one per normal.
+  std::vector<Vec3> positions_end;
+  std::vector<Vec3> normals_end;
   std::vector<Triangle> triangles;
   std::vector<Sphere> spheres;
   std::vector<Material> materials;

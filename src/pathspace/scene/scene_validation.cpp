@@ -123,6 +123,8 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
   check_camera(scene.camera, src.camera());
   for (size_t i = 0; i < scene.positions.size(); ++i)
     check_point(scene.positions[i], "vertex " + std::to_string(i), src.find(K::kVertex, i));
+  for (size_t i = 0; i < scene.positions_end.size(); ++i)
+    check_point(scene.positions_end[i], "vertex " + std::to_string(i) + " at shutter close", src.find(K::kVertex, i));
   for (size_t i = 0; i < scene.spheres.size(); ++i) {
     const Sphere& s = scene.spheres[i];
     check_point(s.center, "the centre of sphere " + std::to_string(i), src.find(K::kSphere, i));

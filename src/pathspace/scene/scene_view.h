@@ -20,6 +20,9 @@ struct SceneView {
   const Vec3* positions = nullptr;
   const Point2* uvs = nullptr;      // per vertex, or nullptr when no mesh has texture coordinates
   const Vec3* normals = nullptr;    // per vertex (zero = flat), or nullptr when no mesh has normals
+  // At shutter close, when the scene moves (scene/motion.h); nullptr in still scenes.
+  const Vec3* positions_end = nullptr;
+  const Vec3* normals_end = nullptr;  // set when positions_end and normals are
   const Triangle* triangles = nullptr;
   uint32_t num_triangles = 0;
   const Sphere* spheres = nullptr;

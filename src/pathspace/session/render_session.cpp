@@ -26,11 +26,16 @@ std::string settings_fingerprint(const RenderConfig& config) {
 }
 
 // What distinguishes one scene from another of the same image size, cheaply: its name, sizes, bounds
-// and a hash of its vertex positions (material parameters are not compared).
+// and a hash of its vertex positions, at shutter close too in a scene that moves (material parameters
+// are not compared). A still scene's fingerprint is what it was before motion blur.
 std::string scene_fingerprint(const Scene& scene) {
   const BoundingSphere b = scene.bounds();
   const uint64_t hash = fnv1a64(scene.positions.data(), scene.positions.size() * sizeof(Vec3));  // floats: no padding
-  return "name=" + scene.name + " position_hash=" + std::to_string(hash) + " positions=" + std::to_string(scene.positions.size()) + " triangles=" + std::to_string(scene.triangles.size()) +
+  const std::string motion =
+      scene.positions_end.empty()
+          ? std::string()
+          : " end_position_hash=" + std::to_string(fnv1a64(scene.positions_end.data(), scene.positions_end.size() * sizeof(Vec3)));
+  return "name=" + scene.name + " position_hash=" + std::to_string(hash) + motion + " positions=" + std::to_string(scene.positions.size()) + " triangles=" + std::to_string(scene.triangles.size()) +
          " spheres=" + std::to_string(scene.spheres.size()) + " materials=" + std::to_string(scene.materials.size()) +
          " lights=" + std::to_string(scene.lights.size()) + " max_segments=" + std::to_string(scene.max_path_segments) +
          " bounds=" + std::to_string(b.center.x) + "," + std::to_string(b.center.y) + "," + std::to_string(b.center.z) + "," +

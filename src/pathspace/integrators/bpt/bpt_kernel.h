@@ -49,10 +49,10 @@ struct LightVertex {
   int segments = 0;    // segments from the light to this vertex (1: first hit)
 };
 
-PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const Vec3& p) {
+PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const Vec3& p, float time) {
   if (l.type == LightType::area_triangle) {
-    const Triangle& tri = scene.triangles[l.shape];
-    return triangle_normal(scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]]);
+    const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+    return triangle_normal(tv.p0, tv.p1, tv.p2);
   }
   return sphere_normal(scene.spheres[l.shape], p);
 }
@@ -78,14 +78,15 @@ PS_INLINE void splat(const BptFilms& films, int s, uint32_t pixel, const Rgb& v)
 // (at most max_segments - 2 segments from the light). Returns the number stored.
 template <typename Tracer>
 PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const BptSettings& st,
-                              int max_segments, const BptFilms& films, PathCounters* counters, LightVertex* verts) {
+                              int max_segments, float time, const BptFilms& films, PathCounters* counters,
+                              LightVertex* verts) {
   if (scene.num_lights == 0) return 0;
   const PerspectiveCamera& cam = scene.camera;
   const MisHeuristic h = st.mis;
   const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
 
   LightPathStart start;
-  if (!start_light_path(scene, sampler, &start)) return 0;
+  if (!start_light_path(scene, sampler, time, &start)) return 0;
   const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   const float select_prob = start.select_prob;
@@ -102,7 +103,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
           const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
           splat(films, 1, raster_pixel(cam, pr.rx, pr.ry), le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
@@ -135,7 +136,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
     if (segments == 1) {
       float direct_pdf = select_prob;  // point and directional lights: NEE picks the light's only point/direction
       if (is_area_light(light)) {
-        direct_pdf *= light_pdf(scene, light, hit.p, e.p, e.ng) * fabsf(dot(e.ng, e.d)) / d2;
+        direct_pdf *= light_pdf(scene, light, hit.p, e.p, e.ng, time) * fabsf(dot(e.ng, e.d)) / d2;
       } else if (light.type == LightType::environment) {
         direct_pdf *= environment_pdf(scene, -e.d);
       }
@@ -160,7 +161,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
             const float cos_cam = fabsf(dot(pr.wi, hit.ng));
             const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
@@ -214,7 +215,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       beta *= 1.f / q;
     }
     prev_p = hit.p;
-    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon, time);
   }
   return stored;
 }
@@ -226,6 +227,7 @@ struct CameraVertex {
   Vec3 p, ng, wo;  // wo local
   Rgb beta;
   float dvcm, dvc;
+  float time;  // the sample's (camera and light subpath share it; scene/motion.h)
 };
 
 // s = 1: next event estimation from camera vertex z, weighted against BSDF sampling (s = 0) and the
@@ -239,7 +241,7 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   const Light& light = scene.lights[li];
   LightSample ls;
   const Point2 ul{sampler.at(dims::vertex(vi, dims::kLightU)), sampler.at(dims::vertex(vi, dims::kLightU + 1))};
-  if (!sample_light(scene, light, z.p, ul, &ls)) return {};
+  if (!sample_light(scene, light, z.p, z.time, ul, &ls)) return {};
   const Vec3 wi = z.frame.to_local(ls.wi);
   const Rgb f = bsdf_eval(*z.mat, z.wo, wi, TransportMode::radiance);
   if (is_black(f)) return {};
@@ -248,12 +250,12 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   // light vertex (area measure; solid angle for infinite lights). Light selection cancels.
   float pa, pw, emit_to_z, direct;
   if (is_area_light(light)) {
-    const Vec3 n = area_light_normal(scene, light, ls.p);
-    emission_pdf(scene, light, n, -ls.wi, &pa, &pw);
+    const Vec3 n = area_light_normal(scene, light, ls.p, z.time);
+    emission_pdf(scene, light, n, -ls.wi, z.time, &pa, &pw);
     emit_to_z = pa * pw * cos_z;
     direct = ls.pdf_w * fabsf(dot(n, ls.wi));  // both over dist^2, which cancels
   } else {
-    emission_pdf(scene, light, ls.wi, -ls.wi, &pa, &pw);
+    emission_pdf(scene, light, ls.wi, -ls.wi, z.time, &pa, &pw);
     emit_to_z = pa * pw * cos_z;
     if (is_point_light(light)) emit_to_z /= ls.dist * ls.dist;
     direct = ls.pdf_w;  // 1 for delta lights, the sphere pdf for the environment
@@ -266,7 +268,7 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   const float w_camera = mis(h, emit_to_z / direct) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon))) return {};
+  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon, z.time))) return {};
   return f * ls.li * (fabsf(wi.z) / (pdf_light_w * (w_light + 1.f + w_camera)));
 }
 
@@ -298,7 +300,7 @@ PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeur
   const float w_camera = mis(h, light_dir_a) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon))) return {};
+  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon, z.time))) return {};
   const float g = fabsf(wz.z) * fabsf(ywo.z) * cos_y / (y.cos_in * d2);
   return fz * fy * y.beta * (g / (w_light + 1.f + w_camera));
 }
@@ -315,11 +317,13 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
   const int max_segments = min_int(st.max_segments > 0 ? st.max_segments : scene.max_path_segments, kBptMaxSegments);
   const MisHeuristic h = st.mis;
   const PerspectiveCamera& cam = scene.camera;
+  // One time for the whole sample: every connection joins vertices of the same instant.
+  const float time = camera_path_time(scene, camera_sampler);
   LightVertex verts[kBptMaxSegments];
-  const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, films, counters, verts);
+  const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, time, films, counters, verts);
 
   const Sampler& sampler = camera_sampler;
-  Ray ray = sample_camera_ray(cam, sampler, pixel);
+  Ray ray = sample_camera_ray(cam, sampler, pixel, time);
   // Eq. 31 for the camera: the per-pixel density of the direction is the image's times the pixel
   // count. The lens point's density 1 / A_lens is the same for t = 1 and cancels (header comment).
   const float pdf_pixel_w = cam.pdf_direction(ray.d) * float(cam.width) * float(cam.height);
@@ -340,7 +344,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
         if (segments > 1) {
           const float pick = scene.light_selection.probability(uint32_t(scene.environment_light));
           float pa, pw;
-          emission_pdf(scene, env, ray.d, -ray.d, &pa, &pw);
+          emission_pdf(scene, env, ray.d, -ray.d, time, &pa, &pw);
           w_light = mis(h, pick * environment_pdf(scene, ray.d)) * dvcm + mis(h, pick * pa * pw) * dvc;
         }
         const Rgb c = beta * environment_radiance(scene, env, ray.d) * (1.f / (1.f + w_light));
@@ -363,12 +367,12 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       if (!is_black(le)) {
         const float pick = scene.light_selection.probability(uint32_t(hit.light));
         float pa, pw;
-        emission_pdf(scene, light, hit.ng, -ray.d, &pa, &pw);
+        emission_pdf(scene, light, hit.ng, -ray.d, time, &pa, &pw);
         float w_light;
         if (segments == 1) {
           w_light = mis(h, pick * pa) * dvcm;
         } else {
-          const float direct_a = pick * light_pdf(scene, light, prev_p, hit.p, hit.ng) * cos_in / d2;
+          const float direct_a = pick * light_pdf(scene, light, prev_p, hit.p, hit.ng, time) * cos_in / d2;
           w_light = mis(h, direct_a) * dvcm + mis(h, pick * pa * pw) * dvc;
         }
         const Rgb c = beta * le * (1.f / (1.f + w_light));
@@ -384,7 +388,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t vi = uint32_t(segments - 1);
     if (bsdf_has_non_delta(mat)) {
-      const CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc};
+      const CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc, time};
       if (scene.num_lights > 0) {
         const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
         radiance += c;
@@ -419,7 +423,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       beta *= 1.f / q;
     }
     prev_p = hit.p;
-    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon, time);
   }
   return radiance;
 }

@@ -7,6 +7,7 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/sampling/sampler.h"
+#include "pathspace/scene/motion.h"
 
 namespace pathspace {
 
@@ -16,11 +17,26 @@ PS_HD inline Point2 camera_lens_sample(const PerspectiveCamera& cam, const Sampl
   return {sampler.at(dim), sampler.at(dim + 1)};
 }
 
-// The camera ray of the camera path through `pixel` (box filter: uniform in the pixel and the lens).
-PS_HD inline Ray sample_camera_ray(const PerspectiveCamera& cam, const Sampler& sampler, uint32_t pixel) {
+// The camera ray of the camera path through `pixel` (box filter: uniform in the pixel and the lens),
+// at `time` (scene/motion.h; camera_path_time).
+PS_HD inline Ray sample_camera_ray(const PerspectiveCamera& cam, const Sampler& sampler, uint32_t pixel, float time) {
   const float rx = float(pixel % uint32_t(cam.width)) + sampler.at(dims::kPixelX);
   const float ry = float(pixel / uint32_t(cam.width)) + sampler.at(dims::kPixelY);
-  return cam.generate_ray(rx, ry, camera_lens_sample(cam, sampler, dims::kLensU));
+  Ray ray = cam.generate_ray(rx, ry, camera_lens_sample(cam, sampler, dims::kLensU));
+  ray.time = time;
+  return ray;
+}
+
+// The time of a camera path (uniform over the shutter in a scene that moves, else 0).
+PS_HD inline float camera_path_time(const SceneView& scene, const Sampler& sampler) {
+  return sample_time(scene, sampler, dims::kTime);
+}
+
+// The time shared by every path of a pass, for integrators whose camera and light paths meet through
+// a pass-wide structure (SPPM's photons, PCLT's pixel cache): uniform over the shutter per pass, from
+// a sampler stream no pixel or light path uses.
+PS_HD inline float pass_time(const SceneView& scene, uint64_t seed, uint32_t pass) {
+  return sample_time(scene, Sampler(seed, ~uint64_t(0), pass), dims::kTime);
 }
 
 // Lens sample of a light path's camera connection (0: the emitter, v + 1: light vertex v).

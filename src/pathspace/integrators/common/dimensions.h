@@ -16,6 +16,8 @@ inline constexpr uint32_t kPerVertex = 8;
 // Thin-lens sample of the camera ray (and kLensU + 1): far above every per-vertex block, so a
 // pinhole render, which never reads it, keeps its dimensions and images.
 inline constexpr uint32_t kLensU = 0x40000000u;
+// The camera path's time in a scene that moves (scene/motion.h): read only there.
+inline constexpr uint32_t kTime = kLensU + 2;
 
 // Offsets inside a vertex's block.
 inline constexpr uint32_t kLightSelect = 0;

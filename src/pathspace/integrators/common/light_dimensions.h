@@ -25,6 +25,9 @@ inline constexpr uint32_t kRoulette = 3;
 // connection v + 1 that of vertex v. Pinhole renders never read them.
 inline constexpr uint32_t kLensFirst = 0x40000000u;
 PS_HD inline constexpr uint32_t lens(uint32_t connection) { return kLensFirst + 2u * connection; }
+// The light path's time in a scene that moves (scene/motion.h), below the lens range and far above
+// the per-vertex blocks: still scenes never read it.
+inline constexpr uint32_t kTime = 0x3fffff00u;
 
 PS_HD inline constexpr uint32_t vertex(uint32_t index, uint32_t offset) { return kFirstVertex + index * kPerVertex + offset; }
 

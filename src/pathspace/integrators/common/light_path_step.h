@@ -31,7 +31,7 @@ PS_INLINE bool continue_light_path(const Sampler& sampler, uint32_t vertex, cons
     if (sampler.at(light_dims::vertex(vertex, light_dims::kRoulette)) >= q) return false;
     *beta *= 1.f / q;
   }
-  *ray = spawn_ray(hit.p, hit.ng, wi_world, ray_epsilon);
+  *ray = spawn_ray(hit.p, hit.ng, wi_world, ray_epsilon, hit.time);
   return true;
 }
 

@@ -89,7 +89,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   const PerspectiveCamera& cam = scene.camera;
 
   LightPathStart start;
-  if (!start_light_path(scene, sampler, &start)) return;
+  if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
   const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   const float inv_select = 1.f / start.select_prob;
@@ -103,7 +103,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time))) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
           splat(film, settings, pr.rx, pr.ry, le * scale);
         }
@@ -140,7 +140,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon))) {
+          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time))) {
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
             splat(film, settings, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));
           }

@@ -132,14 +132,16 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   const SplatFilmView sv = splats_.view();
   std::atomic<uint64_t> rays{0}, shadow_rays{0};
 
-  // (a) Eye pass.
+  // (a) Eye pass. In a scene that moves, the pass's eye and light paths share one time (pass_time):
+  // the pixel cache and the visibility buffers hold that instant.
+  const float time = pass_time(view_, seed_, pass);
   auto t = std::chrono::steady_clock::now();
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
       PcltEyeResult eye;
-      pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), uint32_t(pixel), s_,
+      pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), time), uint32_t(pixel), s_,
                      max_segments_, &local, &eye);
       stored_[pixel] = eye.stored;
       if (eye.stored) staging_[pixel] = eye.entry;
@@ -179,6 +181,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   lv.gather_scale = float(1.0 / (double(kPi) * double(r) * double(r) * double(light_paths_)));
   lv.inv_paths = float(1.0 / double(light_paths_));
   lv.max_segments = max_segments_;
+  lv.time = time;
   const uint64_t light_seed = seed_ ^ kLightStream;
   std::atomic<uint64_t> queries{0}, gathered{0}, projections{0}, tests{0};
   parallel_for(size_t(light_paths_), kPathGrain, [&](size_t begin, size_t end) {

@@ -142,14 +142,14 @@ PS_HD Rgb delta_light_connection(const SceneView& scene, const Tracer& tracer, c
   const Light& light = scene.lights[li];
   LightSample ls;
   const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
-  if (!is_delta_light(light) || !sample_light(scene, light, hit.p, ul, &ls)) return {};
+  if (!is_delta_light(light) || !sample_light(scene, light, hit.p, hit.time, ul, &ls)) return {};
   const Vec3 wi = frame.to_local(ls.wi);
   const Rgb full = bsdf_eval(m, wo, wi, TransportMode::radiance), fd = diffuse_eval(m, wo, wi);
   const Rgb f(fmaxf(full.r - fd.r, 0.f), fmaxf(full.g - fd.g, 0.f), fmaxf(full.b - fd.b, 0.f));
   if (is_black(f)) return {};
   ++counters->rays;
   ++counters->shadow_rays;
-  if (tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon))) return {};
+  if (tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon, hit.time))) return {};
   return f * ls.li * (fabsf(wi.z) / (select_prob * ls.pdf_w));
 }
 
@@ -215,7 +215,7 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
       if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) return;
       beta *= 1.f / q;
     }
-    ray = spawn_ray(hit.p, hit.ng, frame.to_world(sc.wi), scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(sc.wi), scene.ray_epsilon, hit.time);
   }
 }
 
@@ -238,6 +238,7 @@ struct PcltLightView {
   float gather_scale = 0.f;  // 1 / (pi r^2 N_light): density estimate and the pass average in one
   float inv_paths = 0.f;     // 1 / N_light
   int max_segments = 0;
+  float time = 0.f;          // the pass's (pass_time): its eye paths' and light paths' instant
 };
 
 struct PcltLightCounters {
@@ -265,7 +266,7 @@ PS_HD bool projection_visible(const SceneView& scene, const Tracer& tracer, cons
   }
   ++counters->rays;
   ++counters->shadow_rays;
-  return !tracer.occluded(spawn_shadow_ray(p, ng, pr.wi, pr.dist, scene.ray_epsilon));
+  return !tracer.occluded(spawn_shadow_ray(p, ng, pr.wi, pr.dist, scene.ray_epsilon, lv.time));
 }
 
 // Adds the light vertex (power beta, arriving from wi, after `segments` light segments) to every
@@ -298,7 +299,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
   if (scene.num_lights == 0) return;
   const PerspectiveCamera& cam = scene.camera;
   LightPathStart start;
-  if (!start_light_path(scene, sampler, &start)) return;
+  if (!start_light_path(scene, sampler, lv.time, &start)) return;
   const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   const float inv_select = 1.f / start.select_prob;

@@ -44,7 +44,7 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
                                 PathCounters* counters, CausticPhoton* out) {
   out->stored = false;
   LightPathStart start;
-  if (!start_light_path(scene, sampler, &start)) return;
+  if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);
   Ray ray = first_light_ray(scene, e);
@@ -70,7 +70,7 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
     if (!bs.delta) return;  // not a caustic path (any more)
     beta *= bs.weight;
     if (is_black(beta) || !all_finite(beta)) return;
-    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);
   }
 }
 

@@ -93,7 +93,7 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
-      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local);
+      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local);
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
@@ -145,7 +145,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
     for (size_t path = begin; path < end; ++path) {
       const size_t pixel = first + path;
       const Sampler sampler(seed, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), settings_, &local, &sample,
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local, &sample,
                     probes_, stream != 0, caustics_ ? &caustics_->view() : nullptr);
       buffer->store(path, uint32_t(pixel), sample);
     }
@@ -167,7 +167,7 @@ void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffe
     for (size_t k = begin; k < end; ++k) {
       const uint32_t pixel = request.pixels[k];
       const Sampler sampler(request.seed, pixel, request.pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(request.camera, sampler, pixel), settings_, &local, &sample, probes_,
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(request.camera, sampler, pixel, camera_path_time(view_, sampler)), settings_, &local, &sample, probes_,
                     false, caustics_ ? &caustics_->view() : nullptr);
       buffer->store(k, pixel, sample);
     }

@@ -90,14 +90,14 @@ PS_HD void probe_visibility(const SceneView& scene, const Tracer& tracer, const 
     }
     ++counters->rays;
     ++counters->shadow_rays;
-    if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, d, dist, scene.ray_epsilon))) g->visible_lights |= 1u << k;
+    if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, d, dist, scene.ray_epsilon, hit.time))) g->visible_lights |= 1u << k;
   }
   g->open_distance = 0.f;
   if (probes.open_ray) {
     const Vec3 up = dot(hit.ns, towards_viewer) >= 0.f ? hit.ns : -hit.ns;
     SurfaceHit h;
     ++counters->rays;
-    g->open_distance = tracer.intersect(spawn_ray(hit.p, hit.ng, up, scene.ray_epsilon), &h) ? h.t : kInfinity;
+    g->open_distance = tracer.intersect(spawn_ray(hit.p, hit.ng, up, scene.ray_epsilon, hit.time), &h) ? h.t : kInfinity;
   }
 }
 
@@ -216,7 +216,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
         s->radiance() += s->beta * le;
       } else if (settings.bsdf_sampling) {
         const float select_prob = light_selection_probability_at(scene, s->prev_p, s->prev_ns, uint32_t(hit.light));
-        const float light_pdf_w = select_prob * light_pdf(scene, light, s->prev_p, hit.p, hit.ng);
+        const float light_pdf_w = select_prob * light_pdf(scene, light, s->prev_p, hit.p, hit.ng, hit.time);
         s->radiance() += s->beta * le * combine_mis(settings, s->prev_bsdf_pdf, light_pdf_w);
       }
     }
@@ -271,11 +271,11 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     const uint32_t li = select_light_at(scene, hit.p, hit.ns, sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
     LightSample ls;
     const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
-    if (li != LightTreeView::kNone && sample_light(scene, scene.lights[li], hit.p, ul, &ls)) {
+    if (li != LightTreeView::kNone && sample_light(scene, scene.lights[li], hit.p, hit.time, ul, &ls)) {
       const Vec3 wi = frame.to_local(ls.wi);
       const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
       if (!is_black(f)) {
-        s->shadow_ray = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon);
+        s->shadow_ray = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon, hit.time);
         ++counters->rays;
         ++counters->shadow_rays;
         const float pdf_light = select_prob * ls.pdf_w;
@@ -323,7 +323,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     s->beta *= 1.f / q;
     s->abs_beta *= 1.f / q;
   }
-  s->ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+  s->ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);
   ++s->segments;
   return PtNext::extend;
 }

@@ -63,14 +63,17 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   last_radius_ = r;
   SharedCounters shared;
 
-  // (a) Eye pass: one jittered camera path per pixel to its visible point.
+  // (a) Eye pass: one jittered camera path per pixel to its visible point. In a scene that moves, the
+  // pass's eye paths and photons share one time (pass_time), so photons meet the visible points of
+  // the same instant; the passes average over the shutter.
+  const float time = pass_time(view_, seed_, pass);
   auto t = std::chrono::steady_clock::now();
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     uint64_t points = 0;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
-      sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel)), s, max_segments_, &local, &direct_[pixel],
+      sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), time), s, max_segments_, &local, &direct_[pixel],
                      &points_[pixel]);
       points += points_[pixel].valid;
       flux_[3 * pixel] = flux_[3 * pixel + 1] = flux_[3 * pixel + 2] = 0;
@@ -164,6 +167,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
 void SppmIntegrator::trace_and_deposit_photons(uint32_t pass, uint64_t first, uint64_t count, const SppmGatherView& gather,
                                                PathCounters* counters, PhotonCounters* photons) {
   const uint64_t photon_seed = seed_ ^ kPhotonStream;
+  const float time = pass_time(view_, seed_, pass);  // the eye pass's (trace_pass)
   const size_t chunks = size_t((count + kPhotonGrain - 1) / kPhotonGrain);
   if (chunk_hits_.size() < chunks) chunk_hits_.resize(chunks);
   std::atomic<uint64_t> rays{0};
@@ -174,7 +178,7 @@ void SppmIntegrator::trace_and_deposit_photons(uint32_t pass, uint64_t first, ui
       hits.clear();
       const uint64_t end = std::min(first + count, first + (c + 1) * kPhotonGrain);
       for (uint64_t i = first + c * kPhotonGrain; i < end; ++i)
-        sppm_walk_photon(view_, accel_, Sampler(photon_seed, i, pass), settings_, max_segments_, &local,
+        sppm_walk_photon(view_, accel_, Sampler(photon_seed, i, pass), settings_, max_segments_, time, &local,
                          [&](const PhotonHit& h) { hits.push_back(h); });
     }
     rays += local.rays;

@@ -134,7 +134,7 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
       if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) break;
       beta *= 1.f / q;
     }
-    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);
   }
   *direct = radiance;
 }
@@ -197,8 +197,14 @@ PS_INLINE float max_photon_power(const SceneView& scene) {
     const float disk = kPi * scene.bounds.radius * scene.bounds.radius;
     switch (l.type) {
       case LightType::area_triangle: {
-        const Triangle& tri = scene.triangles[l.shape];
-        scale = kPi * triangle_area(scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]]);
+        // A moving emitter's area changes while the shutter is open (scene/motion.h): the largest of
+        // its two ends and its middle.
+        float area = 0.f;
+        for (const float time : {0.f, 0.5f, 1.f}) {
+          const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+          area = fmaxf(area, triangle_area(tv.p0, tv.p1, tv.p2));
+        }
+        scale = kPi * area;
         break;
       }
       case LightType::area_sphere: scale = kPi * kFourPi * scene.spheres[l.shape].radius * scene.spheres[l.shape].radius; break;
@@ -233,12 +239,13 @@ struct PhotonHit {
 // One photon path: emitted by sample_emission (scene/light_emission.h), scattered with importance
 // transport, handing every non-delta vertex including the first (SPPM has no separate direct
 // lighting) to deposit(const PhotonHit&). Light paths longer than max_segments - 1 cannot join
-// the shortest camera side (one segment).
+// the shortest camera side (one segment). `time`: the pass's (pass_time), which its visible points share.
 template <typename Tracer, typename Deposit>
 PS_HD void sppm_walk_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
-                            const SppmSettings& settings, int max_segments, PathCounters* counters, Deposit&& deposit) {
+                            const SppmSettings& settings, int max_segments, float time, PathCounters* counters,
+                            Deposit&& deposit) {
   LightPathStart start;
-  if (!start_light_path(scene, sampler, &start)) return;
+  if (!start_light_path(scene, sampler, time, &start)) return;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);  // photon power Phi = L_e cos / (p_select pdf_a pdf_w)
   Ray ray = first_light_ray(scene, e);
@@ -269,16 +276,16 @@ PS_HD void sppm_walk_photon(const SceneView& scene, const Tracer& tracer, const 
       if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) break;
       beta *= 1.f / q;
     }
-    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon);
+    ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);
   }
 }
 
 // One photon path deposited into the grid as it goes (the device's order).
 template <typename Tracer>
 PS_HD void sppm_trace_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler,
-                             const SppmSettings& settings, const SppmGatherView& gather, PathCounters* counters,
-                             PhotonCounters* photons) {
-  sppm_walk_photon(scene, tracer, sampler, settings, gather.max_segments, counters, [&](const PhotonHit& h) {
+                             const SppmSettings& settings, const SppmGatherView& gather, float time,
+                             PathCounters* counters, PhotonCounters* photons) {
+  sppm_walk_photon(scene, tracer, sampler, settings, gather.max_segments, time, counters, [&](const PhotonHit& h) {
     ++photons->deposits;
     photons->gathered += sppm_deposit(scene, gather, h.p, h.wi, h.power, int(h.segments));
   });

@@ -29,6 +29,7 @@ class Builder {
   Scene run(SceneFileSettings* settings) {
     const std::string version = doc_.attr(doc_.scene(), "version");
     if (version.empty()) w_->add(doc_.loc(doc_.scene()), "<scene> has no version attribute; read as Mitsuba 3");
+    read_shutter();
     for (const pugi::xml_node& n : doc_.scene().children()) {
       if (n.type() != pugi::node_element) continue;
       const std::string tag = n.name();
@@ -49,6 +50,27 @@ class Builder {
   }
 
  private:
+  // The first sensor's shutter (Mitsuba 3's shutter_open and shutter_close, default 0 and 0: no
+  // blur), read before the shapes that move during it, wherever the sensor stands in the file.
+  void read_shutter() {
+    for (const pugi::xml_node& n : doc_.scene().children("sensor")) {
+      const Object o(doc_, n);
+      shutter_.open = o.get_float("shutter_open", 0.0);
+      shutter_.close = o.get_float("shutter_close", 0.0);
+      if (!(std::isfinite(shutter_.open) && std::isfinite(shutter_.close) && shutter_.close >= shutter_.open))
+        throw Error(o.loc(), "shutter_close must not be before shutter_open (both finite)");
+      return;
+    }
+  }
+
+  // The to_world of a sensor or an emitter, which do not move: an <animation> keeps its first key.
+  Mat4 still_transform(const Object& o) {
+    bool animated = false;
+    const Mat4 m = o.get_transform("to_world", &animated);
+    if (animated) w_->add(o.loc(), o.title() + ": an animated to_world moves shapes only; this one keeps its first key");
+    return m;
+  }
+
   Scene finish(SceneFileSettings* settings) {
     const int w = options_.width > 0 ? options_.width : film_width_;
     const int h = options_.height > 0 ? options_.height : film_height_;
@@ -140,7 +162,7 @@ class Builder {
     has_sensor_ = true;
     sensor_loc_ = o.loc();
     fov_ = read_fov(o);
-    camera_to_world_ = o.get_transform("to_world");
+    camera_to_world_ = still_transform(o);
     o.ignore({"near_clip", "far_clip", "shutter_open", "shutter_close", "principal_point_offset_x", "principal_point_offset_y"});
     for (const pugi::xml_node& n : o.children("film")) film(Object(doc_, n));
     for (const pugi::xml_node& n : o.children("sampler")) sampler(Object(doc_, n));
@@ -209,18 +231,18 @@ class Builder {
     const Material& m = scene_.materials[material];
     if (!is_black(radiance) && (!is_black(m.diffuse) || !is_black(m.glossy) || !is_black(m.specular) || m.type != MaterialType::standard))
       w_->add(o.loc(), "an emissive shape's BSDF is ignored (pathspace emitters do not reflect light)");
-    add_shape(o, material, radiance, folder_, w_, &scene_);
+    add_shape(o, material, radiance, folder_, shutter_, w_, &scene_);
     o.warn_unused(w_);
   }
 
   void emitter(const Object& o) {
     const std::string& t = o.type();
     if (t == "point") {
-      const Mat4 m = o.get_transform("to_world");
+      const Mat4 m = still_transform(o);
       scene_.add_point_light(m.point(o.get_vector("position", Vec3())),
                              o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
     } else if (t == "directional") {
-      const Mat4 m = o.get_transform("to_world");
+      const Mat4 m = still_transform(o);
       const Vec3 dir = m.vector(o.get_vector("direction", Vec3(0, 0, 1)));
       if (!(length(dir) > 0.f) || !all_finite(dir)) throw Error(o.loc(), "directional emitter: direction must be non-zero");
       scene_.add_directional_light(dir, o.get_rgb("irradiance", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
@@ -266,7 +288,7 @@ class Builder {
   // 3/4 of cutoff_angle, degrees), fading linearly in the angle to nothing at cutoff_angle; a bitmap
   // `texture` over the cone at uv = 0.5 + 0.5 (x, y) / (z tan cutoff), as Mitsuba 3's spot.
   void spot(const Object& o) {
-    const Mat4 m = o.get_transform("to_world");
+    const Mat4 m = still_transform(o);
     const double cutoff = o.get_float("cutoff_angle", 20.0);
     const double beam = o.get_float("beam_width", cutoff * 0.75);
     if (!(cutoff > 0.0 && cutoff <= 180.0) || !(beam >= 0.0)) throw Error(o.loc(), "spot emitter: need 0 < cutoff_angle <= 180 and beam_width >= 0");
@@ -296,7 +318,7 @@ class Builder {
   // projector.cpp), u running against to_world's x (Mitsuba's camera x axis points left).
   void projector(const Object& o) {
     if (!o.has("irradiance")) throw Error(o.loc(), "projector emitter needs irradiance");
-    const Mat4 m = o.get_transform("to_world");
+    const Mat4 m = still_transform(o);
     const Frame f = emitter_frame(o, m);
     const Property* p = o.find("irradiance");
     int32_t texture = -1;
@@ -320,7 +342,7 @@ class Builder {
     if (file.empty() || !std::filesystem::is_regular_file(path, ec))
       throw Error(o.find("filename") ? doc_.loc(o.find("filename")->node) : o.loc(),
                   "environment map '" + file + "' not found (looked for " + path.string() + ")");
-    const Mat4 m = o.get_transform("to_world");
+    const Mat4 m = still_transform(o);
     EnvironmentImage image;
     try {
       image = read_environment_image(path.string(), EnvironmentMapping::lat_long, m.vector(Vec3(1, 0, 0)),
@@ -345,6 +367,7 @@ class Builder {
   bool has_sensor_ = false, has_environment_ = false;
   FileLoc sensor_loc_;
   Mat4 camera_to_world_;
+  Shutter shutter_;
   FieldOfView fov_;
   float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole
   int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "pathspace/io/image_io.h"
+#include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/spectrum/spectrum_to_rgb.h"
 
 namespace pathspace::mitsuba {
@@ -15,7 +16,7 @@ namespace pathspace::mitsuba {
 namespace {
 
 const char* const kPropertyTags[] = {"float", "integer", "boolean", "string", "rgb", "srgb", "spectrum",
-                                     "point", "vector", "transform", "blackbody", "color"};
+                                     "point", "vector", "transform", "blackbody", "color", "animation"};
 
 float srgb_to_linear(double c) { return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); }
 
@@ -188,12 +189,61 @@ Rgb Object::texture_rgb(const pugi::xml_node& node, const std::string& name, con
   return fallback;
 }
 
-Mat4 Object::get_transform(const std::string& name) const {
+Mat4 Object::get_transform(const std::string& name, bool* animated) const {
+  const TransformKeys keys = get_transform_keys(name);
+  if (animated) *animated = keys.animated();
+  return keys.transforms.front();
+}
+
+Object::TransformKeys Object::get_transform_keys(const std::string& name) const {
   const Property* p = find(name);
+  TransformKeys keys;
+  if (!p) {
+    keys.times.push_back(0.0);
+    keys.transforms.push_back(Mat4());
+    return keys;
+  }
+  if (p->tag == "transform") {
+    keys.times.push_back(0.0);
+    keys.transforms.push_back(parse_transform(p->node));
+    return keys;
+  }
+  if (p->tag != "animation") throw Error(doc_->loc(p->node), "property '" + name + "' must be a <transform> or an <animation>");
+  std::vector<std::pair<double, Mat4>> sorted;
+  for (const pugi::xml_node& key : p->node.children()) {
+    if (key.type() != pugi::node_element) continue;
+    const FileLoc loc = doc_->loc(key);
+    if (std::string(key.name()) != "transform") throw Error(loc, "<animation> holds <transform time=...> keys only");
+    if (!doc_->has_attr(key, "time")) throw Error(loc, "an <animation> key needs a time attribute");
+    const double time = parse_number(doc_->attr(key, "time"), loc);
+    if (!std::isfinite(time)) throw Error(loc, "an <animation> key's time must be finite");
+    for (const auto& [t, m] : sorted)
+      if (t == time) throw Error(loc, "two <animation> keys at the same time");
+    sorted.emplace_back(time, parse_transform(key));
+  }
+  if (sorted.empty()) throw Error(doc_->loc(p->node), "<animation> without <transform time=...> keys");
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [t, m] : sorted) {
+    keys.times.push_back(t);
+    keys.transforms.push_back(m);
+  }
+  return keys;
+}
+
+Mat4 Object::TransformKeys::at(double time, const FileLoc& loc) const {
+  if (time <= times.front()) return transforms.front();
+  if (time >= times.back()) return transforms.back();
+  size_t k = 1;
+  while (times[k] < time) ++k;
+  Mat4 out;
+  if (!pbrt::interpolate_transform(transforms[k - 1], transforms[k], (time - times[k - 1]) / (times[k] - times[k - 1]), &out))
+    throw Error(loc, "the animated transform cannot be interpolated (a singular key)");
+  return out;
+}
+
+Mat4 Object::parse_transform(const pugi::xml_node& node) const {
   Mat4 m;
-  if (!p) return m;
-  if (p->tag != "transform") throw Error(doc_->loc(p->node), "property '" + name + "' must be a <transform>");
-  for (const pugi::xml_node& op : p->node.children()) {
+  for (const pugi::xml_node& op : node.children()) {
     if (op.type() != pugi::node_element) continue;
     const std::string t = op.name();
     const FileLoc loc = doc_->loc(op);

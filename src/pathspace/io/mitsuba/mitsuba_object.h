@@ -48,8 +48,20 @@ class Object {
   Rgb get_rgb(const std::string& name, const Rgb& fallback, const std::string& folder, LoadWarnings* w,
               SpectrumUse use = SpectrumUse::reflectance) const;
   // <transform name=...>: its translate/rotate/scale/matrix/lookat children, each applied after
-  // the previous ones (M = op * M); identity when absent.
-  Mat4 get_transform(const std::string& name) const;
+  // the previous ones (M = op * M); identity when absent. For an <animation name=...> (below) the
+  // transform of its first key, and *animated (when given) is set.
+  Mat4 get_transform(const std::string& name, bool* animated = nullptr) const;
+  // <animation name=...> with <transform time="t"> keys (Mitsuba 2's and 3's animated transforms),
+  // sorted by time; a plain <transform> (or none) is one key at time 0.
+  struct TransformKeys {
+    std::vector<double> times;
+    std::vector<Mat4> transforms;
+    bool animated() const { return transforms.size() > 1; }
+    // The transform at `time`: interpolated between the keys around it as pbrt-v4 and Mitsuba
+    // interpolate (io/pbrt/pbrt_animated_transform.h), the first or last key outside them.
+    Mat4 at(double time, const FileLoc& loc) const;
+  };
+  TransformKeys get_transform_keys(const std::string& name) const;
   // Nested objects with this tag (<bsdf>, <emitter>, <ref>, ...), marked used.
   std::vector<pugi::xml_node> children(const std::string& tag) const;
 
@@ -63,6 +75,7 @@ class Object {
   void warn_unused(LoadWarnings* w) const;
 
  private:
+  Mat4 parse_transform(const pugi::xml_node& node) const;  // a <transform>'s operations
   const Document* doc_;
   pugi::xml_node node_;
   std::string tag_, type_;

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "pathspace/io/obj_loader.h"
+#include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/ply_reader.h"
 
 namespace pathspace::mitsuba {
@@ -26,9 +27,18 @@ struct LocalMesh {
 
 Point2 from_mitsuba_uv(float u, float v) { return {u, 1.f - v}; }
 
-// Appends the mesh transformed by m. `flip` swaps the winding (analytic shapes under a mirroring
-// transform, flip_normals). Zero-area emitting triangles are dropped: they cannot be sampled.
-void add_mesh(const LocalMesh& mesh, const Mat4& m, bool flip, uint32_t material, const Rgb& le, const FileLoc& loc, Scene* s) {
+// The shape's to_world at shutter open and close; `moving` when they differ (motion blur).
+struct ShapeTransform {
+  Mat4 open, close;
+  bool moving = false;
+};
+
+// Appends the mesh transformed by m (its vertices at shutter close by m.close when it moves). `flip`
+// swaps the winding (analytic shapes under a mirroring transform, flip_normals). Zero-area emitting
+// triangles are dropped: they cannot be sampled.
+void add_mesh(const LocalMesh& mesh, const ShapeTransform& st, bool flip, uint32_t material, const Rgb& le, const FileLoc& loc,
+              Scene* s) {
+  const Mat4& m = st.open;
   const uint32_t base = uint32_t(s->positions.size());
   if (!mesh.uvs.empty()) {
     s->uvs.resize(base);  // vertices added before without uvs get (0, 0) here
@@ -38,6 +48,14 @@ void add_mesh(const LocalMesh& mesh, const Mat4& m, bool flip, uint32_t material
     const Vec3 q = m.point(p);
     if (!all_finite(q)) throw Error(loc, "shape vertex is NaN or infinite after to_world");
     s->positions.push_back(q);
+  }
+  if (st.moving) {  // the vertices at shutter close; the static ones before them stand still
+    for (size_t i = s->positions_end.size(); i < base; ++i) s->positions_end.push_back(s->positions[i]);
+    for (const Vec3& p : mesh.positions) {
+      const Vec3 q = st.close.point(p);
+      if (!all_finite(q)) throw Error(loc, "shape vertex is NaN or infinite after to_world at shutter close");
+      s->positions_end.push_back(q);
+    }
   }
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     uint32_t v[3] = {base + mesh.indices[t], base + mesh.indices[t + 1], base + mesh.indices[t + 2]};
@@ -163,36 +181,63 @@ LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w)
   return m;
 }
 
+// to_world at the shutter's ends, with warnings where two time steps cannot follow the animation.
+ShapeTransform shape_transform(const Object& o, const Shutter& shutter, LoadWarnings* w) {
+  const Object::TransformKeys keys = o.get_transform_keys("to_world");
+  ShapeTransform st;
+  st.open = keys.at(shutter.open, o.loc());
+  st.close = keys.at(shutter.close, o.loc());
+  for (int i = 0; i < 4 && !st.moving; ++i)
+    for (int j = 0; j < 4; ++j) st.moving = st.moving || st.open.m[i][j] != st.close.m[i][j];
+  if (!st.moving) return st;
+  for (const double t : keys.times)
+    if (t > shutter.open && t < shutter.close) {
+      w->add(o.loc(), o.title() + ": an animation key lies inside the shutter interval; vertices move on straight lines from "
+                      "shutter open to close, past it");
+      break;
+    }
+  const double degrees = pbrt::rotation_between_degrees(st.open, st.close);
+  if (degrees > 10.0)
+    w->add(o.loc(), o.title() + ": the shape turns " + std::to_string(int(std::lround(degrees))) +
+                        " degrees while the shutter is open; its vertices move on straight lines, not on arcs");
+  return st;
+}
+
 }  // namespace
 
-void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::string& folder, LoadWarnings* w, Scene* scene) {
+void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::string& folder, const Shutter& shutter, LoadWarnings* w,
+               Scene* scene) {
   const std::string& t = o.type();
-  const Mat4 m = o.get_transform("to_world");
+  const ShapeTransform st = shape_transform(o, shutter, w);
+  const Mat4& m = st.open;
   const bool flip_normals = o.get_bool("flip_normals", false);
   // Analytic shapes transform their normal with the inverse transpose, so a mirroring to_world
   // turns the winding against it; meshes keep their world-space winding (Mitsuba's convention).
   const bool mirrored = m.det3() < 0.0;
   if (t == "rectangle" || t == "cube") {
-    add_mesh(t == "rectangle" ? rectangle() : cube(), m, mirrored != flip_normals, material, le, o.loc(), scene);
+    add_mesh(t == "rectangle" ? rectangle() : cube(), st, mirrored != flip_normals, material, le, o.loc(), scene);
   } else if (t == "disk") {
-    add_mesh(disk(), m, mirrored != flip_normals, material, le, o.loc(), scene);
+    add_mesh(disk(), st, mirrored != flip_normals, material, le, o.loc(), scene);
   } else if (t == "sphere") {
     const Vec3 center = o.get_vector("center", Vec3());
     const float radius = float(o.get_float("radius", 1.0));
     if (!(radius > 0.f) || !all_finite(center)) throw Error(o.loc(), "sphere radius must be > 0");
-    const Mat4 full = m * Mat4::translate(center.x, center.y, center.z) * Mat4::scale(radius, radius, radius);
+    const Mat4 local = Mat4::translate(center.x, center.y, center.z) * Mat4::scale(radius, radius, radius);
+    const Mat4 full = m * local;
     const Vec3 c0 = full.vector(Vec3(1, 0, 0)), c1 = full.vector(Vec3(0, 1, 0)), c2 = full.vector(Vec3(0, 0, 1));
     const float s = length(c0);
     const bool similarity = std::fabs(length(c1) - s) <= 1e-4f * s && std::fabs(length(c2) - s) <= 1e-4f * s &&
                             abs_dot(c0, c1) <= 1e-4f * s * s && abs_dot(c0, c2) <= 1e-4f * s * s && abs_dot(c1, c2) <= 1e-4f * s * s;
-    if (similarity && s > 0.f && std::isfinite(s)) {
+    if (similarity && s > 0.f && std::isfinite(s) && !st.moving) {
       scene->add_sphere(full.point(Vec3()), s, material, le, flip_normals);
     } else {
-      w->add(o.loc(), "sphere under a non-uniform scale or shear triangulated (" + std::to_string(2 * kSphereRings * kSphereRings * 2) + " triangles)");
-      add_mesh(uv_sphere(), full, mirrored != flip_normals, material, le, o.loc(), scene);
+      w->add(o.loc(), std::string(st.moving ? "moving sphere" : "sphere under a non-uniform scale or shear") + " triangulated (" +
+                          std::to_string(2 * kSphereRings * kSphereRings * 2) + " triangles)");
+      const ShapeTransform sphere{full, st.close * local, st.moving};
+      add_mesh(uv_sphere(), sphere, mirrored != flip_normals, material, le, o.loc(), scene);
     }
   } else if (t == "obj" || t == "ply") {
-    add_mesh(mesh_file(o, folder, w), m, flip_normals, material, le, o.loc(), scene);
+    add_mesh(mesh_file(o, folder, w), st, flip_normals, material, le, o.loc(), scene);
   } else {
     w->add(o.loc(), "shape type '" + t + "' not supported; skipped");
     o.ignore_all();

@@ -12,8 +12,16 @@
 
 namespace pathspace::mitsuba {
 
+// The sensor's shutter interval, in the animations' time.
+struct Shutter {
+  double open = 0.0, close = 0.0;
+};
+
 // Adds shape `o` with `material`; a non-black `radiance` makes it a one-sided area emitter (Mitsuba's
-// area lights emit on the normal's side). Mesh files resolve against `folder`.
-void add_shape(const Object& o, uint32_t material, const Rgb& radiance, const std::string& folder, LoadWarnings* w, Scene* scene);
+// area lights emit on the normal's side). Mesh files resolve against `folder`. A to_world animated
+// over the shutter (<animation>) gives the shape its vertices at shutter open and close (motion
+// blur, scene/motion.h); a moving sphere becomes a mesh.
+void add_shape(const Object& o, uint32_t material, const Rgb& radiance, const std::string& folder, const Shutter& shutter,
+               LoadWarnings* w, Scene* scene);
 
 }  // namespace pathspace::mitsuba

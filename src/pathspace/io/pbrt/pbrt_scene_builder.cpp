@@ -4,6 +4,9 @@
 // pathspace's winding normal, so one-sided area lights emit to the same side as in pbrt.
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +20,7 @@
 #include "pathspace/io/pbrt/pbrt_materials.h"
 #include "pathspace/io/spectrum/white_balance.h"
 #include "pathspace/io/pbrt/pbrt_missing_files.h"
+#include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/pbrt/pbrt_tessellated_shapes.h"
 #include "pathspace/io/pbrt/pbrt_parser.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
@@ -27,9 +31,13 @@ namespace pathspace::pbrt {
 namespace {
 
 constexpr int kInterfaceMaterial = -2;  // "interface": a medium boundary, not a visible surface
+// Above this rotation during the shutter, vertices moving on straight lines (two Embree time steps)
+// visibly cut pbrt-v4's arcs: a warning says so.
+constexpr double kMaxLinearRotationDegrees = 10.0;
 
 struct GraphicsState {
-  Mat4 ctm;
+  Mat4 ctm;      // at the start time of TransformTimes
+  Mat4 ctm_end;  // at its end time (ActiveTransform EndTime / All); equal to ctm when nothing moves
   bool reverse_orientation = false;
   int material = -1;  // index into the scene's materials; -1: the default material
   bool area_light = false;
@@ -96,8 +104,44 @@ class Builder {
   void mark_all(const Statement& st) {
     for (const Param& p : st.params) p.used = true;
   }
+  // pbrt-v4's ActiveTransform: transform directives change the start transform, the end one or both.
   void transform(const Mat4& t) {
-    if (!end_time_only_) gs_.ctm = gs_.ctm * t;
+    if (active_ != ActiveTransform::end) gs_.ctm = gs_.ctm * t;
+    if (active_ != ActiveTransform::start) gs_.ctm_end = gs_.ctm_end * t;
+  }
+  void set_transform(const Mat4& m) {
+    if (active_ != ActiveTransform::end) gs_.ctm = m;
+    if (active_ != ActiveTransform::start) gs_.ctm_end = m;
+  }
+  static bool same(const Mat4& a, const Mat4& b) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (a.m[i][j] != b.m[i][j]) return false;
+    return true;
+  }
+  // The shape transform at shutter open and close (pbrt-v4's animated transform at the camera's
+  // shutteropen and shutterclose, clamped to TransformTimes). True when the two differ: the shape
+  // moves while the shutter is open (motion blur, scene/motion.h).
+  bool shutter_transforms(const FileLoc& loc, Mat4* open, Mat4* close) {
+    if (same(gs_.ctm, gs_.ctm_end)) {
+      *open = *close = gs_.ctm;
+      return false;
+    }
+    const double t0 = transform_start_time_, t1 = transform_end_time_;
+    auto at = [&](double time, Mat4* out) {
+      const double s = t1 > t0 ? std::clamp((time - t0) / (t1 - t0), 0.0, 1.0) : (time >= t1 ? 1.0 : 0.0);
+      if (!interpolate_transform(gs_.ctm, gs_.ctm_end, s, out))
+        throw Error(loc, "the animated transform cannot be interpolated (a singular start or end transform)");
+    };
+    at(shutter_open_, open);
+    at(shutter_close_, close);
+    if (same(*open, *close)) return false;  // the motion lies outside the shutter interval
+    const double degrees = rotation_between_degrees(*open, *close);
+    if (degrees > kMaxLinearRotationDegrees)
+      warn(loc, fmt::format("the shape turns {:.0f} degrees while the shutter is open; its vertices move on straight lines "
+                            "between shutter open and close (Embree's linear motion), not on pbrt-v4's arcs",
+                            degrees));
+    return true;
   }
   // Relative file names resolve against the folder of the file that names them.
   std::string folder_of(const Statement& st) const {
@@ -110,19 +154,19 @@ class Builder {
     const auto& n = st.numbers;
     if (d == "WorldBegin") {
       in_world_ = true;
-      gs_.ctm = Mat4();
-      coord_systems_["world"] = Mat4();
+      gs_.ctm = gs_.ctm_end = Mat4();
+      coord_systems_["world"] = {Mat4(), Mat4()};
     } else if (d == "WorldEnd") {
     } else if (d == "AttributeBegin" || d == "TransformBegin") {
       stack_.push_back({gs_, d == "TransformBegin"});
     } else if (d == "AttributeEnd" || d == "TransformEnd") {
       if (stack_.empty() || stack_.back().second != (d == "TransformEnd"))
         throw Error(st.loc, d + " without a matching " + (d == "AttributeEnd" ? "AttributeBegin" : "TransformBegin"));
-      if (stack_.back().second) gs_.ctm = stack_.back().first.ctm;
+      if (stack_.back().second) gs_.ctm = stack_.back().first.ctm, gs_.ctm_end = stack_.back().first.ctm_end;
       else gs_ = stack_.back().first;
       stack_.pop_back();
     } else if (d == "Identity") {
-      if (!end_time_only_) gs_.ctm = Mat4();
+      set_transform(Mat4());
     } else if (d == "Translate") {
       transform(Mat4::translate(n[0], n[1], n[2]));
     } else if (d == "Scale") {
@@ -136,22 +180,26 @@ class Builder {
         throw Error(st.loc, "LookAt: the up vector is parallel to the view direction (or eye == target)");
       transform(m);
     } else if (d == "Transform") {
-      if (!end_time_only_) gs_.ctm = Mat4::from_columns(n.data());
+      set_transform(Mat4::from_columns(n.data()));
     } else if (d == "ConcatTransform") {
       transform(Mat4::from_columns(n.data()));
     } else if (d == "CoordinateSystem") {
-      coord_systems_[st.strings[0]] = gs_.ctm;
+      coord_systems_[st.strings[0]] = {gs_.ctm, gs_.ctm_end};
     } else if (d == "CoordSysTransform") {
       const auto it = coord_systems_.find(st.strings[0]);
       if (it == coord_systems_.end()) warn(st.loc, "unknown coordinate system '" + st.strings[0] + "'; ignored");
-      else gs_.ctm = it->second;
+      else gs_.ctm = it->second.first, gs_.ctm_end = it->second.second;
     } else if (d == "ReverseOrientation") {
       gs_.reverse_orientation = !gs_.reverse_orientation;
     } else if (d == "ActiveTransform") {
-      end_time_only_ = st.strings[0] == "EndTime";
-      if (st.strings[0] != "All") warn(st.loc, "motion blur is not supported: only the start-time transform is used");
+      active_ = st.strings[0] == "StartTime" ? ActiveTransform::start
+                : st.strings[0] == "EndTime"  ? ActiveTransform::end
+                                              : ActiveTransform::all;
     } else if (d == "TransformTimes") {
-      warn(st.loc, "TransformTimes ignored (no motion blur)");
+      if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && n[0] <= n[1]))
+        throw Error(st.loc, "TransformTimes needs two finite times, the start not after the end");
+      transform_start_time_ = n[0];
+      transform_end_time_ = n[1];
     } else if (d == "ColorSpace") {
       if (st.strings[0] != "srgb") warn(st.loc, "ColorSpace \"" + st.strings[0] + "\" ignored: pathspace renders in linear sRGB");
     } else if (d == "Option" || d == "Attribute" || d == "MakeNamedMedium" || d == "MediumInterface") {
@@ -296,19 +344,26 @@ class Builder {
     focal_distance_ = float(st.get_float("focaldistance", 1e6));
     if (!(lens_radius_ >= 0.f && std::isfinite(lens_radius_))) throw Error(st.loc, "lensradius must be finite and >= 0");
     if (!(focal_distance_ > 0.f && std::isfinite(focal_distance_))) throw Error(st.loc, "focaldistance must be finite and positive");
-    // pbrt-v4's exposure time (the film's imaging ratio; the shutter's motion blur is not supported).
+    // pbrt-v4's exposure time (the film's imaging ratio) and the interval moving shapes are blurred over.
     exposure_time_ = float(st.get_float("shutterclose", 1.0) - st.get_float("shutteropen", 0.0));
     if (!(exposure_time_ > 0.f && std::isfinite(exposure_time_)))
       throw Error(st.loc, "shutterclose - shutteropen must be positive and finite (the shutter never opens)");
+    shutter_open_ = st.get_float("shutteropen", 0.0);
+    shutter_close_ = st.get_float("shutterclose", 1.0);
     camera_from_world_ = gs_.ctm;
+    if (!same(gs_.ctm, gs_.ctm_end))
+      warn(st.loc, "camera motion is not supported: the camera keeps its transform at the start time (shapes do move)");
     has_camera_ = true;
     camera_loc_ = st.loc;
     Mat4 inv;
-    if (camera_from_world_.inverse(&inv)) coord_systems_["camera"] = inv;
+    if (camera_from_world_.inverse(&inv)) coord_systems_["camera"] = {inv, inv};
   }
 
   void light(const Statement& st) {
     const std::string& type = st.strings[0];
+    if (!same(gs_.ctm, gs_.ctm_end))
+      warn(st.loc, "LightSource \"" + type + "\" under an animated transform: only area lights (shapes) move; this one keeps "
+                   "its transform at the start time");
     const float scale = float(st.get_float("scale", 1.0));
     const float power = light_power_param(st);
     if (type == "point") {
@@ -466,6 +521,7 @@ class Builder {
       for (const Param& p : copy.params) p.used = false;
       gs_ = shape_gs;
       gs_.ctm = saved.ctm * shape_gs.ctm;
+      gs_.ctm_end = saved.ctm_end * shape_gs.ctm_end;
       shape(copy);
       if (first_use)
         for (const Param& p : copy.params)
@@ -588,11 +644,17 @@ class Builder {
                 const std::vector<std::array<float, 2>>& uvs, const std::vector<uint32_t>& idx, int triangles_per_shape = 1) {
     const uint32_t material = shape_material(st);
     const Rgb le_shape = emission(st, material);
-    Mat4 inv;
-    if (!gs_.ctm.inverse(&inv)) throw Error(st.loc, "shape transform is singular");
-    const bool flip_default = gs_.reverse_orientation != (gs_.ctm.det3() < 0.0);
+    Mat4 open, close;
+    const bool moving = shutter_transforms(st.loc, &open, &close);
+    Mat4 inv, inv_close;
+    if (!open.inverse(&inv) || !close.inverse(&inv_close)) throw Error(st.loc, "shape transform is singular");
+    const bool flip_default = gs_.reverse_orientation != (open.det3() < 0.0);
     const uint32_t base = uint32_t(scene_.positions.size());
-    for (const Vec3& p : pos) scene_.positions.push_back(gs_.ctm.point(p));
+    for (const Vec3& p : pos) scene_.positions.push_back(open.point(p));
+    if (moving) {  // the vertices at shutter close; the static ones before them stand still
+      for (size_t i = scene_.positions_end.size(); i < base; ++i) scene_.positions_end.push_back(scene_.positions[i]);
+      for (const Vec3& p : pos) scene_.positions_end.push_back(close.point(p));
+    }
     if (uvs.size() == pos.size()) {
       scene_.uvs.resize(base);
       for (const auto& t : uvs) scene_.uvs.push_back(Point2{t[0], t[1]});
@@ -641,11 +703,16 @@ class Builder {
       scene_.triangles.push_back(tri);
     }
     if (smooth && normals.size() == pos.size()) {  // flat meshes need no shading normals
-      scene_.normals.resize(base);
-      for (const Vec3& n : normals) {
-        const Vec3 w = Mat4::normal(inv, n);
+      auto world_normal = [&](const Mat4& inverse, const Vec3& n) {
+        const Vec3 w = Mat4::normal(inverse, n);
         const float len = length(w);
-        scene_.normals.push_back(len > 0.f && all_finite(w) ? w * ((gs_.reverse_orientation ? -1.f : 1.f) / len) : Vec3());
+        return len > 0.f && all_finite(w) ? w * ((gs_.reverse_orientation ? -1.f : 1.f) / len) : Vec3();
+      };
+      scene_.normals.resize(base);
+      for (const Vec3& n : normals) scene_.normals.push_back(world_normal(inv, n));
+      if (moving) {
+        for (size_t i = scene_.normals_end.size(); i < base; ++i) scene_.normals_end.push_back(scene_.normals[i]);
+        for (const Vec3& n : normals) scene_.normals_end.push_back(world_normal(inv_close, n));
       }
     }
   }
@@ -654,6 +721,15 @@ class Builder {
     const float radius = float(st.get_float("radius", 1.0));
     const double zmin = st.get_float("zmin", -radius), zmax = st.get_float("zmax", radius), phimax = st.get_float("phimax", 360.0);
     if (zmin > -radius || zmax < radius || phimax < 360.0) warn(st.loc, "partial sphere (zmin/zmax/phimax) rendered as a full sphere");
+    Mat4 open, close;
+    if (shutter_transforms(st.loc, &open, &close)) {
+      // Spheres do not move (scene/motion.h): a moving one becomes a triangle mesh that does.
+      if (!(radius > 0.f)) throw Error(st.loc, "sphere radius must be > 0");
+      const ObjectMesh m = sphere_mesh(radius);
+      warn(st.loc, fmt::format("a moving sphere is rendered as a mesh of {} triangles", m.indices.size() / 3));
+      add_mesh(st, m.positions, m.normals, m.uvs, m.indices, 0);
+      return;
+    }
     // Only similarity transforms keep a sphere a sphere.
     const Vec3 c0 = gs_.ctm.vector(Vec3(1, 0, 0)), c1 = gs_.ctm.vector(Vec3(0, 1, 0)), c2 = gs_.ctm.vector(Vec3(0, 0, 1));
     const float s = length(c0);
@@ -677,7 +753,7 @@ class Builder {
   std::vector<std::pair<GraphicsState, bool>> stack_;  // bool: pushed by TransformBegin
   std::map<std::string, int> named_materials_;
   std::map<std::tuple<uint32_t, float, int32_t>, uint32_t> cutout_materials_;  // shape_material's copies
-  std::map<std::string, Mat4> coord_systems_;
+  std::map<std::string, std::pair<Mat4, Mat4>> coord_systems_;  // start and end transforms
   TextureTable textures_;
   MissingFiles missing_;
   bool missing_images_ = false;
@@ -686,7 +762,10 @@ class Builder {
   std::string current_object_;
   std::map<std::string, std::vector<std::pair<Statement, GraphicsState>>> objects_;  // ObjectBegin .. ObjectEnd
   std::set<std::string> instanced_;
-  bool in_world_ = false, end_time_only_ = false;
+  bool in_world_ = false;
+  enum class ActiveTransform { all, start, end } active_ = ActiveTransform::all;
+  double transform_start_time_ = 0.0, transform_end_time_ = 1.0;  // TransformTimes
+  double shutter_open_ = 0.0, shutter_close_ = 1.0;                // the camera's shutter
   bool has_camera_ = false;
   Mat4 camera_from_world_;
   FileLoc camera_loc_;

@@ -28,5 +28,10 @@ ObjectMesh bilinear_mesh(const Statement& st, LoadWarnings* warnings);
 // `loopsubdiv` ("levels", default 3): Loop subdivision pushed to the limit surface, with smooth
 // normals (geometry/loop_subdivision.h).
 ObjectMesh loop_subdivision_mesh(const Statement& st);
+// A sphere of `radius` about the origin as kSphereSegments x kSphereSegments / 2 quads (triangles at
+// the poles), with its normals and pbrt-v4's uvs (u = phi / 2 pi, v = 0 at the -z pole): how a
+// moving sphere is rendered, since spheres do not move (scene/motion.h).
+inline constexpr int kSphereSegments = 64;
+ObjectMesh sphere_mesh(float radius);
 
 }  // namespace pathspace::pbrt

@@ -1,0 +1,34 @@
+// pbrt-v4's animated transforms (ActiveTransform StartTime / EndTime, TransformTimes): a transform
+// at a time between the start and the end one, as pbrt-v4's AnimatedTransform interpolates it
+// (Shoemake and Duff 1992): each matrix is split into a translation T, a rotation R (polar
+// decomposition) and the remaining stretch S, and the rotations are interpolated by quaternion
+// slerp, T and S linearly. Host only, double precision.
+#pragma once
+
+#include "pathspace/io/pbrt/pbrt_transform.h"
+
+namespace pathspace::pbrt {
+
+struct Quaternion {
+  double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
+};
+
+struct DecomposedTransform {
+  double t[3] = {0.0, 0.0, 0.0};
+  Quaternion r;
+  double s[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+};
+
+// M = T R S (false when the upper 3x3 is singular or the decomposition does not converge).
+bool decompose_transform(const Mat4& m, DecomposedTransform* out);
+Mat4 compose_transform(const DecomposedTransform& d);
+
+// The transform at fraction `s` in [0, 1] of the way from `start` to `end`; exactly `start` at 0 and
+// `end` at 1. False when either matrix cannot be decomposed.
+bool interpolate_transform(const Mat4& start, const Mat4& end, double s, Mat4* out);
+
+// The angle in degrees of the rotation that takes start's rotation part to end's (0 when either
+// cannot be decomposed).
+double rotation_between_degrees(const Mat4& start, const Mat4& end);
+
+}  // namespace pathspace::pbrt

@@ -1,0 +1,139 @@
+// Motion blur (scene/motion.h) in whole renders, against a closed form and between integrators
+// (per-pixel z-tests, support/statistics.h, alpha = 0.01 Sidak-corrected over kComparisons):
+//  - A white floor lit straight down by a directional light, under a black occluder that slides
+//    along x while the shutter is open, the camera above both. A point x of either plane is covered
+//    for the first clamp((x - a) / D, 0, 1) of the shutter (the occluder's near edge starts at a and
+//    moves by D; its far edge stays beyond the view). A pixel sees the floor point p through the
+//    occluder plane at q: at time t it is lit floor unless q (the camera ray) or p (the shadow ray or
+//    the light path) is covered then, so its value is rho E / pi (1 - max(c(q), c(p))). The max
+//    holds only when the camera ray and the light see the same instant: a renderer whose shadow rays
+//    or light paths took another time than its camera rays would get the product of the two
+//    uncovered fractions instead. PT, LT and BPT must match it everywhere; SPPM and PCLT (one time
+//    per pass: their photons and light paths meet the camera paths of that pass) blur the shadow's
+//    edge in each pass by their radius, and may miss it on a few pixels.
+//  - An emitter sliding over a floor: PT's next event estimation samples the light where it is at
+//    the path's time, BSDF sampling finds it there through Embree, LT and BPT emit from it there;
+//    the four images must agree.
+// That BPT's connections join vertices of one instant is checked ray by ray in
+// unit/motion_path_time_test.cpp: in the scenes tried here, the inner connections carried too
+// small a share of the image for an image test to notice a wrong time.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/integrators/bpt/bpt_settings.h"
+#include "pathspace/integrators/lt/lt_settings.h"
+#include "pathspace/integrators/pclt/pclt_settings.h"
+#include "pathspace/integrators/pt/pt_settings.h"
+#include "pathspace/integrators/sppm/sppm_settings.h"
+#include "support/integrator_comparison.h"
+#include "support/statistics.h"
+
+namespace pathspace {
+namespace {
+
+constexpr int kComparisons = 8;
+const double kAlphaImage = testing::sidak(0.01, kComparisons);
+
+constexpr float kAlbedo = 0.8f, kOccluderHeight = 0.75f, kCameraHeight = 1.5f;
+// The occluder spans x in [kNearEdge, kNearEdge + kWidth] at shutter open and moves by kTravel.
+constexpr float kNearEdge = -0.6f, kWidth = 1.3f, kTravel = 1.2f;
+
+// Appends quad corners moved by `offset` at shutter close (the positions before it stand still).
+void move_last_vertices(Scene& s, size_t count, const Vec3& offset) {
+  s.positions_end.assign(s.positions.begin(), s.positions.end());
+  for (size_t i = s.positions.size() - count; i < s.positions.size(); ++i) s.positions_end[i] = s.positions[i] + offset;
+}
+
+Scene sliding_occluder() {
+  Scene s;
+  const uint32_t floor = s.add_material(make_diffuse(Rgb(kAlbedo)));
+  const uint32_t black = s.add_material(make_diffuse(Rgb(0.f)));
+  s.add_quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), floor);
+  const float x0 = kNearEdge, x1 = kNearEdge + kWidth, h = kOccluderHeight;
+  s.add_quad(Vec3(x0, -1.2f, h), Vec3(x1, -1.2f, h), Vec3(x1, 1.2f, h), Vec3(x0, 1.2f, h), black);
+  move_last_vertices(s, 6, Vec3(kTravel, 0, 0));
+  s.add_directional_light(Vec3(0, 0, -1), Rgb(1.f));
+  s.camera = make_perspective_camera(Vec3(0.f, 0.f, kCameraHeight), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 16, 16);
+  s.finalize();
+  return s;
+}
+
+// The closed form of the file comment, averaged over each pixel's footprint (64 x 64 rays through
+// the floor alone).
+Image expected_sliding_occluder() {
+  Scene floor_only = sliding_occluder();
+  floor_only.triangles.resize(2);
+  floor_only.positions_end.clear();
+  floor_only.finalize();
+  const Vec3 eye(0.f, 0.f, kCameraHeight);
+  auto covered = [](float x) { return std::clamp((x - kNearEdge) / kTravel, 0.f, 1.f); };
+  return testing::footprint_average(floor_only, Accel(floor_only), 64, [&](const SurfaceHit* hit) {
+    if (!hit) return Rgb();
+    const Vec3 q = eye + (hit->p - eye) * ((kCameraHeight - kOccluderHeight) / kCameraHeight);
+    return Rgb(kAlbedo * kInvPi * (1.f - std::max(covered(q.x), covered(hit->p.x))));
+  });
+}
+
+TEST(MotionBlurRender, SlidingOccluderMatchesTheClosedForm) {
+  const Scene scene = sliding_occluder();
+  ASSERT_NE(scene.view().positions_end, nullptr);
+  const Accel accel(scene);
+  const Image expected = expected_sliding_occluder();
+  float lo = 1.f, hi = 0.f;
+  for (const Rgb& c : expected.pixels) lo = std::min(lo, c.r), hi = std::max(hi, c.r);
+  EXPECT_GT(hi - lo, 0.1f) << "the blur must span the view";
+  auto check = [&](const RenderConfig& config, uint32_t passes, const char* what, bool whole_image) {
+    testing::expect_matches_exact(testing::render_integrator(scene, accel, config, passes), expected, what, kAlphaImage,
+                                  whole_image);
+  };
+  check(testing::default_config("pt", testing::test_seed(601)), 256, "pt", true);
+  LtSettings lt;
+  lt.light_paths = 16384;
+  check(make_render_config("lt", lt, testing::test_seed(602)), 256, "lt", true);
+  check(testing::default_config("bpt", testing::test_seed(603)), 128, "bpt", true);
+  SppmSettings sppm;
+  sppm.photons = 16384;
+  check(make_render_config("sppm", sppm, testing::test_seed(604)), 256, "sppm", false);
+  PcltSettings pclt;
+  pclt.light_paths = 16384;
+  check(make_render_config("pclt", pclt, testing::test_seed(605)), 256, "pclt", false);
+}
+
+// A one-sided emitter (0.4 x 0.4, facing down) 0.5 above the floor, sliding from x = -0.5 to 0.5.
+Scene sliding_emitter() {
+  Scene s;
+  const uint32_t floor = s.add_material(make_diffuse(Rgb(kAlbedo)));
+  const uint32_t black = s.add_material(make_diffuse(Rgb(0.f)));
+  s.add_quad(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), floor);
+  const float h = 0.5f;
+  s.add_quad(Vec3(-0.7f, -0.2f, h), Vec3(-0.7f, 0.2f, h), Vec3(-0.3f, 0.2f, h), Vec3(-0.3f, -0.2f, h), black, Rgb(4.f));
+  move_last_vertices(s, 6, Vec3(1.f, 0, 0));
+  s.camera = make_perspective_camera(Vec3(0.f, 0.f, kCameraHeight), Vec3(0, 0, -1), Vec3(0, 1, 0), 50.f, 16, 16);
+  s.finalize();
+  return s;
+}
+
+TEST(MotionBlurRender, SlidingEmitterLightsTheFloorAlikeInEveryIntegrator) {
+  const Scene scene = sliding_emitter();
+  const Accel accel(scene);
+  const testing::Rendered pt = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(611)), 512);
+  PtSettings nee_only;
+  nee_only.bsdf_sampling = false;
+  const testing::Rendered pt_nee = testing::render_integrator(scene, accel, make_render_config("pt", nee_only, testing::test_seed(612)), 512);
+  PtSettings bsdf_only;
+  bsdf_only.nee = false;
+  const testing::Rendered pt_bsdf =
+      testing::render_integrator(scene, accel, make_render_config("pt", bsdf_only, testing::test_seed(613)), 2048);
+  LtSettings lt;
+  lt.light_paths = 16384;
+  const testing::Rendered lt_image = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(614)), 256);
+  const testing::Rendered bpt = testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(615)), 256);
+  testing::expect_same_image(pt_nee, pt_bsdf, "pt nee only vs bsdf only", kAlphaImage);
+  testing::expect_same_image(lt_image, pt, "lt vs pt", kAlphaImage);
+  testing::expect_same_image(bpt, pt, "bpt vs pt", kAlphaImage);
+}
+
+}  // namespace
+}  // namespace pathspace
