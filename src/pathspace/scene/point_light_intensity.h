@@ -20,12 +20,12 @@ namespace pathspace {
 PS_INLINE float projector_half_width_u(const Light& l) { return 0.5f / fabsf(l.uv_scale_u); }
 PS_INLINE float projector_half_width_v(const Light& l) { return 0.5f / fabsf(l.uv_scale_v); }
 
-// The image factor of a spot or projector towards unit w: 0 behind the light and, for a projector,
-// outside its frustum; the texture's value at the direction's uv (1 without a texture); divided by
-// cos^3 for an irradiance plane.
+// The image factor of a textured spot or a projector towards unit w: 0 behind the light and, for a
+// projector, outside its frustum; the texture's value at the direction's uv (1 without a texture);
+// divided by cos^3 for an irradiance plane. (An untextured spot has no image: point_light_intensity.)
 PS_INLINE Rgb point_light_image(const SceneView& scene, const Light& l, const Vec3& w) {
   const float z = dot(w, l.direction);
-  if (!(z > 0.f)) return l.type == LightType::spot && l.texture < 0 ? Rgb(1.f) : Rgb();
+  if (!(z > 0.f)) return Rgb();
   const Point2 uv{0.5f + l.uv_scale_u * dot(w, l.axis_u) / z, 0.5f + l.uv_scale_v * dot(w, l.axis_v) / z};
   if (l.type == LightType::projector && !(uv.x >= 0.f && uv.x <= 1.f && uv.y >= 0.f && uv.y <= 1.f)) return Rgb();
   Rgb image = l.texture >= 0 ? texture_lookup(scene.textures[l.texture], uv) : Rgb(1.f);

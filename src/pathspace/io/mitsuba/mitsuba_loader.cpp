@@ -269,19 +269,14 @@ class Builder {
   // Mitsuba maps directions through the inverse of to_world; with a non-uniform scale or a shear
   // that differs from this frame (warning).
   Frame emitter_frame(const Object& o, const Mat4& m) {
+    Frame frame;
+    if (!pbrt::axes_frame(m, &frame) || !all_finite(m.point(Vec3()))) throw Error(o.loc(), o.title() + ": to_world is singular");
     const Vec3 x = m.vector(Vec3(1, 0, 0)), y = m.vector(Vec3(0, 1, 0)), z = m.vector(Vec3(0, 0, 1));
-    if (!(length(x) > 0.f && length(y) > 0.f && length(z) > 0.f) || !all_finite(x) || !all_finite(y) || !all_finite(z) ||
-        !all_finite(m.point(Vec3())))
-      throw Error(o.loc(), o.title() + ": to_world is singular");
-    const Vec3 n = normalize(z);
-    const Vec3 s = normalize(x - n * dot(x, n));
-    const Vec3 t = normalize(y - n * dot(y, n) - s * dot(y, s));
-    if (!all_finite(s) || !all_finite(t)) throw Error(o.loc(), o.title() + ": to_world is singular");
     const float lx = length(x), ly = length(y), lz = length(z);
     if (std::fabs(dot(x, z)) > 1e-4f * lx * lz || std::fabs(dot(y, z)) > 1e-4f * ly * lz || std::fabs(dot(x, y)) > 1e-4f * lx * ly ||
         std::fabs(lx - ly) > 1e-4f * lx)
       w_->add(o.loc(), o.title() + ": to_world with a shear or non-uniform scale: its image is projected as if it were orthonormal");
-    return Frame(s, t, n);
+    return frame;
   }
 
   // Mitsuba's spot: at the to_world origin, along its +z; full intensity inside beam_width (default

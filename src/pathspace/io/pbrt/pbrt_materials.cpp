@@ -9,6 +9,7 @@
 
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/named_spectra.h"
+#include "pathspace/io/pbrt/pbrt_paths.h"
 #include "pathspace/io/spectrum/cie_tables.h"
 
 namespace pathspace::pbrt {
@@ -41,13 +42,9 @@ SampledSpectrum sampled_spectrum_param(const Param& p, const TextureTable& textu
     }
     return s;
   }
-  std::filesystem::path path(name);
+  const std::filesystem::path path =
+      resolve_scene_file(name, std::filesystem::path(p.loc.file).parent_path().string(), textures.main_folder);
   std::error_code ec;
-  if (path.is_relative()) {
-    const std::filesystem::path local = std::filesystem::path(p.loc.file).parent_path() / path;
-    path = std::filesystem::is_regular_file(local, ec) || textures.main_folder.empty() ? local
-                                                                                      : std::filesystem::path(textures.main_folder) / path;
-  }
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(p.loc, "unknown named spectrum or spectrum file '" + name + "' (looked for " + path.string() + ")");
   return read_spd_file(path.string());

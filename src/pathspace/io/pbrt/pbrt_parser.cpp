@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/io/pbrt/pbrt_paths.h"
 #include "pathspace/io/pbrt/pbrt_tokenizer.h"
 
 namespace pathspace::pbrt {
@@ -165,12 +166,7 @@ class Parser {
   void include(const Statement& st, const std::string& folder, int depth) {
     if (depth >= kMaxIncludeDepth) throw Error(st.loc, "Include nested too deeply (a cycle?)");
     namespace fs = std::filesystem;
-    fs::path path(st.strings[0]);
-    if (path.is_relative()) {
-      std::error_code ec;
-      const fs::path local = fs::path(folder) / path;
-      path = fs::exists(local, ec) || main_folder_.empty() ? local : fs::path(main_folder_) / path;
-    }
+    const fs::path path = resolve_scene_file(st.strings[0], folder, main_folder_);
     std::string text;
     try {
       text = read_file_bytes(path.string());

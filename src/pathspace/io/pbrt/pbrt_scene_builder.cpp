@@ -23,6 +23,7 @@
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/pbrt/pbrt_tessellated_shapes.h"
 #include "pathspace/io/pbrt/pbrt_parser.h"
+#include "pathspace/io/pbrt/pbrt_paths.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
 #include "pathspace/io/ply_reader.h"
 
@@ -453,10 +454,9 @@ class Builder {
     const uint32_t texture = scene_.add_texture(std::move(image));
     const double t = std::tan(fov * M_PI / 360.0);
     const double tu = aspect > 1.0 ? t * aspect : t, tv = aspect > 1.0 ? t : t / aspect;
-    const Vec3 z = gs_.ctm.vector(Vec3(0, 0, 1)), x = gs_.ctm.vector(Vec3(1, 0, 0)), y = gs_.ctm.vector(Vec3(0, 1, 0));
-    if (!(length(x) > 0.f && length(y) > 0.f && length(z) > 0.f)) throw Error(st.loc, "projection light: the transform is singular");
-    const Vec3 n = normalize(z), u = normalize(x - n * dot(x, n)), v = normalize(y - n * dot(y, n) - u * dot(y, u));
-    scene_.add_projector_light(gs_.ctm.point(Vec3()), Frame(u, v, n), Rgb(scale), int32_t(texture), float(0.5 / tu),
+    Frame frame;
+    if (!axes_frame(gs_.ctm, &frame)) throw Error(st.loc, "projection light: the transform is singular");
+    scene_.add_projector_light(gs_.ctm.point(Vec3()), frame, Rgb(scale), int32_t(texture), float(0.5 / tu),
                                float(-0.5 / tv), false);
     if (power > 0.f) {  // pbrt-v4: scale * power / (the image's luminance power at scale 1)
       Light& l = scene_.lights.back();
@@ -567,12 +567,8 @@ class Builder {
       add_mesh(st, pos, normals, uvs, tri);
     } else if (type == "plymesh") {
       const std::string file = st.get_string("filename", "");
-      std::filesystem::path path(file);
+      const std::filesystem::path path = resolve_scene_file(file, folder_of(st), main_folder_);
       std::error_code ec;
-      if (path.is_relative()) {
-        const std::filesystem::path local = std::filesystem::path(folder_of(st)) / path;
-        path = std::filesystem::exists(local, ec) ? local : std::filesystem::path(main_folder_) / path;
-      }
       if (!file.empty() && !std::filesystem::exists(path, ec)) {  // listed with the other missing files at the end
         missing_.add(st.find("filename")->loc, "PLY mesh", file);
         return;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "pathspace/math/frame.h"
 #include "pathspace/math/vec3.h"
 
 namespace pathspace::pbrt {
@@ -120,6 +121,20 @@ inline bool look_at(const Vec3& eye, const Vec3& target, const Vec3& up, Mat4* c
     world_from_camera.m[2][j] = cols[j].z;
   }
   return world_from_camera.inverse(camera_from_world);
+}
+
+// The orthonormal frame nearest to m's axes by Gram-Schmidt from its z axis (n = z; s from x; t from
+// y): how a light's image plane is placed under a transform that may scale or shear it. False when
+// an axis is zero or not finite, or x or y is parallel to z.
+inline bool axes_frame(const Mat4& m, Frame* out) {
+  const Vec3 x = m.vector(Vec3(1, 0, 0)), y = m.vector(Vec3(0, 1, 0)), z = m.vector(Vec3(0, 0, 1));
+  if (!(length(x) > 0.f && length(y) > 0.f && length(z) > 0.f) || !all_finite(x) || !all_finite(y) || !all_finite(z)) return false;
+  const Vec3 n = normalize(z);
+  const Vec3 s = normalize(x - n * dot(x, n));
+  const Vec3 t = normalize(y - n * dot(y, n) - s * dot(y, s));
+  if (!all_finite(s) || !all_finite(t)) return false;
+  *out = Frame(s, t, n);
+  return true;
 }
 
 }  // namespace pathspace::pbrt
