@@ -4,12 +4,14 @@
 // with a slide, a textured spot and a point light, with the ceiling light, selected by the light
 // tree). The GPU's image must agree with the CPU's by the per-pixel z-test (gpu_comparison.h;
 // alpha = 0.01, Sidak-corrected over this file's comparisons), plain and with the hashed filter, and
-// the wavefront must equal the megakernel bit for bit.
+// the wavefront must equal the megakernel bit for bit. A Cornell box whose light slides and whose
+// floor rises during the shutter checks motion blur the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "pathspace/scene/builtin_scenes.h"
 #include "gpu_comparison.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
@@ -18,7 +20,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 2;
+constexpr int kComparisons = 3;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 ImageTexture four_by_four(const char* name, bool monochrome) {
@@ -92,6 +94,28 @@ TEST(CudaFeatures, LayeredCutoutProjectorSceneMatchesCpu) {
 TEST(CudaFeatures, WavefrontEqualsMegakernelBitForBit) {
   PATHSPACE_REQUIRE_GPU();
   testing::expect_pipelines_agree(features_box(), FilterChoice{});
+}
+
+// Motion blur (scene/motion.h): the Cornell box's light box slides and its floor rises while the
+// shutter is open, so camera rays, shadow rays and light samples all depend on the path's time.
+Scene moving_cornell_box() {
+  Scene s = make_builtin_scene("cornell-box", 48, 48);
+  s.positions_end = s.positions;
+  for (int t = 0; t < 2; ++t)
+    for (uint32_t v : s.triangles[size_t(t)].v) s.positions_end[v].z += 0.3f;
+  for (size_t t = s.triangles.size() - kLightBoxTriangles; t < s.triangles.size(); ++t)
+    for (uint32_t v : s.triangles[t].v) s.positions_end[v] = s.positions[v] + Vec3(0.7f, 0.f, 0.f);
+  s.finalize();
+  return s;
+}
+
+TEST(CudaFeatures, MotionBlurMatchesCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  const Scene scene = moving_cornell_box();
+  ASSERT_NE(scene.view().positions_end, nullptr);
+  testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(13)), 256, "moving cornell-box pt cuda vs cpu",
+                                  kAlphaImage);
+  testing::expect_pipelines_agree(scene, FilterChoice{});
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // Motion blur's geometry (scene/motion.h): Embree intersects a moving triangle where it is at the
 // ray's time, hits are filled at that time, light sampling and bounds follow the motion, finalize
-// pads the end positions, still scenes read no time, and the BVH tracer refuses moving scenes.
+// pads the end positions, and still scenes read no time (the BVH tracer against Embree on moving
+// geometry: bvh_tracer_test.cpp).
 #include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/accel/bvh_build.h"
 #include "pathspace/base/error.h"
 #include "pathspace/scene/light_sampling.h"
 #include "pathspace/scene/motion.h"
@@ -92,11 +92,6 @@ TEST(MotionBlur, LightSamplesLieOnTheEmitterAtTheirTime) {
   ASSERT_TRUE(b.has_value());
   EXPECT_GE(b->box.hi.x, 3.f - 1e-6f);
   EXPECT_LE(b->box.lo.x, 0.f);
-}
-
-TEST(MotionBlur, TheBvhTracerRefusesMovingScenes) {
-  const Scene s = moving_square();
-  EXPECT_THROW(build_bvh(s.view()), Error);
 }
 
 }  // namespace

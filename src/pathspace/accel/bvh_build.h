@@ -30,8 +30,8 @@ struct FlatBvh {
 
 // Reads the scene's positions, triangles and spheres. The result keeps indices into them, not
 // geometry: a BvhTracer pairs it with a view of the same scene. Primitives with non-finite bounds are left out, as Embree leaves them out.
-// Throws pathspace::Error when Embree fails or the tree exceeds the traversal's limits, and for a
-// scene that moves (motion blur, scene/motion.h), which the BVH tracer does not handle yet.
+// Throws pathspace::Error when Embree fails or the tree exceeds the traversal's limits. A scene that
+// moves (motion blur, scene/motion.h) gets boxes around each triangle's whole motion.
 FlatBvh build_bvh(const SceneView& scene);
 
 }  // namespace pathspace

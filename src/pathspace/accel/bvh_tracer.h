@@ -8,7 +8,8 @@
 // from the plane equation, see intersect_triangle). Spheres:
 // geometry/shapes.h's intersect_sphere, as the Embree backend. Hits are filled by
 // accel/surface_hit_fill.h, like the Embree backend's, with Embree's interval (tmin, tmax).
-// Cutouts (scene/surface_opacity.h) are skipped in the triangle test.
+// Cutouts (scene/surface_opacity.h) are skipped in the triangle test. Moving triangles (motion blur,
+// scene/motion.h) are tested where they are at the ray's time, inside boxes that hold their motion.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/geometry/ray.h"
 #include "pathspace/math/scalar.h"
+#include "pathspace/scene/motion.h"
 #include "pathspace/scene/scene_view.h"
 #include "pathspace/scene/surface_opacity.h"
 
@@ -27,6 +29,7 @@ namespace bvh_detail {
 // Per-ray constants of the slab test and of the watertight triangle test.
 struct RayPrep {
   Vec3 o, d;
+  float time;      // the ray's (scene/motion.h)
   Vec3 inv_d;      // 1/d, exact zeros replaced by a tiny value of the same sign (no 0 * inf = NaN)
   int kx, ky, kz;  // Woop et al. sec. 3: kz the dominant axis of d, kx/ky the others, winding kept
   float sx, sy;
@@ -38,6 +41,7 @@ PS_INLINE RayPrep prepare(const Ray& ray) {
   RayPrep r;
   r.o = ray.o;
   r.d = ray.d;
+  r.time = ray.time;
   r.inv_d = Vec3(1.f / nonzero(ray.d.x), 1.f / nonzero(ray.d.y), 1.f / nonzero(ray.d.z));
   const float ax = fabsf(ray.d.x), ay = fabsf(ray.d.y), az = fabsf(ray.d.z);
   r.kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
@@ -102,15 +106,23 @@ PS_INLINE bool intersect_triangle(const RayPrep& r, const Vec3& p0, const Vec3& 
   return true;
 }
 
-// The primitive `ref` against the ray in (tmin, tmax).
+// The primitive `ref` against the ray in (tmin, tmax). Moving: the scene moves (motion blur), so a
+// triangle's vertices are those at the ray's time; a template parameter, so that still scenes keep
+// the loop they had (the test in the loop cost the GPU 5-7% per frame).
+template <bool Moving>
 PS_INLINE bool intersect_prim(const SceneView& scene, const RayPrep& r, uint32_t ref, float tmin, float tmax, float* t,
                               float* u, float* v) {
   const uint32_t index = bvh_ref_index(ref);
   if (bvh_ref_kind(ref) == ShapeKind::triangle) {
     const Triangle& tri = scene.triangles[index];
-    if (!intersect_triangle(r, scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]], tmin,
-                            tmax, t, u, v))
-      return false;
+    if constexpr (Moving) {
+      const TriangleVertices p = triangle_at(scene, tri, r.time);
+      if (!intersect_triangle(r, p.p0, p.p1, p.p2, tmin, tmax, t, u, v)) return false;
+    } else {
+      if (!intersect_triangle(r, scene.positions[tri.v[0]], scene.positions[tri.v[1]], scene.positions[tri.v[2]], tmin,
+                              tmax, t, u, v))
+        return false;
+    }
     // A cutout the ray passes through is no hit (scene/surface_opacity.h; Embree's filter does the same).
     return !(scene.has_cutouts &&
              ray_passes_cutout(scene.triangles, scene.materials, scene.uvs, scene.textures, index, *u, *v, r.o, r.d));
@@ -121,7 +133,7 @@ PS_INLINE bool intersect_prim(const SceneView& scene, const RayPrep& r, uint32_t
 
 // Aila-Laine's while-while traversal. AnyHit: stop at the first primitive in (tmin, tmax) (shadow
 // rays); else the nearest: *t, *ref, *u, *v of the closest hit.
-template <bool AnyHit>
+template <bool AnyHit, bool Moving>
 PS_HD bool traverse(const SceneView& scene, const BvhView& bvh, const Ray& ray, float* t_out, uint32_t* ref_out,
                     float* u_out, float* v_out) {
   if (bvh.num_nodes == 0) return false;
@@ -156,7 +168,7 @@ PS_HD bool traverse(const SceneView& scene, const BvhView& bvh, const Ray& ray, 
       const uint32_t first = bvh_leaf_first(next), end = first + bvh_leaf_count(next);
       for (uint32_t i = first; i < end; ++i) {
         float t, u, v;
-        if (!intersect_prim(scene, r, bvh.prims[i], tmin, tmax, &t, &u, &v)) continue;
+        if (!intersect_prim<Moving>(scene, r, bvh.prims[i], tmin, tmax, &t, &u, &v)) continue;
         found = true;
         tmax = t;  // later primitives must be nearer
         *t_out = t;
@@ -181,7 +193,9 @@ struct BvhTracer {
   PS_HD bool intersect(const Ray& ray, SurfaceHit* hit) const {
     float t = 0.f, u = 0.f, v = 0.f;
     uint32_t ref = 0;
-    if (!bvh_detail::traverse<false>(scene, bvh, ray, &t, &ref, &u, &v)) return false;
+    const bool found = scene.positions_end ? bvh_detail::traverse<false, true>(scene, bvh, ray, &t, &ref, &u, &v)
+                                           : bvh_detail::traverse<false, false>(scene, bvh, ray, &t, &ref, &u, &v);
+    if (!found) return false;
     fill_surface_hit(scene, bvh_ref_kind(ref), bvh_ref_index(ref), t, u, v, ray, hit);
     return true;
   }
@@ -190,7 +204,8 @@ struct BvhTracer {
   PS_HD bool occluded(const Ray& ray) const {
     float t = 0.f, u = 0.f, v = 0.f;
     uint32_t ref = 0;
-    return bvh_detail::traverse<true>(scene, bvh, ray, &t, &ref, &u, &v);
+    return scene.positions_end ? bvh_detail::traverse<true, true>(scene, bvh, ray, &t, &ref, &u, &v)
+                               : bvh_detail::traverse<true, false>(scene, bvh, ray, &t, &ref, &u, &v);
   }
 };
 

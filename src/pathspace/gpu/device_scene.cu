@@ -30,6 +30,8 @@ DeviceScene::DeviceScene(const Scene& scene) {
   view_.positions = upload(h.positions, vertices);
   view_.uvs = upload(h.uvs, h.uvs ? vertices : 0);
   view_.normals = upload(h.normals, h.normals ? vertices : 0);
+  view_.positions_end = upload(h.positions_end, h.positions_end ? vertices : 0);  // motion blur
+  view_.normals_end = upload(h.normals_end, h.normals_end ? vertices : 0);
   view_.triangles = upload(h.triangles, h.num_triangles);
   view_.spheres = upload(h.spheres, h.num_spheres);
   view_.materials = upload(h.materials, h.num_materials);
