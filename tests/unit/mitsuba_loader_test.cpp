@@ -282,7 +282,7 @@ TEST(MitsubaLoader, Materials) {
       "<bsdf type=\"twosided\" id=\"two\"><bsdf type=\"diffuse\"/></bsdf>\n"                                         // 3
       "<bsdf type=\"conductor\"/>\n"                                                                                 // 4
       "<bsdf type=\"conductor\"><string name=\"material\" value=\"Cu\"/></bsdf>\n"                                   // 5
-      "<bsdf type=\"roughconductor\"><float name=\"alpha\" value=\"0.2\"/></bsdf>\n"                                 // 6
+      "<bsdf type=\"roughconductor\"><float name=\"alpha\" value=\"0.2\"/><rgb name=\"specular_reflectance\" value=\"0.3\"/></bsdf>\n"  // 6
       "<bsdf type=\"dielectric\"><string name=\"int_ior\" value=\"water\"/><string name=\"ext_ior\" value=\"vacuum\"/>"
       "<rgb name=\"specular_transmittance\" value=\"0.9, 0.8, 0.7\"/></bsdf>\n"                                      // 7
       "<bsdf type=\"roughdielectric\"><string name=\"distribution\" value=\"ggx\"/><float name=\"alpha\" value=\"0.3\"/>"
@@ -310,6 +310,9 @@ TEST(MitsubaLoader, Materials) {
   EXPECT_LT(m[3].alpha, 1e-3f);
   EXPECT_FLOAT_EQ(m[4].alpha, 0.2f);
   EXPECT_EQ(m[4].distribution, MicrofacetDistribution::beckmann);  // Mitsuba's default distribution, no warning
+  EXPECT_EQ(m[4].tint, Rgb(0.3f));  // specular_reflectance scales the reflection (Bitterli's veach-mis plates)
+  EXPECT_EQ(m[2].tint, Rgb(1.f));
+  EXPECT_EQ(find_warning(w, "specular_reflectance"), "");
   EXPECT_EQ(find_warning(w, "distribution approximated"), "");
   EXPECT_EQ(m[5].type, MaterialType::standard);
   EXPECT_FLOAT_EQ(m[5].ior, 1.333f);

@@ -41,6 +41,9 @@ struct Material {
   float alpha = 0.1f;      // microfacet roughness (GGX: alpha = perceptual roughness^2)
   Rgb eta{1.f, 1.f, 1.f};  // conductor: real part of the complex IOR (per channel)
   Rgb k;                   // conductor: imaginary part
+  // rough_conductor: a factor on the whole reflection (Mitsuba's specular_reflectance, Tungsten's
+  // albedo; 1 = the Fresnel term alone, as pbrt-v4's conductor).
+  Rgb tint{1.f, 1.f, 1.f};
   // rough_dielectric uses `ior` (inside / outside) and `specular` as the tint.
 
   // coated_diffuse / coated_conductor: a coat of index `ior` and roughness `alpha` (< 1e-3: smooth)

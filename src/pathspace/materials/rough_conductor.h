@@ -20,7 +20,7 @@ PS_INLINE Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi, TransportM
   const Vec3 h = normalize(wo + wi);
   const float d = microfacet::d(h, alpha, m.distribution);
   const float g = microfacet::g2(wo, wi, alpha, m.distribution);
-  return fresnel_conductor(dot(wi, h), m.eta, m.k) * (d * g / (4.f * wo.z * wi.z));
+  return fresnel_conductor(dot(wi, h), m.eta, m.k) * (d * g / (4.f * wo.z * wi.z)) * m.tint;
 }
 
 // Visible-normal pdf times the reflection Jacobian 1 / (4 |wo.h|) (Walter 2007 eq. 14).

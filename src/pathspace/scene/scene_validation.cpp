@@ -71,6 +71,7 @@ void check_material(const Material& m, size_t i, const FileLoc* at, std::vector<
   check_scalar(m.alpha, 0.f, name + ": roughness", at);
   check_non_negative(m.eta, name + ": conductor eta", at);
   check_non_negative(m.k, name + ": conductor k", at);
+  check_non_negative(m.tint, name + ": conductor reflectance factor", at);
   if (m.type == MaterialType::rough_dielectric && !(m.ior > 0.f))
     fail(at, fmt::format("{}: a rough dielectric needs an index of refraction > 0, not {:g}", name, m.ior));
   if (m.type == MaterialType::coated_diffuse || m.type == MaterialType::coated_conductor) {
@@ -83,7 +84,9 @@ void check_material(const Material& m, size_t i, const FileLoc* at, std::vector<
     if (m.max_depth < 1 || m.n_samples < 1) fail(at, name + ": coat max_depth and n_samples must be at least 1");
   }
   if (!(m.opacity >= 0.f && m.opacity <= 1.f)) fail(at, fmt::format("{}: opacity is {:g}: it must lie in [0, 1]", name, m.opacity));
-  if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f) gains->push_back(name);
+  if (max_component(m.diffuse + m.glossy) > 1.f || max_component(m.specular) > 1.f ||
+      (m.type == MaterialType::rough_conductor && max_component(m.tint) > 1.f))
+    gains->push_back(name);
 }
 
 // Image texels (textures, the environment image): NaN or Inf is an error (it would spread through

@@ -57,11 +57,10 @@ Material conductor(const Object& o, const std::string& folder, LoadWarnings* w) 
   }
   eta = o.get_rgb("eta", eta, folder, w, SpectrumUse::unbounded);
   k = o.get_rgb("k", k, folder, w, SpectrumUse::unbounded);
-  if (o.has("specular_reflectance") && o.get_rgb("specular_reflectance", Rgb(1.f), folder, w) != Rgb(1.f))
-    w->add(o.loc(), o.title() + ": specular_reflectance tint is not supported; ignored");
   MicrofacetDistribution distribution = MicrofacetDistribution::ggx;
   Material m = make_rough_conductor(rough ? alpha_of(o, w, &distribution) : 0.f, eta, k);
   m.distribution = distribution;
+  m.tint = o.get_rgb("specular_reflectance", Rgb(1.f), folder, w);  // scales the reflection, as in Mitsuba
   return m;
 }
 
