@@ -352,6 +352,22 @@ TEST(MitsubaLoader, Materials) {
   expect_bsdf_error("<bsdf type=\"roughconductor\"><string name=\"distribution\" value=\"phong\"/></bsdf>", "m.xml:2:1:", "beckmann or ggx");
 }
 
+// Mitsuba's conductor eta and k are relative to ext_eta (Bitterli's exports write extEta 1).
+TEST(MitsubaLoader, ConductorExteriorIndexDividesEtaAndK) {
+  std::vector<std::string> w;
+  const std::vector<Material> m = bsdfs(
+      "<bsdf type=\"roughconductor\"><rgb name=\"eta\" value=\"0.2, 0.9, 1.1\"/><rgb name=\"k\" value=\"3.9, 2.4, 2.1\"/>"
+      "<float name=\"ext_eta\" value=\"2\"/></bsdf>\n"
+      "<bsdf type=\"roughconductor\"><rgb name=\"eta\" value=\"0.2, 0.9, 1.1\"/><rgb name=\"k\" value=\"3.9, 2.4, 2.1\"/>"
+      "<float name=\"ext_eta\" value=\"1\"/></bsdf>",
+      &w);
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_FLOAT_EQ(m[0].eta.g, 0.45f);
+  EXPECT_FLOAT_EQ(m[0].k.r, 1.95f);
+  EXPECT_EQ(m[1].eta, Rgb(0.2f, 0.9f, 1.1f));
+  EXPECT_EQ(find_warning(w, "ext_eta"), "");
+}
+
 TEST(MitsubaLoader, BitmapTexturesUseTheirMeanColour) {
   TempDir dir("mitsuba");
   Image img(2, 1);

@@ -57,6 +57,15 @@ Material conductor(const Object& o, const std::string& folder, LoadWarnings* w) 
   }
   eta = o.get_rgb("eta", eta, folder, w, SpectrumUse::unbounded);
   k = o.get_rgb("k", k, folder, w, SpectrumUse::unbounded);
+  // Mitsuba's eta and k are relative to the exterior: a given ext_eta (a number or a named index)
+  // divides them. Without one the exterior is vacuum (Mitsuba's default, air at 1.000277, would
+  // change them by 0.03%).
+  if (o.has("ext_eta")) {
+    const float ext = ior_param(o, "ext_eta", 1.f);
+    if (!(ext > 0.f) || !std::isfinite(ext)) throw Error(o.loc(), o.title() + ": ext_eta must be positive");
+    eta = eta * (1.f / ext);
+    k = k * (1.f / ext);
+  }
   MicrofacetDistribution distribution = MicrofacetDistribution::ggx;
   Material m = make_rough_conductor(rough ? alpha_of(o, w, &distribution) : 0.f, eta, k);
   m.distribution = distribution;
