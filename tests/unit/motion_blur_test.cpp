@@ -94,5 +94,20 @@ TEST(MotionBlur, LightSamplesLieOnTheEmitterAtTheirTime) {
   EXPECT_LE(b->box.lo.x, 0.f);
 }
 
+// The light tree's normal cone: a sliding emitter keeps its one normal, a turning one gets every
+// direction (the normals between its ends need not lie in a cone through theirs).
+TEST(MotionBlur, LightBoundsOfMovingEmitters) {
+  const Scene sliding = moving_square(true);
+  EXPECT_GT(sliding.light_bounds(0)->cos_theta_o, 0.9999f);
+  Scene turning = moving_square(true);
+  turning.positions_end = turning.positions;
+  for (int i = 0; i < 6; ++i) {  // the emitting quad turns 90 degrees about the x axis
+    const Vec3 p = turning.positions[size_t(i)];
+    turning.positions_end[size_t(i)] = Vec3(p.x, -p.z, p.y);
+  }
+  turning.finalize();
+  EXPECT_EQ(turning.light_bounds(0)->cos_theta_o, -1.f);
+}
+
 }  // namespace
 }  // namespace pathspace

@@ -230,20 +230,17 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
       if (!all_finite(b.w)) b.phi = 0.f;  // a degenerate triangle emits nothing
       b.cos_theta_o = 1.f;
       if (!positions_end.empty()) {
-        // Moving (motion blur): the box holds both ends of the motion, which is linear per vertex, and
-        // the normal cone both ends' normals (a blend of the two lies between them).
+        // Moving (motion blur): the box holds both ends of the motion, which is linear per vertex. A
+        // triangle that turns takes normals between the ends that no cone through the two ends'
+        // normals is sure to hold (the blend of its edges is not a rotation), so it gets every
+        // direction; one that keeps its normal (a translation, up to rounding) keeps its cone,
+        // widened to the end's normal.
         const Vec3 q0 = positions_end[t.v[0]], q1 = positions_end[t.v[1]], q2 = positions_end[t.v[2]];
         for (const Vec3& q : {q0, q1, q2}) b.box.expand(q);
         const Vec3 w_end = triangle_normal(q0, q1, q2);
         if (!all_finite(w_end)) b.phi = 0.f;
-        const Vec3 sum = b.w + w_end;
-        if (length_squared(sum) > 1e-12f) {
-          const Vec3 w = normalize(sum);
-          b.cos_theta_o = std::min(dot(w, b.w), dot(w, w_end));
-          b.w = w;
-        } else {
-          b.cos_theta_o = -1.f;  // opposite normals: every direction
-        }
+        const float c = dot(b.w, w_end);
+        b.cos_theta_o = c > 0.9999f ? std::min(1.f, c) : -1.f;
       }
       b.cos_theta_e = 0.f;
       b.two_sided = l.two_sided;
