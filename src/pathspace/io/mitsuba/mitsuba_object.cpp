@@ -236,7 +236,7 @@ Mat4 Object::TransformKeys::at(double time, const FileLoc& loc) const {
   size_t k = 1;
   while (times[k] < time) ++k;
   Mat4 out;
-  if (!pbrt::interpolate_transform(transforms[k - 1], transforms[k], (time - times[k - 1]) / (times[k] - times[k - 1]), &out))
+  if (!pbrt::animated_transform_at(transforms[k - 1], transforms[k], times[k - 1], times[k], time, &out))
     throw Error(loc, "the animated transform cannot be interpolated (a singular key)");
   return out;
 }

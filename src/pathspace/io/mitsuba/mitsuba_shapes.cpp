@@ -187,8 +187,7 @@ ShapeTransform shape_transform(const Object& o, const Shutter& shutter, LoadWarn
   ShapeTransform st;
   st.open = keys.at(shutter.open, o.loc());
   st.close = keys.at(shutter.close, o.loc());
-  for (int i = 0; i < 4 && !st.moving; ++i)
-    for (int j = 0; j < 4; ++j) st.moving = st.moving || st.open.m[i][j] != st.close.m[i][j];
+  st.moving = !(st.open == st.close);
   if (!st.moving) return st;
   for (const double t : keys.times)
     if (t > shutter.open && t < shutter.close) {
@@ -197,7 +196,7 @@ ShapeTransform shape_transform(const Object& o, const Shutter& shutter, LoadWarn
       break;
     }
   const double degrees = pbrt::rotation_between_degrees(st.open, st.close);
-  if (degrees > 10.0)
+  if (degrees > pbrt::kMaxLinearRotationDegrees)
     w->add(o.loc(), o.title() + ": the shape turns " + std::to_string(int(std::lround(degrees))) +
                         " degrees while the shutter is open; its vertices move on straight lines, not on arcs");
   return st;

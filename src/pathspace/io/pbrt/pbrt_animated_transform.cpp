@@ -162,6 +162,11 @@ bool interpolate_transform(const Mat4& start, const Mat4& end, double s, Mat4* o
   return true;
 }
 
+bool animated_transform_at(const Mat4& start, const Mat4& end, double t0, double t1, double time, Mat4* out) {
+  const double s = t1 > t0 ? std::clamp((time - t0) / (t1 - t0), 0.0, 1.0) : (time >= t1 ? 1.0 : 0.0);
+  return interpolate_transform(start, end, s, out);
+}
+
 double rotation_between_degrees(const Mat4& start, const Mat4& end) {
   DecomposedTransform a, b;
   if (!decompose_transform(start, &a) || !decompose_transform(end, &b)) return 0.0;

@@ -9,6 +9,11 @@
 
 namespace pathspace::pbrt {
 
+// Above this rotation between shutter open and close, vertices moving on straight lines (Embree's
+// two time steps, scene/motion.h) visibly cut the arcs that pbrt-v4 and Mitsuba follow: both loaders
+// warn.
+inline constexpr double kMaxLinearRotationDegrees = 10.0;
+
 struct Quaternion {
   double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
 };
@@ -26,6 +31,10 @@ Mat4 compose_transform(const DecomposedTransform& d);
 // The transform at fraction `s` in [0, 1] of the way from `start` to `end`; exactly `start` at 0 and
 // `end` at 1. False when either matrix cannot be decomposed.
 bool interpolate_transform(const Mat4& start, const Mat4& end, double s, Mat4* out);
+
+// The transform at `time` of one that is `start` at time t0 and `end` at time t1 (t0 <= t1), as
+// pbrt-v4's AnimatedTransform and Mitsuba's keys have it: `start` up to t0, `end` from t1 on.
+bool animated_transform_at(const Mat4& start, const Mat4& end, double t0, double t1, double time, Mat4* out);
 
 // The angle in degrees of the rotation that takes start's rotation part to end's (0 when either
 // cannot be decomposed).

@@ -32,9 +32,6 @@ namespace pathspace::pbrt {
 namespace {
 
 constexpr int kInterfaceMaterial = -2;  // "interface": a medium boundary, not a visible surface
-// Above this rotation during the shutter, vertices moving on straight lines (two Embree time steps)
-// visibly cut pbrt-v4's arcs: a warning says so.
-constexpr double kMaxLinearRotationDegrees = 10.0;
 
 struct GraphicsState {
   Mat4 ctm;      // at the start time of TransformTimes
@@ -114,29 +111,19 @@ class Builder {
     if (active_ != ActiveTransform::end) gs_.ctm = m;
     if (active_ != ActiveTransform::start) gs_.ctm_end = m;
   }
-  static bool same(const Mat4& a, const Mat4& b) {
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j)
-        if (a.m[i][j] != b.m[i][j]) return false;
-    return true;
-  }
   // The shape transform at shutter open and close (pbrt-v4's animated transform at the camera's
   // shutteropen and shutterclose, clamped to TransformTimes). True when the two differ: the shape
   // moves while the shutter is open (motion blur, scene/motion.h).
   bool shutter_transforms(const FileLoc& loc, Mat4* open, Mat4* close) {
-    if (same(gs_.ctm, gs_.ctm_end)) {
+    if (gs_.ctm == gs_.ctm_end) {
       *open = *close = gs_.ctm;
       return false;
     }
     const double t0 = transform_start_time_, t1 = transform_end_time_;
-    auto at = [&](double time, Mat4* out) {
-      const double s = t1 > t0 ? std::clamp((time - t0) / (t1 - t0), 0.0, 1.0) : (time >= t1 ? 1.0 : 0.0);
-      if (!interpolate_transform(gs_.ctm, gs_.ctm_end, s, out))
-        throw Error(loc, "the animated transform cannot be interpolated (a singular start or end transform)");
-    };
-    at(shutter_open_, open);
-    at(shutter_close_, close);
-    if (same(*open, *close)) return false;  // the motion lies outside the shutter interval
+    if (!animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_open_, open) ||
+        !animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_close_, close))
+      throw Error(loc, "the animated transform cannot be interpolated (a singular start or end transform)");
+    if (*open == *close) return false;  // the motion lies outside the shutter interval
     const double degrees = rotation_between_degrees(*open, *close);
     if (degrees > kMaxLinearRotationDegrees)
       warn(loc, fmt::format("the shape turns {:.0f} degrees while the shutter is open; its vertices move on straight lines "
@@ -352,7 +339,7 @@ class Builder {
     shutter_open_ = st.get_float("shutteropen", 0.0);
     shutter_close_ = st.get_float("shutterclose", 1.0);
     camera_from_world_ = gs_.ctm;
-    if (!same(gs_.ctm, gs_.ctm_end))
+    if (!(gs_.ctm == gs_.ctm_end))
       warn(st.loc, "camera motion is not supported: the camera keeps its transform at the start time (shapes do move)");
     has_camera_ = true;
     camera_loc_ = st.loc;
@@ -362,7 +349,7 @@ class Builder {
 
   void light(const Statement& st) {
     const std::string& type = st.strings[0];
-    if (!same(gs_.ctm, gs_.ctm_end))
+    if (!(gs_.ctm == gs_.ctm_end))
       warn(st.loc, "LightSource \"" + type + "\" under an animated transform: only area lights (shapes) move; this one keeps "
                    "its transform at the start time");
     const float scale = float(st.get_float("scale", 1.0));

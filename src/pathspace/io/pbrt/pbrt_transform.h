@@ -48,6 +48,13 @@ struct Mat4 {
     return r;
   }
 
+  bool operator==(const Mat4& b) const {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (m[i][j] != b.m[i][j]) return false;
+    return true;
+  }
+
   Mat4 operator*(const Mat4& b) const {
     Mat4 r;
     for (int i = 0; i < 4; ++i)
