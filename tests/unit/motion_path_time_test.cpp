@@ -96,7 +96,7 @@ TEST_F(MotionPathTime, LightTracingRaysShareTheLightPathsTime) {
 TEST_F(MotionPathTime, BidirectionalSubpathsShareTheCameraPathsTime) {
   BptSettings settings;
   BptBuffers buffers(v.camera.width, v.camera.height, settings, v.max_path_segments);
-  const BptFilms films = buffers.films();
+  const BptFilms films = buffers.worker_films();
   for (uint32_t pixel = 0; pixel < 64; ++pixel) {
     times.clear();
     const Sampler cs(7, pixel, 3), ls(7, pixel, (uint64_t(1) << 63) | 3);

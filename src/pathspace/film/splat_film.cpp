@@ -3,15 +3,28 @@
 
 #include <algorithm>
 
+#include "pathspace/parallel/parallel_for.h"
+#include "pathspace/parallel/worker_slot.h"
+
 namespace pathspace {
 
 SplatFilm::SplatFilm(int width, int height, double scale)
     : width_(width), height_(height), scale_(scale), sums_(3 * size_t(width) * size_t(height)),
-      status_(kSplatStatusCount) {}
+      status_(kSplatStatusCount) {
+  const size_t shard_bytes = std::max<size_t>(sums_.size() * sizeof(uint64_t), 1);
+  const size_t slots = std::min<size_t>(size_t(std::max(worker_slot_count(), 0)), kMaxShardBytes / shard_bytes);
+  shards_.resize(slots);
+  shard_used_.assign(slots, 0);
+}
 
 void SplatFilm::clear() {
   std::fill(sums_.begin(), sums_.end(), uint64_t(0));
   std::fill(status_.begin(), status_.end(), uint64_t(0));
+  for (size_t i = 0; i < shards_.size(); ++i)
+    if (shard_used_[i]) {  // a pass that ended without merge_workers (an exception)
+      std::fill(shards_[i]->begin(), shards_[i]->end(), uint64_t(0));
+      shard_used_[i] = 0;
+    }
 }
 
 SplatFilmView SplatFilm::view() {
@@ -22,6 +35,41 @@ SplatFilmView SplatFilm::view() {
   v.height = height_;
   v.scale = scale_;
   return v;
+}
+
+SplatFilmView SplatFilm::worker_view() {
+  SplatFilmView v = view();
+  const int slot = worker_slot();
+  if (slot < 0 || size_t(slot) >= shards_.size()) return v;
+  std::unique_ptr<std::vector<uint64_t>>& shard = shards_[size_t(slot)];
+  if (!shard) shard = std::make_unique<std::vector<uint64_t>>(sums_.size(), uint64_t(0));
+  shard_used_[size_t(slot)] = 1;
+  v.sums = shard->data();
+  v.exclusive = true;
+  return v;
+}
+
+void SplatFilm::merge_workers() {
+  std::vector<uint64_t*> used;
+  for (size_t i = 0; i < shards_.size(); ++i)
+    if (shard_used_[i]) {
+      used.push_back(shards_[i]->data());
+      shard_used_[i] = 0;
+    }
+  if (used.empty()) return;
+  std::atomic<uint64_t> wrapped{0};
+  parallel_for(sums_.size(), 1 << 14, [&](size_t begin, size_t end) {
+    uint64_t local_wrapped = 0;
+    for (uint64_t* shard : used)
+      for (size_t i = begin; i < end; ++i) {
+        const uint64_t sum = sums_[i] + shard[i];
+        local_wrapped += sum < sums_[i];
+        sums_[i] = sum;
+        shard[i] = 0;
+      }
+    wrapped += local_wrapped;
+  });
+  status_[kSplatOverflow] += wrapped;
 }
 
 Rgb SplatFilm::value(uint32_t pixel) const {

@@ -28,9 +28,9 @@ BptBuffers::BptBuffers(int width, int height, const BptSettings& settings, int m
   for (SplatFilm& f : strategies_) strategy_views_.push_back(f.view());
 }
 
-BptFilms BptBuffers::films() {
+BptFilms BptBuffers::worker_films() {
   BptFilms f;
-  f.splats = splats_.view();
+  f.splats = splats_.worker_view();
   f.strategies = strategy_views_.empty() ? nullptr : strategy_views_.data();
   f.strategy_max_length = strategy_max_length_;
   f.light_paths = uint32_t(camera_.size());

@@ -31,8 +31,9 @@ class BptBuffers {
   BptBuffers(int width, int height, const BptSettings& settings, int max_segments);
   SplatFilm& splats() { return splats_; }
   std::vector<Rgb>& camera() { return camera_; }
-  // The films view of the kernels (strategy images included when kept).
-  BptFilms films();
+  // The films view of the kernels (strategy images included when kept) for the calling worker:
+  // the t = 1 splats go to its shard (SplatFilm::worker_view).
+  BptFilms worker_films();
   int strategy_max_length() const { return strategy_max_length_; }
   // Sum over passes of strategy (s, t) for one pixel.
   Rgb strategy_sum(int s, int t, uint32_t pixel) const { return strategies_[size_t(bpt_strategy_index(s, t))].value(pixel); }
@@ -65,11 +66,11 @@ void bpt_render_pass(const SceneView& view, const Tracer& tracer, const BptSetti
   constexpr uint64_t kLightStream = uint64_t(1) << 63;
   const size_t n = film.pixel_count();
   buffers.splats().clear();
-  const BptFilms films = buffers.films();
   std::vector<Rgb>& camera = buffers.camera();
   std::atomic<uint64_t> rays{0}, shadow_rays{0}, dropped{0};
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
+    const BptFilms films = buffers.worker_films();
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler cs(seed, pixel, pass), ls(seed, pixel, kLightStream | pass);
       Rgb v = bpt_trace_pixel(view, tracer, cs, ls, settings, uint32_t(pixel), films, &local);
@@ -83,6 +84,7 @@ void bpt_render_pass(const SceneView& view, const Tracer& tracer, const BptSetti
     shadow_rays += local.shadow_rays;
     dropped += local.dropped;
   });
+  buffers.splats().merge_workers();
   const SplatFilm& splats = buffers.splats();
   parallel_for(n, 4096, [&](size_t begin, size_t end) {
     for (size_t pixel = begin; pixel < end; ++pixel) film.add_sample(uint32_t(pixel), camera[pixel] + splats.value(uint32_t(pixel)));

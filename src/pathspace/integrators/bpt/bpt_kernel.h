@@ -103,10 +103,12 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
+        const uint32_t pixel = raster_pixel(cam, pr.rx, pr.ry);
+        films.splats.prefetch(pixel);
         if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
           const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
-          splat(films, 1, raster_pixel(cam, pr.rx, pr.ry), le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
+          splat(films, 1, pixel, le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
         }
       }
     }
@@ -161,13 +163,15 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
+          const uint32_t pixel = raster_pixel(cam, pr.rx, pr.ry);
+          films.splats.prefetch(pixel);
           if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
             const float cos_cam = fabsf(dot(pr.wi, hit.ng));
             const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
             const float w_light = mis(h, pr.factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
             const float scale = fabsf(wo.z) * cos_cam / cos_in * pr.factor * inv_paths / (1.f + w_light);
-            splat(films, segments + 1, raster_pixel(cam, pr.rx, pr.ry), beta * f * scale);
+            splat(films, segments + 1, pixel, beta * f * scale);
           }
         }
       }

@@ -31,15 +31,16 @@ void lt_render_pass(const SceneView& view, const Tracer& tracer, const LtSetting
   const uint64_t n = lt_paths_per_pass(settings, film.pixel_count());
   const float inv_paths = float(1.0 / double(n));
   splats.clear();
-  const SplatFilmView sv = splats.view();
   std::atomic<uint64_t> rays{0}, shadow_rays{0};
   parallel_for(size_t(n), kPathGrain, [&](size_t begin, size_t end) {
     PathCounters local;
+    const SplatFilmView sv = splats.worker_view();
     for (size_t path = begin; path < end; ++path)
       lt_trace_path(view, tracer, Sampler(seed, path, pass), settings, inv_paths, sv, &local);
     rays += local.rays;
     shadow_rays += local.shadow_rays;
   });
+  splats.merge_workers();
   splats.resolve_into(film);
   counters.rays += rays;
   counters.shadow_rays += shadow_rays;

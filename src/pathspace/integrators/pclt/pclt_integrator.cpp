@@ -129,7 +129,6 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   const float r = radius(pass);
   last_radius_ = r;
   splats_.clear();
-  const SplatFilmView sv = splats_.view();
   std::atomic<uint64_t> rays{0}, shadow_rays{0};
 
   // (a) Eye pass. In a scene that moves, the pass's eye and light paths share one time (pass_time):
@@ -138,6 +137,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   auto t = std::chrono::steady_clock::now();
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
+    const SplatFilmView sv = splats_.worker_view();
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
       PcltEyeResult eye;
@@ -163,8 +163,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
 
   // (c) Light pass.
   t = std::chrono::steady_clock::now();
-  PcltLightView lv;
-  lv.film = sv;
+  PcltLightView lv;  // lv.film: each worker's own (below)
   lv.projection.filter = s_.filter;
   lv.projection.filter_radius = s_.filter_radius;
   lv.visibility = s_.visibility;
@@ -187,7 +186,9 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   parallel_for(size_t(light_paths_), kPathGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PcltLightCounters lc;
-    for (size_t i = begin; i < end; ++i) pclt_trace_light(view_, accel_, Sampler(light_seed, i, pass), s_, lv, &local, &lc);
+    PcltLightView worker_lv = lv;
+    worker_lv.film = splats_.worker_view();
+    for (size_t i = begin; i < end; ++i) pclt_trace_light(view_, accel_, Sampler(light_seed, i, pass), s_, worker_lv, &local, &lc);
     rays += local.rays;
     shadow_rays += local.shadow_rays;
     queries += lc.gather_queries;
@@ -199,6 +200,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
 
   // (d) Resolve: every pixel's iteration estimate is one film sample.
   t = std::chrono::steady_clock::now();
+  splats_.merge_workers();
   splats_.resolve_into(film);
   resolve_s_ += seconds_since(t);
 
