@@ -139,6 +139,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
   if (buffer->paths() != paths || buffer->records_per_path() != per_path) buffer->resize(paths, per_path);
   const uint64_t seed = stream == 0 ? seed_ : hash_combine(seed_ ^ kQueryStreamSalt, uint64_t(stream));
   SharedCounters shared;
+  const VertexBufferView out = buffer->view();  // once: VertexBuffer::store would build it per path
   parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
@@ -147,7 +148,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
       const Sampler sampler(seed, pixel, pass);
       pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local, &sample,
                     probes_, stream != 0, caustics_ ? &caustics_->view() : nullptr);
-      buffer->store(path, uint32_t(pixel), sample);
+      out.store(path, uint32_t(pixel), sample);
     }
     shared.add(local);
   });
@@ -161,6 +162,7 @@ void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffe
   const size_t paths = request.pixels.size();
   if (buffer->paths() != paths || buffer->records_per_path() != per_path) buffer->resize(paths, per_path);
   SharedCounters shared;
+  const VertexBufferView out = buffer->view();
   parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
@@ -169,7 +171,7 @@ void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffe
       const Sampler sampler(request.seed, pixel, request.pass);
       pt_trace_path(view_, accel_, sampler, sample_camera_ray(request.camera, sampler, pixel, camera_path_time(view_, sampler)), settings_, &local, &sample, probes_,
                     false, caustics_ ? &caustics_->view() : nullptr);
-      buffer->store(k, pixel, sample);
+      out.store(k, pixel, sample);
     }
     shared.add(local);
   });
