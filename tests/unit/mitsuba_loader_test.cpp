@@ -5,6 +5,7 @@
 // in mitsuba_cornell_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -442,8 +443,26 @@ TEST(MitsubaLoader, AnalyticShapes) {
   EXPECT_FLOAT_EQ(s.spheres[0].radius, 1.f);
   EXPECT_TRUE(s.spheres[1].inward_normals);
   EXPECT_NE(find_warning(r.warnings, "scene.xml:5:1: warning: sphere under a non-uniform scale or shear triangulated"), "");
+  // The ellipsoid (x scaled by 2): 64 x 32 rows of the tessellated sphere, 3968 triangles, with
+  // Mitsuba's uvs (v = 1 at the +z pole after the flip to pathspace's convention) and smooth shading
+  // normals, those of the ellipsoid x^2 / 4 + y^2 + z^2 = 1.
+  const size_t ellipsoid_triangles = 64 * 62;
+  ASSERT_EQ(s.normals.size(), s.positions.size());
+  ASSERT_EQ(s.uvs.size(), s.positions.size());
+  for (size_t i = 12; i < 12 + ellipsoid_triangles; ++i)
+    for (uint32_t v : s.triangles[i].v) {
+      const Vec3 p = s.positions[v];
+      EXPECT_NEAR(p.x * p.x / 4.f + p.y * p.y + p.z * p.z, 1.f, 1e-5f);
+      const Vec3 expected = normalize(Vec3(p.x / 4.f, p.y, p.z));
+      EXPECT_GT(dot(s.normals[v], expected), 0.99999f) << v;
+      const Point2 uv = s.uvs[v];
+      EXPECT_TRUE(uv.x >= 0.f && uv.x <= 1.f) << v;
+      EXPECT_NEAR(uv.y, std::acos(std::clamp(-p.z, -1.f, 1.f)) / float(M_PI), 1e-4f) << v;  // 0 at -z, 1 at +z
+    }
+  for (size_t i = 0; i < 12; ++i)
+    for (uint32_t v : s.triangles[i].v) EXPECT_EQ(s.normals[v], Vec3()) << "the cube stays flat";
   // The disk: 64 triangles facing +z whose area is the disk's (emitted power unchanged).
-  const size_t disk0 = 12 + 4096;
+  const size_t disk0 = 12 + ellipsoid_triangles;
   double area = 0;
   for (size_t i = disk0; i < disk0 + 64; ++i) {
     const Triangle& t = s.triangles[i];

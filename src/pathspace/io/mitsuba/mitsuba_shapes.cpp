@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "pathspace/geometry/sphere_tessellation.h"
 #include "pathspace/io/obj_loader.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/ply_reader.h"
@@ -17,12 +18,13 @@ namespace pathspace::mitsuba {
 namespace {
 
 constexpr int kDiskSegments = 64;
-constexpr int kSphereRings = 32;  // ellipsoids only; spheres stay analytic
+constexpr int kSphereSegments = 64;  // ellipsoids and moving spheres only; other spheres stay analytic
 
 struct LocalMesh {
   std::vector<Vec3> positions;
   std::vector<uint32_t> indices;
   std::vector<Point2> uvs;  // empty or one per position, pathspace convention (v up)
+  std::vector<Vec3> normals;  // empty (flat shading) or one outward shading normal per position (add_normals)
 };
 
 Point2 from_mitsuba_uv(float u, float v) { return {u, 1.f - v}; }
@@ -36,6 +38,28 @@ struct ShapeTransform {
 // Appends the mesh transformed by m (its vertices at shutter close by m.close when it moves). `flip`
 // swaps the winding (analytic shapes under a mirroring transform, flip_normals). Zero-area emitting
 // triangles are dropped: they cannot be sampled.
+// Shading normals for the vertices the next add_mesh adds: the inverse transpose of to_world (which
+// keeps them outward under a mirroring transform too), at shutter close as well when the shape moves;
+// inward with flip_normals.
+void add_normals(const std::vector<Vec3>& normals, const ShapeTransform& st, bool inward, Scene* s) {
+  Mat4 inv_open, inv_close;
+  if (!st.open.inverse(&inv_open) || !st.close.inverse(&inv_close)) return;  // a flattened shape: flat shading
+  auto world = [&](const Mat4& inv, std::vector<Vec3>* out) {
+    for (const Vec3& n : normals) {
+      const Vec3 w = Mat4::normal(inv, n);
+      const float len = length(w);
+      out->push_back(len > 0.f && all_finite(w) ? w * ((inward ? -1.f : 1.f) / len) : Vec3());
+    }
+  };
+  const size_t base = s->positions.size();
+  s->normals.resize(base);  // vertices added before without normals: flat (finalize's padding)
+  world(inv_open, &s->normals);
+  if (st.moving) {
+    for (size_t i = s->normals_end.size(); i < base; ++i) s->normals_end.push_back(s->normals[i]);
+    world(inv_close, &s->normals_end);
+  }
+}
+
 void add_mesh(const LocalMesh& mesh, const ShapeTransform& st, bool flip, uint32_t material, const Rgb& le, const FileLoc& loc,
               Scene* s) {
   const Mat4& m = st.open;
@@ -128,19 +152,15 @@ LocalMesh disk() {
   return m;
 }
 
+// Mitsuba's sphere uv is (phi / 2 pi, theta / pi) with theta from +z: the tessellation's v turned
+// over, which from_mitsuba_uv turns back.
 LocalMesh uv_sphere() {
+  TessellatedSphere t = tessellate_unit_sphere(kSphereSegments);
   LocalMesh m;
-  const int rings = kSphereRings, segs = 2 * kSphereRings;
-  for (int i = 0; i <= rings; ++i)
-    for (int j = 0; j < segs; ++j) {
-      const double th = M_PI * i / rings, ph = 2.0 * M_PI * j / segs;
-      m.positions.push_back(Vec3(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)), float(std::cos(th))));
-    }
-  for (int i = 0; i < rings; ++i)
-    for (int j = 0; j < segs; ++j) {
-      const uint32_t a = uint32_t(i * segs + j), b = uint32_t(i * segs + (j + 1) % segs), c = a + uint32_t(segs), d = b + uint32_t(segs);
-      m.indices.insert(m.indices.end(), {a, c, d, a, d, b});  // outward: theta grows towards -z
-    }
+  for (const Point2& p : t.params) m.uvs.push_back(from_mitsuba_uv(p.x, 1.f - p.y));
+  m.normals = t.points;
+  m.positions = std::move(t.points);
+  m.indices = std::move(t.indices);
   return m;
 }
 
@@ -230,10 +250,12 @@ void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::str
     if (similarity && s > 0.f && std::isfinite(s) && !st.moving) {
       scene->add_sphere(full.point(Vec3()), s, material, le, flip_normals);
     } else {
+      const LocalMesh mesh = uv_sphere();
       w->add(o.loc(), std::string(st.moving ? "moving sphere" : "sphere under a non-uniform scale or shear") + " triangulated (" +
-                          std::to_string(2 * kSphereRings * kSphereRings * 2) + " triangles)");
+                          std::to_string(mesh.indices.size() / 3) + " triangles)");
       const ShapeTransform sphere{full, st.close * local, st.moving};
-      add_mesh(uv_sphere(), sphere, mirrored != flip_normals, material, le, o.loc(), scene);
+      add_normals(mesh.normals, sphere, flip_normals, scene);
+      add_mesh(mesh, sphere, mirrored != flip_normals, material, le, o.loc(), scene);
     }
   } else if (t == "obj" || t == "ply") {
     add_mesh(mesh_file(o, folder, w), st, flip_normals, material, le, o.loc(), scene);

@@ -6,6 +6,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/geometry/loop_subdivision.h"
+#include "pathspace/geometry/sphere_tessellation.h"
 
 namespace pathspace::pbrt {
 
@@ -107,27 +108,15 @@ ObjectMesh loop_subdivision_mesh(const Statement& st) {
 }
 
 ObjectMesh sphere_mesh(float radius) {
+  // pbrt-v4's sphere uv: u = phi / 2 pi, v = 0 at the -z pole: the tessellation's parameters as they are.
+  TessellatedSphere t = tessellate_unit_sphere(kSphereSegments);
   ObjectMesh m;
-  const int around = kSphereSegments, rings = kSphereSegments / 2;
-  // Vertex rows from the -z pole (v = 0) to the +z pole (v = 1); each row repeats its first vertex at
-  // u = 1, so the uvs do not wrap inside a triangle.
-  for (int j = 0; j <= rings; ++j) {
-    const double v = double(j) / rings, theta = M_PI * (1.0 - v);  // theta from +z
-    for (int i = 0; i <= around; ++i) {
-      const double u = double(i) / around, phi = 2.0 * M_PI * u;
-      const Vec3 n(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
-      m.positions.push_back(n * radius);
-      m.normals.push_back(n);
-      m.uvs.push_back({float(u), float(v)});
-    }
+  for (size_t i = 0; i < t.points.size(); ++i) {
+    m.positions.push_back(t.points[i] * radius);
+    m.uvs.push_back({t.params[i].x, t.params[i].y});
   }
-  const auto at = [&](int i, int j) { return uint32_t(j * (around + 1) + i); };
-  for (int j = 0; j < rings; ++j)
-    for (int i = 0; i < around; ++i) {
-      // Counter-clockwise seen from outside (u grows eastwards, v northwards).
-      if (j > 0) m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      if (j + 1 < rings) m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
+  m.normals = std::move(t.points);
+  m.indices = std::move(t.indices);
   return m;
 }
 
