@@ -1,5 +1,7 @@
 #include "scene_summary.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -78,7 +80,7 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
                                                              : nlohmann::json{scene.environment_image.width, scene.environment_image.height};
     j["lights"] = lights;
     j["materials"] = materials;
-    j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}};
+    j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}, {"moves", scene.camera_moves}};
     j["file_spp"] = settings.spp;
     j["max_path_segments"] = scene.max_path_segments;
     j["warnings"] = warnings;
@@ -88,6 +90,10 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   fmt::print("{} {}\n", builtin ? "built-in scene" : "scene", path);
   fmt::print("  geometry     {} triangles ({} vertices), {} spheres\n", scene.triangles.size(), scene.positions.size(), scene.spheres.size());
   if (moving_vertices > 0) fmt::print("  motion blur  {} vertices move while the shutter is open\n", moving_vertices);
+  if (scene.camera_moves)
+    fmt::print("  motion blur  the camera moves {:.4g} and turns {:.1f} degrees while the shutter is open\n",
+               length(scene.camera_end.position - c.position),
+               std::acos(std::clamp(dot(c.forward, scene.camera_end.forward), -1.f, 1.f)) * 180.0 / M_PI);
   fmt::print("  textures     {} ({} texels){}\n", scene.textures.size(), texels,
              scene.environment_image.empty()
                  ? std::string()

@@ -20,7 +20,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 3;
+constexpr int kComparisons = 4;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 ImageTexture four_by_four(const char* name, bool monochrome) {
@@ -114,6 +114,22 @@ TEST(CudaFeatures, MotionBlurMatchesCpu) {
   const Scene scene = moving_cornell_box();
   ASSERT_NE(scene.view().positions_end, nullptr);
   testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(13)), 256, "moving cornell-box pt cuda vs cpu",
+                                  kAlphaImage);
+  testing::expect_pipelines_agree(scene, FilterChoice{});
+}
+
+// Camera motion blur (scene/motion.h, camera_at): the camera slides and turns a little while the
+// shutter is open; the device builds each camera ray from the camera at the path's time.
+TEST(CudaFeatures, CameraMotionBlurMatchesCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  Scene scene = make_builtin_scene("cornell-box", 48, 48);
+  PerspectiveCamera end = make_perspective_camera(scene.camera.position + scene.camera.right * 0.4f,
+                                                  scene.camera.forward + scene.camera.right * 0.1f, scene.camera.up, 40.f, 48, 48);
+  scene.camera_moves = true;
+  scene.camera_end = end.pose();
+  scene.finalize();
+  ASSERT_TRUE(scene.view().camera_moves);
+  testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(14)), 256, "moving camera pt cuda vs cpu",
                                   kAlphaImage);
   testing::expect_pipelines_agree(scene, FilterChoice{});
 }

@@ -2,7 +2,8 @@
 // <animation name="to_world"> with <transform time=...> keys, over the sensor's shutter_open and
 // shutter_close, gives the shape its vertices at shutter open and close (motion blur,
 // scene/motion.h); keys in between are interpolated; a moving sphere becomes a mesh; a still shutter
-// (Mitsuba 3's default 0, 0) leaves the scene still; animated sensors and emitters keep their first key.
+// (Mitsuba 3's default 0, 0) leaves the scene still; an animated sensor moves the camera; animated
+// emitters keep their first key.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -85,7 +86,31 @@ TEST(MitsubaMotion, AnimatedEmittersKeepTheirFirstKeyWithAWarning) {
                         kShutter);
   ASSERT_EQ(l.scene.lights.size(), 1u);
   EXPECT_EQ(l.scene.lights[0].position.x, 0.f);
-  EXPECT_TRUE(any_warning(l, "moves shapes only"));
+  EXPECT_TRUE(any_warning(l, "keeps its first key"));
+}
+
+TEST(MitsubaMotion, AnAnimatedSensorMovesTheCamera) {
+  auto scene = [](const std::string& shutter, std::vector<std::string>* warnings) {
+    LoadWarnings w(warnings);
+    return mitsuba::load_mitsuba_string(
+        "<scene version=\"3.0.0\">\n<sensor type=\"perspective\">" + shutter +
+            "<animation name=\"to_world\"><transform time=\"0\"><lookat origin=\"0,0,5\" target=\"0,0,0\"/></transform>"
+            "<transform time=\"2\"><lookat origin=\"2,0,5\" target=\"2,0,0\"/></transform></animation></sensor>\n"
+            "<shape type=\"rectangle\"/>\n</scene>\n",
+        "scene.xml", ".", {}, &w, nullptr);
+  };
+  std::vector<std::string> warnings;
+  const Scene s = scene(kShutter, &warnings);  // shutter [0, 1]: half of the key interval
+  ASSERT_TRUE(s.camera_moves);
+  EXPECT_NEAR(distance(s.camera.position, Vec3(0, 0, 5)), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(s.camera_end.position, Vec3(1, 0, 5)), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(s.camera_end.forward, s.camera.forward), 0.f, 1e-6f);
+  EXPECT_TRUE(s.positions_end.empty()) << "only the camera moves";
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  // Mitsuba's default shutter (0, 0): the first key, still.
+  const Scene still = scene("", &warnings);
+  EXPECT_FALSE(still.camera_moves);
+  EXPECT_NEAR(distance(still.camera.position, Vec3(0, 0, 5)), 0.f, 1e-5f);
 }
 
 TEST(MitsubaMotion, MalformedAnimationsAreErrors) {

@@ -4,6 +4,9 @@
 // geometry: bvh_tracer_test.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
 #include "pathspace/scene/light_sampling.h"
@@ -107,6 +110,43 @@ TEST(MotionBlur, LightBoundsOfMovingEmitters) {
   }
   turning.finalize();
   EXPECT_EQ(turning.light_bounds(0)->cos_theta_o, -1.f);
+}
+
+TEST(MotionBlur, TheCameraMovesFromItsOpenToItsClosePose) {
+  Scene s = moving_square();
+  s.positions_end.clear();
+  s.camera = make_perspective_camera(Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8);
+  s.finalize();
+  const PerspectiveCamera open = s.camera;
+  EXPECT_FALSE(scene_moves(s.view()));
+  // A still camera is returned as it is, bit for bit, at any time.
+  const PerspectiveCamera same = camera_at(s.view(), 0.7f);
+  EXPECT_EQ(same.position, open.position);
+  EXPECT_EQ(same.forward, open.forward);
+  EXPECT_EQ(same.up, open.up);
+  // Moved 2 along x and turned 20 degrees about y by shutter close.
+  s.camera_moves = true;
+  s.camera_end = make_perspective_camera(open.position + Vec3(2, 0, 0),
+                                         Vec3(std::sin(radians(20.f)), 0.f, -std::cos(radians(20.f))), Vec3(0, 1, 0), 40.f, 8, 8)
+                     .pose();
+  const SceneView v = s.view();
+  EXPECT_TRUE(scene_moves(v)) << "a moving camera alone makes paths sample a time";
+  const Sampler sampler(1, 2, 3);
+  EXPECT_EQ(sample_time(v, sampler, 7), sampler.at(7));
+  const PerspectiveCamera at0 = camera_at(v, 0.f), at1 = camera_at(v, 1.f), mid = camera_at(v, 0.5f);
+  EXPECT_NEAR(distance(at0.position, open.position), 0.f, 1e-6f);
+  EXPECT_NEAR(distance(at0.forward, open.forward), 0.f, 1e-6f);
+  EXPECT_NEAR(distance(at1.position, s.camera_end.position), 0.f, 1e-6f);
+  EXPECT_NEAR(distance(at1.forward, s.camera_end.forward), 0.f, 1e-6f);
+  EXPECT_NEAR(distance(at1.right, s.camera_end.right), 0.f, 1e-6f);
+  EXPECT_NEAR(distance(mid.position, open.position + Vec3(1, 0, 0)), 0.f, 1e-6f);
+  // Halfway the view direction is halfway round (10 degrees), the axes orthonormal, the image intrinsics kept.
+  EXPECT_NEAR(std::acos(std::clamp(dot(mid.forward, open.forward), -1.f, 1.f)), radians(10.f), 1e-4f);
+  for (const Vec3& a : {mid.forward, mid.right, mid.up}) EXPECT_NEAR(length(a), 1.f, 1e-6f);
+  EXPECT_NEAR(dot(mid.forward, mid.right), 0.f, 1e-6f);
+  EXPECT_NEAR(dot(mid.forward, mid.up), 0.f, 1e-6f);
+  EXPECT_EQ(mid.tan_x, open.tan_x);
+  EXPECT_EQ(mid.width, open.width);
 }
 
 }  // namespace

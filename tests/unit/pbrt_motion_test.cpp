@@ -2,7 +2,8 @@
 // StartTime / EndTime / All, TransformTimes and the camera's shutter give a shape its vertices at
 // shutter open (Scene::positions) and close (Scene::positions_end); transforms in between are
 // interpolated as pbrt-v4's AnimatedTransform does (translation and stretch linearly, rotation by
-// slerp); a moving sphere becomes a mesh; camera and non-area light motion are reported.
+// slerp); a moving sphere becomes a mesh; the camera moves with its animated CameraTransform; non-area
+// light motion is reported.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
+#include "pathspace/scene/motion.h"
 
 namespace pathspace {
 namespace {
@@ -124,9 +126,29 @@ TEST(PbrtMotion, AMovingSphereBecomesAMovingMesh) {
   EXPECT_TRUE(any_warning(l, "moving sphere"));
 }
 
-TEST(PbrtMotion, CameraAndPointLightMotionAreReported) {
+TEST(PbrtMotion, AnAnimatedCameraTransformMovesTheCamera) {
+  // pbrt-v4's CameraTransform: the CTM's end transform at shutter close. Camera space moved by +1 in
+  // x puts the camera at x = -1.
   const Loaded cam = load("ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\nCamera \"perspective\"", kTriangle);
-  EXPECT_TRUE(any_warning(cam, "camera motion"));
+  const Scene& s = cam.scene;
+  ASSERT_TRUE(s.camera_moves);
+  EXPECT_NEAR(distance(s.camera.position, Vec3(0, 0, 5)), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(s.camera_end.position, Vec3(-1, 0, 5)), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(s.camera_end.forward, s.camera.forward), 0.f, 1e-6f);
+  EXPECT_TRUE(s.positions_end.empty()) << "only the camera moves";
+  EXPECT_TRUE(scene_moves(s.view())) << "so paths sample a time";
+  EXPECT_FALSE(any_warning(cam, "camera")) << cam.warnings.size();
+  // Half the motion inside a shutter of [0, 0.5] of TransformTimes [0, 1].
+  const Loaded half = load("ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
+                           "Camera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5", kTriangle);
+  EXPECT_NEAR(distance(half.scene.camera_end.position, Vec3(-0.5f, 0, 5)), 0.f, 1e-5f);
+  // A turn beyond what a linear blend follows is reported.
+  const Loaded turn = load("ActiveTransform EndTime\nRotate 40 0 1 0\nActiveTransform All\nCamera \"perspective\"", kTriangle);
+  EXPECT_TRUE(turn.scene.camera_moves);
+  EXPECT_TRUE(any_warning(turn, "the camera turns 40 degrees"));
+}
+
+TEST(PbrtMotion, PointLightMotionIsReported) {
   const Loaded light = load("Camera \"perspective\"", "ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
                                                       "LightSource \"point\"\n" + kTriangle);
   EXPECT_TRUE(any_warning(light, "LightSource \"point\" under an animated transform"));

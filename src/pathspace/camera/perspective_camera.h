@@ -38,6 +38,12 @@ struct CameraProjection {
   float factor = 0.f; // We cos_cam / (dist^2 p_lens) = 1 / (A_pixel cos^3 theta dist^2) (eq. 4 with A_p)
 };
 
+// Where a camera is and where it looks: the part of a PerspectiveCamera that moves during the
+// shutter (motion blur, scene/motion.h). Axes unit and orthogonal.
+struct CameraPose {
+  Vec3 position, forward, right, up;
+};
+
 struct PerspectiveCamera {
   Vec3 position;  // the pinhole, or the centre of the lens
   Vec3 forward;   // unit view axis
@@ -49,6 +55,7 @@ struct PerspectiveCamera {
   float focus_distance = 1.f;  // distance of the plane in focus along forward (thin lens only)
 
   PS_HD bool is_pinhole() const { return !(lens_radius > 0.f); }
+  PS_HD CameraPose pose() const { return {position, forward, right, up}; }
   PS_HD float pixel_area() const { return (2.f * tan_x / float(width)) * (2.f * tan_y / float(height)); }
   PS_HD float image_area() const { return 4.f * tan_x * tan_y; }
 
@@ -143,6 +150,20 @@ struct PerspectiveCamera {
     return out->rx >= 0.f && out->rx < float(width) && out->ry >= 0.f && out->ry < float(height);
   }
 };
+
+// The camera at fraction t of the way from its own pose to `to`: the position on the straight line,
+// the axes blended and made orthonormal again (forward first, then right from the blended up). The
+// blend turns the camera at an uneven rate, which is invisible for the small turns of a shutter
+// interval; the scene readers warn above kMaxLinearRotationDegrees (io/pbrt/pbrt_animated_transform.h).
+PS_INLINE PerspectiveCamera camera_towards(const PerspectiveCamera& c, const CameraPose& to, float t) {
+  PerspectiveCamera out = c;
+  const float s = 1.f - t;
+  out.position = c.position * s + to.position * t;
+  out.forward = normalize(c.forward * s + to.forward * t);
+  out.right = normalize(cross(out.forward, c.up * s + to.up * t));
+  out.up = cross(out.right, out.forward);
+  return out;
+}
 
 // Camera from position, look direction, up hint and the horizontal full field of view.
 // `square_pixels` = false reproduces SmallVCM's convention: the same tan for x and y

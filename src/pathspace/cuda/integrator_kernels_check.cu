@@ -46,7 +46,7 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Visibilit
   if (i >= n) return;
   PathCounters counters;
   const Sampler sampler(0, i, 0);
-  const Ray ray = sample_camera_ray(scene.camera, sampler, i, camera_path_time(scene, sampler));  // pinhole or thin lens
+  const Ray ray = sample_camera_ray(scene, sampler, i, camera_path_time(scene, sampler));  // pinhole or thin lens
   PathSample sample;
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample);
   out[i] = sample.value() + pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters);
@@ -61,7 +61,7 @@ __global__ void pt_bvh_compile_check(SceneView scene, BvhView bvh, PtSettings se
   if (i >= n) return;
   PathCounters counters;
   const Sampler sampler(0, i, 0);
-  out[i] = pt_trace_path(scene, BvhTracer{scene, bvh}, sampler, sample_camera_ray(scene.camera, sampler, i, camera_path_time(scene, sampler)), settings, &counters);
+  out[i] = pt_trace_path(scene, BvhTracer{scene, bvh}, sampler, sample_camera_ray(scene, sampler, i, camera_path_time(scene, sampler)), settings, &counters);
 }
 
 __global__ void lt_compile_check(SceneView scene, LtSettings settings, SplatFilmView film, uint32_t n) {
@@ -86,7 +86,7 @@ __global__ void sppm_compile_check(SceneView scene, SppmSettings settings, SppmG
   if (i >= n) return;
   PathCounters counters;
   const Sampler sampler(0, i, 0);
-  sppm_trace_eye(scene, NullTracer{}, sampler, sample_camera_ray(scene.camera, sampler, i, camera_path_time(scene, sampler)), settings,
+  sppm_trace_eye(scene, NullTracer{}, sampler, sample_camera_ray(scene, sampler, i, camera_path_time(scene, sampler)), settings,
                  scene.max_path_segments, &counters, &direct[i], &points[i]);
   sppm_trace_photon(scene, NullTracer{}, Sampler(1, i, 0), settings, gather, pass_time(scene, 1, 0), &counters, &photons[i]);
   if (i == 0) direct[0] += Rgb(max_photon_power(scene));
@@ -99,7 +99,7 @@ __global__ void pclt_compile_check(SceneView scene, PcltSettings settings, PcltL
   if (i >= n) return;
   PathCounters counters;
   const Sampler sampler(0, i, 0);
-  pclt_trace_eye(scene, NullTracer{}, sampler, sample_camera_ray(scene.camera, sampler, i, camera_path_time(scene, sampler)), i, settings,
+  pclt_trace_eye(scene, NullTracer{}, sampler, sample_camera_ray(scene, sampler, i, camera_path_time(scene, sampler)), i, settings,
                  scene.max_path_segments, &counters, &eye[i]);
   pclt_trace_light(scene, NullTracer{}, Sampler(1, i, 0), settings, light_view, &counters, &light_counters[i]);
 }

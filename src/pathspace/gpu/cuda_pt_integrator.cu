@@ -47,7 +47,7 @@ __global__ void __launch_bounds__(kThreadsPerBlock) trace_plain(PassParams p, Rg
   if (pixel >= p.pixels) return;
   PathCounters c;
   const Sampler sampler(p.seed, pixel, p.pass);
-  Rgb value = pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene.camera, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c);
+  Rgb value = pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c);
   uint32_t dropped = 0;
   if (!all_finite(value)) {
     dropped = 1;
@@ -64,7 +64,7 @@ __global__ void __launch_bounds__(kThreadsPerBlock) trace_recording(PassParams p
   PathCounters c;
   PathSample sample;
   const Sampler sampler(p.seed, pixel, p.pass);
-  pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene.camera, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c, &sample);
+  pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c, &sample);
   buffer.store(pixel, pixel, sample);
   add_counters(counters, uint32_t(c.rays), uint32_t(c.shadow_rays), 1u, 0u);
 }

@@ -34,7 +34,7 @@ enum class WavefrontAfterShade : uint8_t { ended, extend, shadow_then_extend, sh
 PS_INLINE void wavefront_camera(const SceneView& scene, uint64_t seed, uint32_t pass, uint32_t pixel, PtPathState* s,
                                 pt_detail::OpenVertex* open) {
   const Sampler sampler(seed, pixel, pass);
-  pt_begin(s, sample_camera_ray(scene.camera, sampler, pixel, camera_path_time(scene, sampler)), open);
+  pt_begin(s, sample_camera_ray(scene, sampler, pixel, camera_path_time(scene, sampler)), open);
 }
 
 template <typename Tracer>

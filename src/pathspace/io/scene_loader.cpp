@@ -87,6 +87,7 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   if (!(length(right) > 1e-6f)) throw Error("camera up vector is parallel to the view direction");
   c = make_file_camera(pos, forward, right, cross(normalize(right), normalize(forward)), fov, width, height);
   set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
+  scene->camera_moves = false;  // a camera placed on the command line stands still
 }
 
 bool names_scene_file(const std::string& name) {

@@ -5,8 +5,9 @@
 // triangles Embree intersected. Every path samples one time, uniform over the shutter
 // (sample_time), and every ray and hit of the path carries it (Ray::time, SurfaceHit::time):
 // shading, light sampling at moving emitters and shadow rays all see the scene at that instant.
-// Spheres, point-like lights and the camera do not move. Still scenes read no time dimension, so
-// their images do not change.
+// The camera moves too (camera_at): camera rays start from it, and light paths' camera connections
+// project through it, at the path's time (the filters' level of detail keeps the shutter-open camera). Spheres and point-like lights do not move. Still scenes
+// read no time dimension, so their images do not change.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,12 @@
 
 namespace pathspace {
 
-PS_INLINE bool scene_moves(const SceneView& s) { return s.positions_end != nullptr; }
+PS_INLINE bool scene_moves(const SceneView& s) { return s.positions_end != nullptr || s.camera_moves; }
+
+// The camera at time t: the shutter-open camera itself when it stands still.
+PS_INLINE PerspectiveCamera camera_at(const SceneView& s, float time) {
+  return s.camera_moves ? camera_towards(s.camera, s.camera_end, time) : s.camera;
+}
 
 // Vertex v at time t.
 PS_INLINE Vec3 vertex_at(const SceneView& s, uint32_t v, float time) {

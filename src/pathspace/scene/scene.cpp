@@ -393,6 +393,8 @@ SceneView Scene::view() const {
   v.environment_light = environment_light_;
   v.environment_map = environment_image.view();
   v.camera = camera;
+  v.camera_moves = camera_moves;
+  v.camera_end = camera_end;
   v.bounds = bounds_;
   v.ray_epsilon = ray_epsilon;
   v.max_path_segments = max_path_segments;

@@ -50,6 +50,10 @@ class Scene {
   std::vector<Light> lights;
   EnvironmentImage environment_image;  // the environment light's image, or empty (constant)
   PerspectiveCamera camera;
+  // Motion blur of the camera (scene/motion.h, camera_at): camera is the camera at shutter open and
+  // camera_end its pose at shutter close. Its lens and image do not change.
+  bool camera_moves = false;
+  CameraPose camera_end;
   // Animations (docs/animation.md): triangles and spheres from these indices on may move from frame
   // to frame; those before them are the same in every frame, so the acceleration structure of one
   // frame can reuse the previous frame's for them (accel/accel.h). kNothingMoves: all static.

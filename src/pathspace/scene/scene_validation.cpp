@@ -124,6 +124,11 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
   using K = SceneSources::Kind;
   const SceneSources& src = scene.sources;
   check_camera(scene.camera, src.camera());
+  if (scene.camera_moves) {
+    check_point(scene.camera_end.position, "the camera at shutter close", src.camera());
+    for (const Vec3& axis : {scene.camera_end.forward, scene.camera_end.right, scene.camera_end.up})
+      check_direction(axis, "a camera axis at shutter close", src.camera());
+  }
   for (size_t i = 0; i < scene.positions.size(); ++i)
     check_point(scene.positions[i], "vertex " + std::to_string(i), src.find(K::kVertex, i));
   for (size_t i = 0; i < scene.positions_end.size(); ++i)

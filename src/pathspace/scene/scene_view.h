@@ -37,7 +37,9 @@ struct SceneView {
   LightTreeView light_tree;         // NEE at a shading point when active (scene/light_sampling.h)
   int32_t environment_light = -1;   // index of the environment light, or -1
   EnvironmentMapView environment_map;  // its image (texels null: constant radiance)
-  PerspectiveCamera camera;
+  PerspectiveCamera camera;         // at shutter open
+  bool camera_moves = false;        // motion blur: the camera reaches camera_end at shutter close (camera_at)
+  CameraPose camera_end;
   BoundingSphere bounds;            // of the geometry; used by infinite lights
   float ray_epsilon = 1e-4f;        // ray offset (scene scale)
   int max_path_segments = 10;       // the scene's path length limit (camera ray = segment 1)

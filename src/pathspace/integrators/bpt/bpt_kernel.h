@@ -81,7 +81,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
                               int max_segments, float time, const BptFilms& films, PathCounters* counters,
                               LightVertex* verts) {
   if (scene.num_lights == 0) return 0;
-  const PerspectiveCamera& cam = scene.camera;
+  const PerspectiveCamera cam = camera_at(scene, time);
   const MisHeuristic h = st.mis;
   const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
 
@@ -320,9 +320,10 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
   using namespace bpt_detail;
   const int max_segments = min_int(st.max_segments > 0 ? st.max_segments : scene.max_path_segments, kBptMaxSegments);
   const MisHeuristic h = st.mis;
-  const PerspectiveCamera& cam = scene.camera;
-  // One time for the whole sample: every connection joins vertices of the same instant.
+  // One time for the whole sample: every connection joins vertices of the same instant, and the
+  // camera subpath and the light subpath's camera connections see the camera at it.
   const float time = camera_path_time(scene, camera_sampler);
+  const PerspectiveCamera cam = camera_at(scene, time);
   LightVertex verts[kBptMaxSegments];
   const int nv = trace_light_subpath(scene, tracer, light_sampler, st, max_segments, time, films, counters, verts);
 

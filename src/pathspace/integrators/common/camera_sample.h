@@ -27,6 +27,12 @@ PS_HD inline Ray sample_camera_ray(const PerspectiveCamera& cam, const Sampler& 
   return ray;
 }
 
+// The camera ray of the camera path through `pixel` at `time`, from the camera at that time.
+PS_HD inline Ray sample_camera_ray(const SceneView& scene, const Sampler& sampler, uint32_t pixel, float time) {
+  if (!scene.camera_moves) return sample_camera_ray(scene.camera, sampler, pixel, time);  // no copy of the camera
+  return sample_camera_ray(camera_at(scene, time), sampler, pixel, time);
+}
+
 // The time of a camera path (uniform over the shutter in a scene that moves, else 0).
 PS_HD inline float camera_path_time(const SceneView& scene, const Sampler& sampler) {
   return sample_time(scene, sampler, dims::kTime);

@@ -92,10 +92,11 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   using namespace lt_detail;
   if (scene.num_lights == 0) return;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
-  const PerspectiveCamera& cam = scene.camera;
+  const float time = light_path_time(scene, sampler);
+  const PerspectiveCamera cam = camera_at(scene, time);  // the path's connections see the camera of its instant
 
   LightPathStart start;
-  if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
+  if (!start_light_path(scene, sampler, time, &start)) return;
   const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   const float inv_select = 1.f / start.select_prob;

@@ -141,7 +141,7 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
       PcltEyeResult eye;
-      pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), time), uint32_t(pixel), s_,
+      pclt_trace_eye(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), time), uint32_t(pixel), s_,
                      max_segments_, &local, &eye);
       stored_[pixel] = eye.stored;
       if (eye.stored) staging_[pixel] = eye.entry;

@@ -176,7 +176,8 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
       out->has_first_hit = true;
       out->first_p = hit.p;
       out->first_n = n_front;
-      out->first_depth = dot(hit.p - scene.camera.position, scene.camera.forward);
+      const PerspectiveCamera cam = camera_at(scene, ray.time);
+      out->first_depth = dot(hit.p - cam.position, cam.forward);
     }
     // EL is the light tracer's emitter splat; emission behind >= 1 non-diffuse bounce is ES+L.
     if (hit.light != kNoLight && bounces > 0 && settings.specular_emission)
@@ -254,7 +255,7 @@ namespace pclt_detail {
 template <typename Tracer>
 PS_HD bool projection_visible(const SceneView& scene, const Tracer& tracer, const PcltLightView& lv, const Vec3& p,
                               const Vec3& ng, const lt_detail::Projection& pr, PathCounters* counters) {
-  const PerspectiveCamera& cam = scene.camera;
+  const PerspectiveCamera cam = camera_at(scene, lv.time);
   if (lv.visibility != PcltVisibility::shadow_ray && pr.rx >= 0.f && pr.rx < float(cam.width) && pr.ry >= 0.f &&
       pr.ry < float(cam.height)) {
     const size_t pixel = size_t(min_int(int(pr.rx), cam.width - 1)) + size_t(min_int(int(pr.ry), cam.height - 1)) * size_t(cam.width);
@@ -297,7 +298,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
   using namespace lt_detail;
   using pclt_detail::projection_visible;
   if (scene.num_lights == 0) return;
-  const PerspectiveCamera& cam = scene.camera;
+  const PerspectiveCamera cam = camera_at(scene, lv.time);  // the pass's instant: its pixel cache saw this camera
   LightPathStart start;
   if (!start_light_path(scene, sampler, lv.time, &start)) return;
   const Light& light = *start.light;

@@ -93,7 +93,7 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
     PathCounters local;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
-      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local);
+      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local);
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
@@ -146,7 +146,7 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
     for (size_t path = begin; path < end; ++path) {
       const size_t pixel = first + path;
       const Sampler sampler(seed, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local, &sample,
+      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local, &sample,
                     probes_, stream != 0, caustics_ ? &caustics_->view() : nullptr);
       out.store(path, uint32_t(pixel), sample);
     }
@@ -156,7 +156,8 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
 }
 
 // The previous frame's paths of request.pixels, with its seed, pass and camera, in this frame's scene:
-// where nothing changed they are the same paths. Their rays count; they are not paths of the pass.
+// where nothing changed they are the same paths. (A camera that moves within a frame is taken at its
+// shutter-open pose here, so its re-traced paths differ and count as change.) Their rays count; they are not paths of the pass.
 void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffer, PathCounters& counters) {
   const int per_path = records_per_path(settings_.selection);
   const size_t paths = request.pixels.size();

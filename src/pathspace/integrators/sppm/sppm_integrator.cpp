@@ -73,7 +73,7 @@ void SppmIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
     uint64_t points = 0;
     for (size_t pixel = begin; pixel < end; ++pixel) {
       const Sampler sampler(seed_, pixel, pass);
-      sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_.camera, sampler, uint32_t(pixel), time), s, max_segments_, &local, &direct_[pixel],
+      sppm_trace_eye(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), time), s, max_segments_, &local, &direct_[pixel],
                      &points_[pixel]);
       points += points_[pixel].valid;
       flux_[3 * pixel] = flux_[3 * pixel + 1] = flux_[3 * pixel + 2] = 0;

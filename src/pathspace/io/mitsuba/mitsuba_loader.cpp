@@ -14,6 +14,7 @@
 #include "pathspace/io/mitsuba/mitsuba_materials.h"
 #include "pathspace/io/mitsuba/mitsuba_object.h"
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
+#include "pathspace/io/pbrt/pbrt_animated_transform.h"
 
 namespace pathspace::mitsuba {
 
@@ -63,11 +64,11 @@ class Builder {
     }
   }
 
-  // The to_world of a sensor or an emitter, which do not move: an <animation> keeps its first key.
+  // The to_world of an emitter, which does not move: an <animation> keeps its first key.
   Mat4 still_transform(const Object& o) {
     bool animated = false;
     const Mat4 m = o.get_transform("to_world", &animated);
-    if (animated) w_->add(o.loc(), o.title() + ": an animated to_world moves shapes only; this one keeps its first key");
+    if (animated) w_->add(o.loc(), o.title() + ": an animated to_world moves shapes and the sensor only; this one keeps its first key");
     return m;
   }
 
@@ -79,12 +80,18 @@ class Builder {
     const HalfTangents t = half_tangents(fov_, w, h);
     const float fov_short = float(2.0 * std::atan(std::min(t.x, t.y)) * 180.0 / M_PI);
     if (!(fov_short > 0.f && fov_short < 180.f)) throw Error(sensor_loc_, "field of view must be between 0 and 180 degrees");
-    const Mat4& m = camera_to_world_;
-    const Vec3 forward = m.vector(Vec3(0, 0, 1)), up = m.vector(Vec3(0, 1, 0)), right = -m.vector(Vec3(1, 0, 0));
-    if (!(length(forward) > 0.f && length(up) > 0.f && length(right) > 0.f) || !all_finite(m.point(Vec3())))
-      throw Error(sensor_loc_, "sensor to_world is singular");
-    scene_.camera = make_file_camera(m.point(Vec3()), forward, right, up, fov_short, w, h);
+    auto camera_for = [&](const Mat4& m) {
+      const Vec3 forward = m.vector(Vec3(0, 0, 1)), up = m.vector(Vec3(0, 1, 0)), right = -m.vector(Vec3(1, 0, 0));
+      if (!(length(forward) > 0.f && length(up) > 0.f && length(right) > 0.f) || !all_finite(m.point(Vec3())))
+        throw Error(sensor_loc_, "sensor to_world is singular");
+      return make_file_camera(m.point(Vec3()), forward, right, up, fov_short, w, h);
+    };
+    scene_.camera = camera_for(camera_to_world_);
     set_thin_lens(&scene_.camera, aperture_radius_, focus_distance_);  // validated in sensor()
+    if (!(camera_to_world_ == camera_to_world_end_)) {  // an animated sensor: motion blur (scene/motion.h)
+      scene_.camera_moves = true;
+      scene_.camera_end = camera_for(camera_to_world_end_).pose();
+    }
     apply_camera_options(options_, false, w, h, &scene_);
     if (has_sensor_) scene_.sources.set_camera(sensor_loc_);
     scene_.max_path_segments = max_segments_;
@@ -162,7 +169,14 @@ class Builder {
     has_sensor_ = true;
     sensor_loc_ = o.loc();
     fov_ = read_fov(o);
-    camera_to_world_ = still_transform(o);
+    // An animated to_world moves the camera over the shutter, as an animated shape moves.
+    const Object::TransformKeys keys = o.get_transform_keys("to_world");
+    camera_to_world_ = keys.at(shutter_.open, o.loc());
+    camera_to_world_end_ = keys.at(shutter_.close, o.loc());
+    const double degrees = pbrt::rotation_between_degrees(camera_to_world_, camera_to_world_end_);
+    if (degrees > pbrt::kMaxLinearRotationDegrees)
+      w_->add(o.loc(), o.title() + ": the camera turns " + std::to_string(int(std::lround(degrees))) +
+                           " degrees while the shutter is open; its view direction is blended linearly, not turned on an arc");
     o.ignore({"near_clip", "far_clip", "shutter_open", "shutter_close", "principal_point_offset_x", "principal_point_offset_y"});
     for (const pugi::xml_node& n : o.children("film")) film(Object(doc_, n));
     for (const pugi::xml_node& n : o.children("sampler")) sampler(Object(doc_, n));
@@ -361,7 +375,7 @@ class Builder {
   int default_material_ = -1;
   bool has_sensor_ = false, has_environment_ = false;
   FileLoc sensor_loc_;
-  Mat4 camera_to_world_;
+  Mat4 camera_to_world_, camera_to_world_end_;  // at shutter open and close
   Shutter shutter_;
   FieldOfView fov_;
   float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole

@@ -78,11 +78,22 @@ class Builder {
     const int w = options_.width > 0 ? options_.width : film_width_;
     const int h = options_.height > 0 ? options_.height : film_height_;
     if (!has_camera_) warn(FileLoc{}, "no Camera statement; using pbrt's default camera at the origin looking along +z");
-    Mat4 world_from_camera;
-    if (!camera_from_world_.inverse(&world_from_camera)) throw Error(camera_loc_, "camera transform is singular");
-    scene_.camera = make_file_camera(world_from_camera.point(Vec3()), world_from_camera.vector(Vec3(0, 0, 1)),
-                                     world_from_camera.vector(Vec3(1, 0, 0)), world_from_camera.vector(Vec3(0, 1, 0)), fov_, w, h);
+    Mat4 open = camera_from_world_, close = camera_from_world_;
+    if (!(camera_from_world_ == camera_from_world_end_) &&
+        (!animated_transform_at(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, shutter_open_, &open) ||
+         !animated_transform_at(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, shutter_close_, &close)))
+      throw Error(camera_loc_, "the camera's animated transform cannot be interpolated (a singular start or end transform)");
+    scene_.camera = file_camera_at(open, w, h);
     set_thin_lens(&scene_.camera, lens_radius_, focal_distance_);  // validated in camera()
+    if (!(open == close)) {  // motion blur of the camera (scene/motion.h)
+      scene_.camera_moves = true;
+      scene_.camera_end = file_camera_at(close, w, h).pose();
+      const double degrees = rotation_between_degrees(open, close);
+      if (degrees > kMaxLinearRotationDegrees)
+        warn(camera_loc_, fmt::format("the camera turns {:.0f} degrees while the shutter is open; its view direction is blended "
+                                      "linearly between shutter open and close, not turned on pbrt-v4's arc",
+                                      degrees));
+    }
     apply_camera_options(options_, false, w, h, &scene_);
     if (has_camera_) scene_.sources.set_camera(camera_loc_);
     scene_.max_path_segments = max_depth_ + 1;
@@ -99,6 +110,13 @@ class Builder {
 
  private:
   void warn(const FileLoc& loc, const std::string& m) { warnings_->add(loc, m); }
+  // The file's camera for one camera-from-world transform.
+  PerspectiveCamera file_camera_at(const Mat4& camera_from_world, int w, int h) const {
+    Mat4 world_from_camera;
+    if (!camera_from_world.inverse(&world_from_camera)) throw Error(camera_loc_, "camera transform is singular");
+    return make_file_camera(world_from_camera.point(Vec3()), world_from_camera.vector(Vec3(0, 0, 1)),
+                            world_from_camera.vector(Vec3(1, 0, 0)), world_from_camera.vector(Vec3(0, 1, 0)), fov_, w, h);
+  }
   void mark_all(const Statement& st) {
     for (const Param& p : st.params) p.used = true;
   }
@@ -338,9 +356,11 @@ class Builder {
       throw Error(st.loc, "shutterclose - shutteropen must be positive and finite (the shutter never opens)");
     shutter_open_ = st.get_float("shutteropen", 0.0);
     shutter_close_ = st.get_float("shutterclose", 1.0);
+    // pbrt-v4's CameraTransform: the CTM at start and end time, interpolated at the shutter (finish()).
     camera_from_world_ = gs_.ctm;
-    if (!(gs_.ctm == gs_.ctm_end))
-      warn(st.loc, "camera motion is not supported: the camera keeps its transform at the start time (shapes do move)");
+    camera_from_world_end_ = gs_.ctm_end;
+    camera_time_start_ = transform_start_time_;
+    camera_time_end_ = transform_end_time_;
     has_camera_ = true;
     camera_loc_ = st.loc;
     Mat4 inv;
@@ -750,7 +770,8 @@ class Builder {
   double transform_start_time_ = 0.0, transform_end_time_ = 1.0;  // TransformTimes
   double shutter_open_ = 0.0, shutter_close_ = 1.0;                // the camera's shutter
   bool has_camera_ = false;
-  Mat4 camera_from_world_;
+  Mat4 camera_from_world_, camera_from_world_end_;             // at TransformTimes' start and end
+  double camera_time_start_ = 0.0, camera_time_end_ = 1.0;
   FileLoc camera_loc_;
   float fov_ = 90.f;
   float lens_radius_ = 0.f, focal_distance_ = 1e6f;
