@@ -90,6 +90,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   fmt::print("{} {}\n", builtin ? "built-in scene" : "scene", path);
   fmt::print("  geometry     {} triangles ({} vertices), {} spheres\n", scene.triangles.size(), scene.positions.size(), scene.spheres.size());
   if (moving_vertices > 0) fmt::print("  motion blur  {} vertices move while the shutter is open\n", moving_vertices);
+  const size_t moving_lights = size_t(std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.moves; }));
+  if (moving_lights > 0) fmt::print("  motion blur  {} point-like lights move while the shutter is open\n", moving_lights);
   if (scene.camera_moves)
     fmt::print("  motion blur  the camera moves {:.4g} and turns {:.1f} degrees while the shutter is open\n",
                length(scene.camera_end.position - c.position),

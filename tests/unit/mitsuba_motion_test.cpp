@@ -2,8 +2,8 @@
 // <animation name="to_world"> with <transform time=...> keys, over the sensor's shutter_open and
 // shutter_close, gives the shape its vertices at shutter open and close (motion blur,
 // scene/motion.h); keys in between are interpolated; a moving sphere becomes a mesh; a still shutter
-// (Mitsuba 3's default 0, 0) leaves the scene still; an animated sensor moves the camera; animated
-// emitters keep their first key.
+// (Mitsuba 3's default 0, 0) leaves the scene still; an animated sensor moves the camera, an animated
+// point, spot or projector emitter moves; other animated emitters keep their first key.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -80,13 +80,22 @@ TEST(MitsubaMotion, AMovingSphereBecomesAMovingMesh) {
   EXPECT_TRUE(any_warning(l, "moving sphere"));
 }
 
-TEST(MitsubaMotion, AnimatedEmittersKeepTheirFirstKeyWithAWarning) {
+TEST(MitsubaMotion, AnimatedPointEmittersMoveDirectionalOnesKeepTheirFirstKey) {
   const Loaded l = load("<emitter type=\"point\"><animation name=\"to_world\"><transform time=\"0\"/>"
-                        "<transform time=\"1\"><translate x=\"1\"/></transform></animation></emitter>",
+                        "<transform time=\"2\"><translate x=\"1\"/></transform></animation></emitter>\n"
+                        "<emitter type=\"directional\"><animation name=\"to_world\"><transform time=\"0\"/>"
+                        "<transform time=\"1\"><rotate y=\"1\" angle=\"30\"/></transform></animation></emitter>",
                         kShutter);
-  ASSERT_EQ(l.scene.lights.size(), 1u);
-  EXPECT_EQ(l.scene.lights[0].position.x, 0.f);
-  EXPECT_TRUE(any_warning(l, "keeps its first key"));
+  ASSERT_EQ(l.scene.lights.size(), 2u);
+  const Light& point = l.scene.lights[0];
+  EXPECT_TRUE(point.moves);
+  EXPECT_EQ(point.position.x, 0.f);
+  EXPECT_NEAR(point.position_end.x, 0.5f, 1e-6f);  // the shutter [0, 1] holds half of the keys' motion
+  EXPECT_TRUE(l.scene.view().lights_move);
+  EXPECT_TRUE(any_warning(l, "keeps its first key"));  // the directional emitter
+  const Loaded still = load("<emitter type=\"point\"><animation name=\"to_world\"><transform time=\"0\"/>"
+                            "<transform time=\"1\"><translate x=\"1\"/></transform></animation></emitter>");
+  EXPECT_FALSE(still.scene.lights[0].moves) << "Mitsuba's default shutter (0, 0) is still";
 }
 
 TEST(MitsubaMotion, AnAnimatedSensorMovesTheCamera) {

@@ -2,8 +2,8 @@
 // StartTime / EndTime / All, TransformTimes and the camera's shutter give a shape its vertices at
 // shutter open (Scene::positions) and close (Scene::positions_end); transforms in between are
 // interpolated as pbrt-v4's AnimatedTransform does (translation and stretch linearly, rotation by
-// slerp); a moving sphere becomes a mesh; the camera moves with its animated CameraTransform; non-area
-// light motion is reported.
+// slerp); a moving sphere becomes a mesh; the camera moves with its animated CameraTransform, point
+// and spot lights with theirs; distant light motion is reported.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -148,10 +148,28 @@ TEST(PbrtMotion, AnAnimatedCameraTransformMovesTheCamera) {
   EXPECT_TRUE(any_warning(turn, "the camera turns 40 degrees"));
 }
 
-TEST(PbrtMotion, PointLightMotionIsReported) {
-  const Loaded light = load("Camera \"perspective\"", "ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
-                                                      "LightSource \"point\"\n" + kTriangle);
-  EXPECT_TRUE(any_warning(light, "LightSource \"point\" under an animated transform"));
+TEST(PbrtMotion, PointAndSpotLightsMoveDistantLightsAreReported) {
+  const Loaded light = load("Camera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5",
+                            "ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\n"
+                            "LightSource \"point\" \"point3 from\" [0 2 0]\n"
+                            "LightSource \"spot\" \"point3 from\" [0 2 0] \"point3 to\" [0 0 0]\n" + kTriangle);
+  ASSERT_EQ(light.scene.lights.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    const Light& l = light.scene.lights[size_t(i)];
+    EXPECT_TRUE(l.moves) << i;
+    EXPECT_NEAR(distance(l.position, Vec3(0, 2, 0)), 0.f, 1e-6f) << i;
+    EXPECT_NEAR(distance(l.position_end, Vec3(0.5f, 2, 0)), 0.f, 1e-6f) << i;  // half the motion in the shutter
+    EXPECT_NEAR(distance(light_position(l, 0.5f), Vec3(0.25f, 2, 0)), 0.f, 1e-6f) << i;
+  }
+  EXPECT_TRUE(light.scene.view().lights_move);
+  EXPECT_TRUE(scene_moves(light.scene.view()));
+  EXPECT_FALSE(any_warning(light, "animated transform")) << light.warnings.size();
+  const Loaded turning = load("Camera \"perspective\"", "ActiveTransform EndTime\nRotate 30 0 0 1\nActiveTransform All\n"
+                                                        "LightSource \"spot\" \"point3 from\" [1 0 0] \"point3 to\" [0 0 0]\n" + kTriangle);
+  EXPECT_TRUE(any_warning(turning, "keeps its orientation"));
+  const Loaded distant = load("Camera \"perspective\"", "ActiveTransform EndTime\nRotate 30 0 0 1\nActiveTransform All\n"
+                                                        "LightSource \"distant\"\n" + kTriangle);
+  EXPECT_TRUE(any_warning(distant, "LightSource \"distant\" under an animated transform"));
 }
 
 }  // namespace

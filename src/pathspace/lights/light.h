@@ -30,7 +30,11 @@ struct Light {
   LightType type = LightType::point;
   uint32_t shape = 0;  // triangle or sphere index for area lights
   Rgb value;
-  Vec3 position;       // point, spot
+  Vec3 position;       // point, spot, projector (at shutter open when it moves)
+  // Motion blur (scene/motion.h): a point, spot or projector that moves while the shutter is open
+  // goes in a straight line from `position` to `position_end`; its orientation stays.
+  bool moves = false;
+  Vec3 position_end;
   Vec3 direction;      // directional: unit direction of propagation; spot, projector: unit axis
   bool two_sided = false;
   float cos_total = -1.f;   // spot: no emission at angles whose cosine to the axis is below this
@@ -48,6 +52,11 @@ struct Light {
   bool irradiance_plane = false;
   float image_max = 1.f;  // the texture's largest channel value (1 without one): bounds emission weights
 };
+
+// Where a point, spot or projector is at time t in [0, 1) (its position when it stands still).
+PS_INLINE Vec3 light_position(const Light& l, float time) {
+  return l.moves ? l.position * (1.f - time) + l.position_end * time : l.position;
+}
 
 // Lights at a single point (delta position): point, spot and projector.
 PS_INLINE bool is_point_light(const Light& l) {

@@ -94,7 +94,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
       return !is_black(e->le);
     }
     case LightType::point:
-      e->p = l.position;
+      e->p = light_position(l, time);
       e->d = square_to_uniform_sphere(u_dir);
       e->n = e->ng = e->d;
       e->le = l.value;
@@ -105,7 +105,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
       return !is_black(l.value);
     case LightType::spot: {  // directions uniform in the cone; the falloff goes into the weight
       const Frame f(l.direction);
-      e->p = l.position;
+      e->p = light_position(l, time);
       e->d = f.to_world(square_to_uniform_cone(u_dir, l.cos_total));
       e->n = e->ng = e->d;
       e->le = point_light_intensity(scene, l, e->d);
@@ -116,7 +116,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
       return !is_black(e->le);
     }
     case LightType::projector: {  // directions from uniform points of the image plane
-      e->p = l.position;
+      e->p = light_position(l, time);
       e->d = sample_projector_direction(l, u_dir, &e->pdf_w);
       e->n = e->ng = e->d;
       e->le = point_light_intensity(scene, l, e->d);

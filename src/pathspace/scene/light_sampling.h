@@ -88,12 +88,13 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::point:
     case LightType::spot:
     case LightType::projector: {
-      const Vec3 d = l.position - ref;
+      const Vec3 at = light_position(l, time);
+      const Vec3 d = at - ref;
       const float d2 = length_squared(d);
       if (!(d2 > 0.f)) return false;
       s->dist = sqrtf(d2);
       s->wi = d / s->dist;
-      s->p = l.position;
+      s->p = at;
       s->li = point_light_intensity(scene, l, -s->wi) / d2;
       s->pdf_w = 1.f;
       s->delta = true;

@@ -6,8 +6,10 @@
 // (sample_time), and every ray and hit of the path carries it (Ray::time, SurfaceHit::time):
 // shading, light sampling at moving emitters and shadow rays all see the scene at that instant.
 // The camera moves too (camera_at): camera rays start from it, and light paths' camera connections
-// project through it, at the path's time (the filters' level of detail keeps the shutter-open camera). Spheres and point-like lights do not move. Still scenes
-// read no time dimension, so their images do not change.
+// project through it, at the path's time (the filters' level of detail keeps the shutter-open
+// camera). Point, spot and projector lights move on straight lines (lights/light.h,
+// light_position), keeping their orientation. Spheres do not move. Still scenes read no time
+// dimension, so their images do not change.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +20,7 @@
 
 namespace pathspace {
 
-PS_INLINE bool scene_moves(const SceneView& s) { return s.positions_end != nullptr || s.camera_moves; }
+PS_INLINE bool scene_moves(const SceneView& s) { return s.positions_end != nullptr || s.camera_moves || s.lights_move; }
 
 // The camera at time t: the shutter-open camera itself when it stands still.
 PS_INLINE PerspectiveCamera camera_at(const SceneView& s, float time) {

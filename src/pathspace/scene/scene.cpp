@@ -256,12 +256,14 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
     }
     case LightType::point:
       b.box.expand(l.position);
+      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
       b.cos_theta_o = -1.f;
       b.cos_theta_e = 0.f;
       return b;
     case LightType::spot: {
       // Full intensity within the falloff cone; the smoothstep reaches zero at the total angle.
       b.box.expand(l.position);
+      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
       b.w = l.direction;
       b.cos_theta_o = std::clamp(l.cos_falloff, -1.f, 1.f);
       b.cos_theta_e = std::cos(std::max(0.f, std::acos(std::clamp(l.cos_total, -1.f, 1.f)) - std::acos(b.cos_theta_o)));
@@ -269,6 +271,7 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
     }
     case LightType::projector: {  // within the cone through the image plane's corners
       b.box.expand(l.position);
+      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
       b.w = l.direction;
       const float hu = projector_half_width_u(l), hv = projector_half_width_v(l);
       b.cos_theta_o = 1.f;
@@ -394,6 +397,7 @@ SceneView Scene::view() const {
   v.environment_map = environment_image.view();
   v.camera = camera;
   v.camera_moves = camera_moves;
+  v.lights_move = std::any_of(lights.begin(), lights.end(), [](const Light& l) { return is_point_light(l) && l.moves; });
   v.camera_end = camera_end;
   v.bounds = bounds_;
   v.ray_epsilon = ray_epsilon;

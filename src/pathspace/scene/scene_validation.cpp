@@ -147,6 +147,7 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     const FileLoc* at = src.find(K::kLight, i);
     check_non_negative(l.value, name + ": emission", at);
     if (is_point_light(l)) check_point(l.position, name, at);
+    if (is_point_light(l) && l.moves) check_point(l.position_end, name + " at shutter close", at);
     if (l.type == LightType::directional || l.type == LightType::spot || l.type == LightType::projector)
       check_direction(l.direction, name + ": direction", at);
     if (l.type == LightType::projector && !(std::isfinite(l.uv_scale_u) && std::isfinite(l.uv_scale_v) && l.uv_scale_u != 0.f && l.uv_scale_v != 0.f))

@@ -40,6 +40,7 @@ struct SceneView {
   PerspectiveCamera camera;         // at shutter open
   bool camera_moves = false;        // motion blur: the camera reaches camera_end at shutter close (camera_at)
   CameraPose camera_end;
+  bool lights_move = false;         // some point, spot or projector moves (Light::moves)
   BoundingSphere bounds;            // of the geometry; used by infinite lights
   float ray_epsilon = 1e-4f;        // ray offset (scene scale)
   int max_path_segments = 10;       // the scene's path length limit (camera ray = segment 1)

@@ -83,7 +83,7 @@ PS_HD void probe_visibility(const SceneView& scene, const Tracer& tracer, const 
     Vec3 d = -light.direction;
     float dist = kInfinity;
     if (light.type != LightType::directional) {
-      const Vec3 to = light.position - hit.p;
+      const Vec3 to = light_position(light, hit.time) - hit.p;
       dist = length(to);
       if (!(dist > 0.f)) continue;
       d = to / dist;

@@ -64,12 +64,33 @@ class Builder {
     }
   }
 
-  // The to_world of an emitter, which does not move: an <animation> keeps its first key.
+  // The to_world of a directional or environment emitter, which does not move: an <animation> keeps
+  // its first key.
   Mat4 still_transform(const Object& o) {
     bool animated = false;
     const Mat4 m = o.get_transform("to_world", &animated);
-    if (animated) w_->add(o.loc(), o.title() + ": an animated to_world moves shapes and the sensor only; this one keeps its first key");
+    if (animated)
+      w_->add(o.loc(), o.title() + ": an animated to_world moves shapes, the sensor and point, spot and projector emitters "
+                                   "only; this one keeps its first key");
     return m;
+  }
+
+  // The to_world of a point, spot or projector emitter at shutter open, and at shutter close in *close.
+  Mat4 point_emitter_transform(const Object& o, Mat4* close) {
+    const Object::TransformKeys keys = o.get_transform_keys("to_world");
+    *close = keys.at(shutter_.close, o.loc());
+    return keys.at(shutter_.open, o.loc());
+  }
+
+  // The emitter just added, placed at local point `local` by `open`, moves to where `close` puts it
+  // (motion blur, scene/motion.h); it keeps its orientation at shutter open.
+  void move_last_light(const Object& o, const Mat4& open, const Mat4& close, const Vec3& local) {
+    if (open == close) return;
+    Light& l = scene_.lights.back();
+    l.position_end = close.point(local);
+    l.moves = !(l.position == l.position_end);
+    if (pbrt::rotation_between_degrees(open, close) > 0.1)
+      w_->add(o.loc(), o.title() + ": the emitter turns while the shutter is open; it moves but keeps its orientation at shutter open");
   }
 
   Scene finish(SceneFileSettings* settings) {
@@ -252,9 +273,11 @@ class Builder {
   void emitter(const Object& o) {
     const std::string& t = o.type();
     if (t == "point") {
-      const Mat4 m = still_transform(o);
-      scene_.add_point_light(m.point(o.get_vector("position", Vec3())),
-                             o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
+      Mat4 close;
+      const Mat4 m = point_emitter_transform(o, &close);
+      const Vec3 position = o.get_vector("position", Vec3());
+      scene_.add_point_light(m.point(position), o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded));
+      move_last_light(o, m, close, position);
     } else if (t == "directional") {
       const Mat4 m = still_transform(o);
       const Vec3 dir = m.vector(o.get_vector("direction", Vec3(0, 0, 1)));
@@ -297,7 +320,8 @@ class Builder {
   // 3/4 of cutoff_angle, degrees), fading linearly in the angle to nothing at cutoff_angle; a bitmap
   // `texture` over the cone at uv = 0.5 + 0.5 (x, y) / (z tan cutoff), as Mitsuba 3's spot.
   void spot(const Object& o) {
-    const Mat4 m = still_transform(o);
+    Mat4 close;
+    const Mat4 m = point_emitter_transform(o, &close);
     const double cutoff = o.get_float("cutoff_angle", 20.0);
     const double beam = o.get_float("beam_width", cutoff * 0.75);
     if (!(cutoff > 0.0 && cutoff <= 180.0) || !(beam >= 0.0)) throw Error(o.loc(), "spot emitter: need 0 < cutoff_angle <= 180 and beam_width >= 0");
@@ -305,6 +329,7 @@ class Builder {
     const Frame f = emitter_frame(o, m);
     scene_.add_spot_light(m.point(Vec3()), f.n, o.get_rgb("intensity", Rgb(1.f), folder_, w_, SpectrumUse::unbounded),
                           float(std::cos(cutoff * M_PI / 180.0)), float(std::cos(inner * M_PI / 180.0)));
+    move_last_light(o, m, close, Vec3());
     Light& l = scene_.lights.back();
     l.falloff = SpotFalloff::linear_angle;
     if (!o.has("texture")) return;
@@ -327,7 +352,8 @@ class Builder {
   // projector.cpp), u running against to_world's x (Mitsuba's camera x axis points left).
   void projector(const Object& o) {
     if (!o.has("irradiance")) throw Error(o.loc(), "projector emitter needs irradiance");
-    const Mat4 m = still_transform(o);
+    Mat4 close;
+    const Mat4 m = point_emitter_transform(o, &close);
     const Frame f = emitter_frame(o, m);
     const Property* p = o.find("irradiance");
     int32_t texture = -1;
@@ -340,6 +366,7 @@ class Builder {
     const HalfTangents t = half_tangents(fov, aspect, 1.0);
     const float scale = float(o.get_float("scale", 1.0));
     scene_.add_projector_light(m.point(Vec3()), f, irradiance * (kPi * scale), texture, float(-0.5 / t.x), float(0.5 / t.y), true);
+    move_last_light(o, m, close, Vec3());
   }
 
   // An image environment: Mitsuba's lat-long mapping in the to_world frame (local y up,

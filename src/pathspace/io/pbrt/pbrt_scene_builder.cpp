@@ -369,9 +369,36 @@ class Builder {
 
   void light(const Statement& st) {
     const std::string& type = st.strings[0];
-    if (!(gs_.ctm == gs_.ctm_end))
-      warn(st.loc, "LightSource \"" + type + "\" under an animated transform: only area lights (shapes) move; this one keeps "
-                   "its transform at the start time");
+    const size_t before = scene_.lights.size();
+    add_light(st);
+    if (gs_.ctm == gs_.ctm_end) return;
+    const bool point_like = type == "point" || type == "spot" || type == "projection";
+    if (!point_like || scene_.lights.size() != before + 1) {
+      warn(st.loc, "LightSource \"" + type + "\" under an animated transform: only area lights (shapes) and point, spot "
+                   "and projection lights move; this one keeps its transform at the start time");
+      return;
+    }
+    move_point_light(st.loc, &scene_.lights.back());
+  }
+
+  // A point-like light under an animated transform: its position at shutter open and close, the
+  // transforms interpolated as for shapes; it keeps its start orientation (warning if it turns).
+  void move_point_light(const FileLoc& loc, Light* l) {
+    const double t0 = transform_start_time_, t1 = transform_end_time_;
+    Mat4 open, close, inv_start;
+    if (!animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_open_, &open) ||
+        !animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_close_, &close) || !gs_.ctm.inverse(&inv_start))
+      throw Error(loc, "the light's animated transform cannot be interpolated (a singular start or end transform)");
+    const Vec3 local = inv_start.point(l->position);  // placed with the start transform
+    l->position = open.point(local);
+    l->position_end = close.point(local);
+    l->moves = !(l->position == l->position_end);
+    if (rotation_between_degrees(open, close) > 0.1)
+      warn(loc, "the light turns while the shutter is open; it moves but keeps its orientation at shutter open");
+  }
+
+  void add_light(const Statement& st) {
+    const std::string& type = st.strings[0];
     const float scale = float(st.get_float("scale", 1.0));
     const float power = light_power_param(st);
     if (type == "point") {
