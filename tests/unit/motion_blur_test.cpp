@@ -9,6 +9,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/scene/animation.h"
 #include "pathspace/scene/light_sampling.h"
 #include "pathspace/scene/motion.h"
 #include "pathspace/scene/scene.h"
@@ -147,6 +148,35 @@ TEST(MotionBlur, TheCameraMovesFromItsOpenToItsClosePose) {
   EXPECT_NEAR(dot(mid.forward, mid.up), 0.f, 1e-6f);
   EXPECT_EQ(mid.tan_x, open.tan_x);
   EXPECT_EQ(mid.width, open.width);
+}
+
+TEST(MotionBlur, AnimationsTurnAMovingCameraAtBothEndsAndACameraPathStillsIt) {
+  // A frame of `render --frames`: the orbit turns the shutter-open and shutter-close poses alike; a
+  // camera path places the camera absolutely and the file's motion within the frame is dropped.
+  Scene base = moving_square();
+  base.camera = make_perspective_camera(Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8);
+  base.camera_moves = true;
+  base.camera_end = make_perspective_camera(Vec3(1, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8).pose();
+  base.finalize();
+  Animation orbit;
+  orbit.scene_at = [&](double) { return base; };
+  orbit.orbit_degrees_per_frame = 90.f;
+  const Scene turned = orbit.at_frame(1);
+  ASSERT_TRUE(turned.camera_moves);
+  const Vec3 centre = base.bounds().center;
+  const PerspectiveCamera expected_end = orbit_camera(
+      make_perspective_camera(Vec3(1, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 40.f, 8, 8), centre, Vec3(0, 1, 0), 90.f);
+  EXPECT_NEAR(distance(turned.camera_end.position, expected_end.position), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(turned.camera_end.forward, expected_end.forward), 0.f, 1e-5f);
+  EXPECT_NEAR(distance(turned.camera_end.position, turned.camera.position), 1.f, 1e-5f) << "the motion turns with the orbit";
+  Animation path;
+  path.scene_at = [&](double) { return base; };
+  CameraKeyframe key;
+  key.position = Vec3(0, 3, 5);
+  path.camera_path.keys.push_back(key);
+  const Scene placed = path.at_frame(0);
+  EXPECT_FALSE(placed.camera_moves);
+  EXPECT_FALSE(placed.view().camera_moves);
 }
 
 }  // namespace
