@@ -27,6 +27,7 @@ std::shared_ptr<const Accel> PyScene::accel(const std::shared_ptr<const Scene>& 
 void PyScene::set_camera(const PerspectiveCamera& camera) {
   auto changed = std::make_shared<Scene>(*scene_);
   changed->camera = camera;
+  changed->camera_moves = false;  // a camera placed from Python stands still, as with --camera-pos
   scene_ = std::move(changed);
 }
 
