@@ -382,7 +382,7 @@ class Builder {
   }
 
   // A point-like light under an animated transform: its position at shutter open and close, the
-  // transforms interpolated as for shapes; it keeps its start orientation (warning if it turns).
+  // transforms interpolated as for shapes; it keeps its orientation at the start time (warning if it turns).
   void move_point_light(const FileLoc& loc, Light* l) {
     const double t0 = transform_start_time_, t1 = transform_end_time_;
     Mat4 open, close, inv_start;
@@ -394,7 +394,7 @@ class Builder {
     l->position_end = close.point(local);
     l->moves = !(l->position == l->position_end);
     if (rotation_between_degrees(open, close) > 0.1)
-      warn(loc, "the light turns while the shutter is open; it moves but keeps its orientation at shutter open");
+      warn(loc, "the light turns while the shutter is open; it moves but keeps its orientation at the start time");
   }
 
   void add_light(const Statement& st) {
