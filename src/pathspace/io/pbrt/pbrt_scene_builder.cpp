@@ -78,11 +78,8 @@ class Builder {
     const int w = options_.width > 0 ? options_.width : film_width_;
     const int h = options_.height > 0 ? options_.height : film_height_;
     if (!has_camera_) warn(FileLoc{}, "no Camera statement; using pbrt's default camera at the origin looking along +z");
-    Mat4 open = camera_from_world_, close = camera_from_world_;
-    if (!(camera_from_world_ == camera_from_world_end_) &&
-        (!animated_transform_at(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, shutter_open_, &open) ||
-         !animated_transform_at(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, shutter_close_, &close)))
-      throw Error(camera_loc_, "the camera's animated transform cannot be interpolated (a singular start or end transform)");
+    Mat4 open, close;
+    at_shutter(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, camera_loc_, &open, &close);
     scene_.camera = file_camera_at(open, w, h);
     set_thin_lens(&scene_.camera, lens_radius_, focal_distance_);  // validated in camera()
     if (!(open == close)) {  // motion blur of the camera (scene/motion.h)
@@ -129,18 +126,22 @@ class Builder {
     if (active_ != ActiveTransform::end) gs_.ctm = m;
     if (active_ != ActiveTransform::start) gs_.ctm_end = m;
   }
+  // A transform that is `start` at time t0 and `end` at t1, at the camera's shutteropen and
+  // shutterclose (pbrt-v4's AnimatedTransform, clamped to [t0, t1]); both `start` when still.
+  void at_shutter(const Mat4& start, const Mat4& end, double t0, double t1, const FileLoc& loc, Mat4* open, Mat4* close) const {
+    if (start == end) {
+      *open = *close = start;
+      return;
+    }
+    if (!animated_transform_at(start, end, t0, t1, shutter_open_, open) || !animated_transform_at(start, end, t0, t1, shutter_close_, close))
+      throw Error(loc, "the animated transform cannot be interpolated (a singular start or end transform)");
+  }
+
   // The shape transform at shutter open and close (pbrt-v4's animated transform at the camera's
   // shutteropen and shutterclose, clamped to TransformTimes). True when the two differ: the shape
   // moves while the shutter is open (motion blur, scene/motion.h).
   bool shutter_transforms(const FileLoc& loc, Mat4* open, Mat4* close) {
-    if (gs_.ctm == gs_.ctm_end) {
-      *open = *close = gs_.ctm;
-      return false;
-    }
-    const double t0 = transform_start_time_, t1 = transform_end_time_;
-    if (!animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_open_, open) ||
-        !animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_close_, close))
-      throw Error(loc, "the animated transform cannot be interpolated (a singular start or end transform)");
+    at_shutter(gs_.ctm, gs_.ctm_end, transform_start_time_, transform_end_time_, loc, open, close);
     if (*open == *close) return false;  // the motion lies outside the shutter interval
     const double degrees = rotation_between_degrees(*open, *close);
     if (degrees > kMaxLinearRotationDegrees)
@@ -384,11 +385,9 @@ class Builder {
   // A point-like light under an animated transform: its position at shutter open and close, the
   // transforms interpolated as for shapes; it keeps its orientation at the start time (warning if it turns).
   void move_point_light(const FileLoc& loc, Light* l) {
-    const double t0 = transform_start_time_, t1 = transform_end_time_;
     Mat4 open, close, inv_start;
-    if (!animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_open_, &open) ||
-        !animated_transform_at(gs_.ctm, gs_.ctm_end, t0, t1, shutter_close_, &close) || !gs_.ctm.inverse(&inv_start))
-      throw Error(loc, "the light's animated transform cannot be interpolated (a singular start or end transform)");
+    at_shutter(gs_.ctm, gs_.ctm_end, transform_start_time_, transform_end_time_, loc, &open, &close);
+    if (!gs_.ctm.inverse(&inv_start)) throw Error(loc, "the light's transform is singular");
     const Vec3 local = inv_start.point(l->position);  // placed with the start transform
     l->position = open.point(local);
     l->position_end = close.point(local);
