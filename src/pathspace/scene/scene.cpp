@@ -220,6 +220,10 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
   const Light& l = lights[i];
   LightBounds b;
   b.phi = light_power(i);
+  if (is_point_light(l)) {
+    b.box.expand(l.position);
+    if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
+  }
   switch (l.type) {
     case LightType::area_triangle: {
       const Triangle& t = triangles[l.shape];
@@ -254,24 +258,18 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
       b.cos_theta_e = 0.f;
       return b;
     }
-    case LightType::point:
-      b.box.expand(l.position);
-      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
+    case LightType::point:  // the box: above, as for spots and projectors
       b.cos_theta_o = -1.f;
       b.cos_theta_e = 0.f;
       return b;
     case LightType::spot: {
       // Full intensity within the falloff cone; the smoothstep reaches zero at the total angle.
-      b.box.expand(l.position);
-      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
       b.w = l.direction;
       b.cos_theta_o = std::clamp(l.cos_falloff, -1.f, 1.f);
       b.cos_theta_e = std::cos(std::max(0.f, std::acos(std::clamp(l.cos_total, -1.f, 1.f)) - std::acos(b.cos_theta_o)));
       return b;
     }
     case LightType::projector: {  // within the cone through the image plane's corners
-      b.box.expand(l.position);
-      if (l.moves) b.box.expand(l.position_end);  // everywhere the shutter sees it
       b.w = l.direction;
       const float hu = projector_half_width_u(l), hv = projector_half_width_v(l);
       b.cos_theta_o = 1.f;

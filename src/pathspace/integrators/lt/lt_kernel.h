@@ -46,11 +46,18 @@ PS_INLINE float filter_1d_integral(LtFilter f, float r) {
 
 // Distributes value (already divided by the path count; box-filter units) over the pixels whose
 // filter support contains (rx, ry).
+// The pixel a box-filtered splat at (rx, ry) adds to; false outside the image.
+PS_INLINE bool box_splat_pixel(const SplatFilmView& film, float rx, float ry, uint32_t* pixel) {
+  if (!(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return false;
+  const int i = min_int(int(rx), film.width - 1), j = min_int(int(ry), film.height - 1);
+  *pixel = uint32_t(i) + uint32_t(j) * uint32_t(film.width);
+  return true;
+}
+
 PS_INLINE void splat(const SplatFilmView& film, const LtSettings& s, float rx, float ry, const Rgb& value) {
   if (s.filter == LtFilter::box) {
-    if (!(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return;
-    const int i = min_int(int(rx), film.width - 1), j = min_int(int(ry), film.height - 1);
-    film.add(uint32_t(i) + uint32_t(j) * uint32_t(film.width), value);
+    uint32_t pixel;
+    if (box_splat_pixel(film, rx, ry, &pixel)) film.add(pixel, value);
     return;
   }
   const float r = s.filter_radius;
@@ -72,8 +79,8 @@ PS_INLINE void splat(const SplatFilmView& film, const LtSettings& s, float rx, f
 
 // Prefetches the pixel a box-filtered splat at (rx, ry) would add to (SplatFilmView::prefetch).
 PS_INLINE void prefetch_splat(const SplatFilmView& film, const LtSettings& s, float rx, float ry) {
-  if (s.filter != LtFilter::box || !(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return;
-  film.prefetch(uint32_t(min_int(int(rx), film.width - 1)) + uint32_t(min_int(int(ry), film.height - 1)) * uint32_t(film.width));
+  uint32_t pixel;
+  if (s.filter == LtFilter::box && box_splat_pixel(film, rx, ry, &pixel)) film.prefetch(pixel);
 }
 
 // Whether any pixel can receive a splat at (rx, ry): saves the shadow ray for points far outside.

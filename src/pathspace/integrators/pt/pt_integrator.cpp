@@ -157,7 +157,8 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
 
 // The previous frame's paths of request.pixels, with its seed, pass and camera, in this frame's scene:
 // where nothing changed they are the same paths. (A camera that moves within a frame is taken at its
-// shutter-open pose here, so its re-traced paths differ and count as change.) Their rays count; they are not paths of the pass.
+// shutter-open pose here, so its re-traced paths differ and count as change.) Their rays count; they
+// are not paths of the pass.
 void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffer, PathCounters& counters) {
   const int per_path = records_per_path(settings_.selection);
   const size_t paths = request.pixels.size();

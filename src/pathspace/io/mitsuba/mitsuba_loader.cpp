@@ -89,7 +89,7 @@ class Builder {
     Light& l = scene_.lights.back();
     l.position_end = close.point(local);
     l.moves = !(l.position == l.position_end);
-    if (pbrt::rotation_between_degrees(open, close) > 0.1)
+    if (pbrt::rotation_between_degrees(open, close) > pbrt::kLightTurnWarningDegrees)
       w_->add(o.loc(), o.title() + ": the emitter turns while the shutter is open; it moves but keeps its orientation at shutter open");
   }
 

@@ -13,6 +13,9 @@ namespace pathspace::pbrt {
 // two time steps, scene/motion.h) visibly cut the arcs that pbrt-v4 and Mitsuba follow: both loaders
 // warn.
 inline constexpr double kMaxLinearRotationDegrees = 10.0;
+// Point-like lights move but keep one orientation: a turn larger than this while the shutter is open
+// (beyond rounding) is reported by both loaders.
+inline constexpr double kLightTurnWarningDegrees = 0.1;
 
 struct Quaternion {
   double w = 1.0, x = 0.0, y = 0.0, z = 0.0;

@@ -392,7 +392,7 @@ class Builder {
     l->position = open.point(local);
     l->position_end = close.point(local);
     l->moves = !(l->position == l->position_end);
-    if (rotation_between_degrees(open, close) > 0.1)
+    if (rotation_between_degrees(open, close) > kLightTurnWarningDegrees)
       warn(loc, "the light turns while the shutter is open; it moves but keeps its orientation at the start time");
   }
 
