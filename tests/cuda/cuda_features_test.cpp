@@ -5,7 +5,8 @@
 // tree). The GPU's image must agree with the CPU's by the per-pixel z-test (gpu_comparison.h;
 // alpha = 0.01, Sidak-corrected over this file's comparisons), plain and with the hashed filter, and
 // the wavefront must equal the megakernel bit for bit. A Cornell box whose light slides and whose
-// floor rises during the shutter checks motion blur the same way.
+// floor rises during the shutter checks motion blur the same way, as do a moving camera and moving
+// point-like lights.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +21,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 4;
+constexpr int kComparisons = 5;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 ImageTexture four_by_four(const char* name, bool monochrome) {
@@ -130,6 +131,27 @@ TEST(CudaFeatures, CameraMotionBlurMatchesCpu) {
   scene.finalize();
   ASSERT_TRUE(scene.view().camera_moves);
   testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(14)), 256, "moving camera pt cuda vs cpu",
+                                  kAlphaImage);
+  testing::expect_pipelines_agree(scene, FilterChoice{});
+}
+
+// Moving point-like lights (lights/light.h, light_position): the features box's projector, spot and
+// point light slide while the shutter is open; the device samples, bounds and probes each at the
+// path's time.
+TEST(CudaFeatures, MovingPointLightsMatchCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  Scene scene = features_box();
+  int moving = 0;
+  for (Light& l : scene.lights) {
+    if (l.type != LightType::point && l.type != LightType::spot && l.type != LightType::projector) continue;
+    l.moves = true;
+    l.position_end = l.position + Vec3(-0.5f, 0.3f, -0.2f);
+    ++moving;
+  }
+  ASSERT_EQ(moving, 3);
+  scene.finalize();
+  ASSERT_TRUE(scene.view().lights_move);
+  testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(15)), 256, "moving lights pt cuda vs cpu",
                                   kAlphaImage);
   testing::expect_pipelines_agree(scene, FilterChoice{});
 }
