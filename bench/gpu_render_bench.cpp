@@ -1,7 +1,9 @@
 // Path tracing and hashed filtering on the GPU (--device cuda) at 1920x1080, 1 sample per pixel per
-// frame, with both pipelines (megakernel and wavefront, gpu/cuda_pt_integrator.h): per-frame device time (camera rays to the filtered image in device memory) as the median
-// over frames after warm-up, its stages (trace, filter, resolve), rays per second, and the 2-thread
-// CPU figure of the same build for the same scene. Needs a CUDA device (prints why not and exits 0
+// frame, with both pipelines (megakernel and wavefront, gpu/cuda_pt_integrator.h): per-frame device
+// time (camera rays to the filtered image in device memory) as the median over frames after
+// warm-up, its stages (trace, filter, resolve), rays per second, and the 2-thread CPU figure of the
+// same build for the same scene. The megakernel also runs with the filter's table kept from frame
+// to frame (--temporal integrate, sec. 3.4): the temporal steps' share of the filter's time. Needs a CUDA device (prints why not and exits 0
 // without one, so that CI can run it). Used by scripts/gpu-check; docs/benchmarks.md.
 //
 //   gpu_render_bench [--scenes DIR] [--frames N] [--json FILE]
@@ -42,22 +44,30 @@ double total(const Statistics& s, const char* name, uint32_t passes) {
   return st ? st->number * double(passes) : 0.0;
 }
 
+enum class BenchFilter { none, hashed, temporal };
+const char* filter_name(BenchFilter f) { return f == BenchFilter::none ? "none" : f == BenchFilter::hashed ? "hashed" : "temporal"; }
+
 struct GpuRun {
   double frame_ms = 0, trace_ms = 0, filter_ms = 0, resolve_ms = 0, download_ms = 0, mrays_per_s = 0, rays_per_path = 0;
+  double temporal_ms = 0;  // --temporal: level transfer, folding and eviction (part of filter_ms)
   double extend_ms = 0, shade_ms = 0, shadow_ms = 0;  // wavefront stages
 };
 
-GpuRun run_gpu(const Scene& scene, bool filtered, gpu::CudaPtPipeline pipeline, int frames) {
+GpuRun run_gpu(const Scene& scene, BenchFilter bench_filter, gpu::CudaPtPipeline pipeline, int frames) {
   const Accel accel(scene);  // the context's; the GPU builds its own BVH
   FilterChoice filter;
-  if (filtered) filter.name = "hashed";
+  if (bench_filter != BenchFilter::none) {
+    HashedFilterSettings settings;
+    if (bench_filter == BenchFilter::temporal) settings.temporal.mode = TemporalMode::integrate;
+    filter = FilterChoice{"hashed", settings};
+  }
   const IntegratorContext context{scene, accel, 1, filter};
   auto integrator = gpu::make_cuda_pt_integrator(context, PtSettings{}, pipeline);
   Film film(scene.camera.width, scene.camera.height);
   PathCounters counters;
   uint32_t passes = 0;
   for (; passes < 3; ++passes) integrator->render_pass(passes, film, counters);  // warm-up
-  std::vector<double> frame, trace, filter_ms, resolve, download, mrays, extend, shade, shadow;
+  std::vector<double> frame, trace, filter_ms, resolve, download, mrays, extend, shade, shadow, temporal;
   Statistics before;
   integrator->statistics(before);
   uint64_t rays_before = counters.rays;
@@ -74,6 +84,7 @@ GpuRun run_gpu(const Scene& scene, bool filtered, gpu::CudaPtPipeline pipeline, 
     extend.push_back(delta("cuda.extend_s_per_pass"));
     shade.push_back(delta("cuda.shade_s_per_pass"));
     shadow.push_back(delta("cuda.shadow_s_per_pass"));
+    temporal.push_back(delta("cuda_hashed.temporal.s_per_step"));
     mrays.push_back(double(counters.rays - rays_before) / (trace.back() * 1e3));
     rays_before = counters.rays;
     before = std::move(now);
@@ -84,6 +95,7 @@ GpuRun run_gpu(const Scene& scene, bool filtered, gpu::CudaPtPipeline pipeline, 
   r.extend_ms = median(extend);
   r.shade_ms = median(shade);
   r.shadow_ms = median(shadow);
+  r.temporal_ms = median(temporal);
   return r;
 }
 
@@ -131,23 +143,24 @@ int run(int argc, char** argv) {
   out["width"] = kWidth;
   out["height"] = kHeight;
   out["frames"] = frames;
-  std::printf("\n%-12s %-7s %-10s %9s %7s %9s %9s %9s %9s %9s %9s %10s %9s %10s %9s\n", "scene", "filter", "pipeline", "frame ms", "fps",
-              "trace ms", "extend ms", "shade ms", "shadow ms", "filter ms", "resolve ms", "Mrays/s", "rays/path", "CPU2 Mr/s",
-              "GPU/CPU2");
+  std::printf("\n%-12s %-8s %-10s %9s %7s %9s %9s %9s %9s %9s %9s %9s %10s %9s %10s %9s\n", "scene", "filter", "pipeline", "frame ms",
+              "fps", "trace ms", "extend ms", "shade ms", "shadow ms", "filter ms", "temporal", "resolve ms", "Mrays/s", "rays/path",
+              "CPU2 Mr/s", "GPU/CPU2");
   for (const auto& [name, scene] : scenes) {
     const double cpu = cpu_mrays_per_s(scene, 2);
-    for (bool filtered : {false, true})
+    for (BenchFilter f : {BenchFilter::none, BenchFilter::hashed, BenchFilter::temporal})
       for (gpu::CudaPtPipeline pipeline : {gpu::CudaPtPipeline::megakernel, gpu::CudaPtPipeline::wavefront}) {
         const bool wave = pipeline == gpu::CudaPtPipeline::wavefront;
-        const GpuRun r = run_gpu(*scene, filtered, pipeline, frames);
-        std::printf("%-12s %-7s %-10s %9.3f %7.1f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %10.1f %9.2f %10.2f %9.1f\n", name.c_str(),
-                    filtered ? "hashed" : "none", wave ? "wavefront" : "megakernel", r.frame_ms, 1e3 / r.frame_ms, r.trace_ms, r.extend_ms,
-                    r.shade_ms, r.shadow_ms, r.filter_ms, r.resolve_ms, r.mrays_per_s, r.rays_per_path, cpu, r.mrays_per_s / cpu);
-        out["runs"].push_back({{"scene", name}, {"filter", filtered ? "hashed" : "none"}, {"pipeline", wave ? "wavefront" : "megakernel"},
+        if (wave && f == BenchFilter::temporal) continue;  // the same filter calls as the megakernel's
+        const GpuRun r = run_gpu(*scene, f, pipeline, frames);
+        std::printf("%-12s %-8s %-10s %9.3f %7.1f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %10.1f %9.2f %10.2f %9.1f\n", name.c_str(),
+                    filter_name(f), wave ? "wavefront" : "megakernel", r.frame_ms, 1e3 / r.frame_ms, r.trace_ms, r.extend_ms, r.shade_ms,
+                    r.shadow_ms, r.filter_ms, r.temporal_ms, r.resolve_ms, r.mrays_per_s, r.rays_per_path, cpu, r.mrays_per_s / cpu);
+        out["runs"].push_back({{"scene", name}, {"filter", filter_name(f)}, {"pipeline", wave ? "wavefront" : "megakernel"},
                                {"frame_ms", r.frame_ms}, {"fps", 1e3 / r.frame_ms}, {"trace_ms", r.trace_ms}, {"extend_ms", r.extend_ms},
                                {"shade_ms", r.shade_ms}, {"shadow_ms", r.shadow_ms}, {"filter_ms", r.filter_ms},
-                               {"resolve_ms", r.resolve_ms}, {"download_ms", r.download_ms}, {"mrays_per_s", r.mrays_per_s},
-                               {"rays_per_path", r.rays_per_path}, {"cpu_2_threads_mrays_per_s", cpu}});
+                               {"temporal_ms", r.temporal_ms}, {"resolve_ms", r.resolve_ms}, {"download_ms", r.download_ms},
+                               {"mrays_per_s", r.mrays_per_s}, {"rays_per_path", r.rays_per_path}, {"cpu_2_threads_mrays_per_s", cpu}});
       }
   }
   if (!json_path.empty()) std::ofstream(json_path) << out.dump(2) << "\n";

@@ -107,24 +107,23 @@ INSTANTIATE_TEST_SUITE_P(Cases, CudaHashedFilterTest, ::testing::ValuesIn(testin
                          [](const ::testing::TestParamInfo<FilterCase>& i) { return i.param.name; });
 
 // Refused in the constructor, before anything touches the device: runs without a GPU too.
+// (--temporal integrate and ema run on the GPU: cuda_temporal_filter_test.cpp.)
 TEST(CudaHashedFilter, RefusesWhatTheGpuDoesNotDo) {
   const PassBuffer& pb = pass_buffer("cornell-box", 0);
-  HashedFilterSettings temporal;
-  temporal.temporal.mode = TemporalMode::integrate;
-  try {
-    gpu::CudaHashedFilter f(temporal, pb.scene->camera, pb.pixels);
-    ADD_FAILURE() << "--temporal accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("--temporal"), std::string::npos) << e.what();
-  }
+  const auto expect_refused = [&](const HashedFilterSettings& settings, const char* option) {
+    try {
+      gpu::CudaHashedFilter f(settings, pb.scene->camera, pb.pixels);
+      ADD_FAILURE() << option << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+    }
+  };
+  HashedFilterSettings hybrid;
+  hybrid.temporal.mode = TemporalMode::hybrid;
+  expect_refused(hybrid, "--temporal hybrid");
   HashedFilterSettings aov;
   aov.debug_images = true;
-  try {
-    gpu::CudaHashedFilter f(aov, pb.scene->camera, pb.pixels);
-    ADD_FAILURE() << "--aov accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("--aov"), std::string::npos) << e.what();
-  }
+  expect_refused(aov, "--aov");
 }
 
 }  // namespace

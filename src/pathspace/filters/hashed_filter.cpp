@@ -14,6 +14,7 @@
 #include "pathspace/filters/hashed_filter_steps.h"
 #include "pathspace/filters/hashed_filter_limits.h"
 #include "pathspace/filters/local_voxel_cache.h"
+#include "pathspace/filters/temporal_statistics.h"
 #include "pathspace/hashing/voxel_key_batch.h"
 #include "pathspace/parallel/parallel_for.h"
 
@@ -122,13 +123,6 @@ void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) 
   stats_.change_sum += change;
 }
 
-bool HashedFilter::history_of(const VoxelKey& key, VoxelHistory* out) const {
-  const ProbeResult r = table_.view().find(hash_voxel_key(key, settings_.key.normal));
-  if (r.slot < 0) return false;
-  *out = history_->at(uint64_t(r.slot));
-  return out->weight > 0.f;
-}
-
 void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
   const size_t cells = size_t(table_.cells());
   if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
@@ -144,31 +138,11 @@ void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
         if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
         uint8_t unclaimed = 0;
         if (!std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).compare_exchange_strong(unclaimed, 1)) continue;
-        const VoxelKey key = key_for_pass(b, i, pass_hash);
-        // Going coarser: the eight finer voxels' sums and counts add up exactly.
-        double sum[3] = {0.0, 0.0, 0.0}, weight = 0.0;
-        for (int child = 0; child < 8; ++child) {
-          VoxelKey k = key;
-          k.level = int16_t(key.level - 1);
-          for (int a = 0; a < 3; ++a) k.cell[a] = key.cell[a] * 2 + ((child >> a) & 1);
-          VoxelHistory h;
-          if (!history_of(k, &h)) continue;
-          for (int c = 0; c < 3; ++c) sum[c] += double(h.mean[c]) * double(h.weight);
-          weight += double(h.weight);
-        }
         VoxelHistory out;
-        if (weight > 0.0) {
-          for (int c = 0; c < 3; ++c) out.mean[c] = float(sum[c] / weight);
-          out.weight = float(weight);
-          ++finer;
-        } else if (settings_.temporal.finer_weight > 0.f && history_of(coarser_key(key), &out)) {
-          // Going finer: the coarse average, with a share of its weight (docs/animation.md).
-          out.weight *= settings_.temporal.finer_weight;
-          ++coarser;
-        } else {
-          continue;  // claimed, nothing to transfer
-        }
-        out.last_step = uint32_t(stats_.steps);
+        const LevelTransfer kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
+                                                  key_for_pass(b, i, pass_hash), uint32_t(stats_.steps), &out);
+        if (kind == LevelTransfer::none) continue;  // claimed, nothing to transfer
+        (kind == LevelTransfer::from_finer ? finer : coarser) += 1;
         transferred_[size_t(s)] = out;
         std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).store(2);
       }
@@ -200,7 +174,8 @@ void HashedFilter::record_probe_originals(const VertexBuffer& b, uint64_t seed, 
 }
 
 void HashedFilter::reset_stats() {
-  const HashedFilterStats fresh{.cells = stats_.cells, .table_bytes = stats_.table_bytes};
+  // The step count is the histories' clock (recency, sec. 3.4.3), not only a statistic.
+  const HashedFilterStats fresh{.cells = stats_.cells, .table_bytes = stats_.table_bytes, .steps = stats_.steps};
   stats_ = fresh;
 }
 
@@ -501,16 +476,11 @@ void HashedFilter::statistics(Statistics& out) const {
   out.counter("hashed.probe_limit_fallbacks_last", s.probe_failures_last, "last pass");
   out.counter("hashed.overflow_settled_passes", s.settled_windows, "passes whose full probe windows were settled by fingerprint");
   if (!history_) return;
-  out.counter("hashed.temporal.steps", s.steps, "passes whose table carried to the next (sec. 3.4)");
-  out.counter("hashed.temporal.evicted", s.evicted, "cells evicted between steps (sec. 3.4.3)");
-  out.counter("hashed.temporal.evicted_last", s.evicted_last, "last step");
-  out.value("hashed.temporal.mean_alpha", s.blended ? s.alpha_sum / double(s.blended) : 0.0,
-            "weight of the history in the vertices' estimates (sec. 3.4.1)");
-  out.value("hashed.temporal.mean_alpha_last", s.mean_alpha_last, "last step");
-  out.seconds("hashed.temporal.s_per_step", s.steps ? s.temporal_ms * 1e-3 / double(s.steps) : 0.0,
-              "folding, priorities and eviction");
-  out.counter("hashed.temporal.from_finer", s.from_finer, "new cells that took their finer voxels' sums (sec. 3.4.2)");
-  out.counter("hashed.temporal.from_coarser", s.from_coarser, "new cells that took their coarser voxel's average (sec. 3.4.2)");
+  report_temporal_statistics("hashed.",
+                             {.steps = s.steps, .evicted = s.evicted, .evicted_last = s.evicted_last, .blended = s.blended,
+                              .from_finer = s.from_finer, .from_coarser = s.from_coarser, .alpha_sum = s.alpha_sum,
+                              .mean_alpha_last = s.mean_alpha_last, .temporal_ms = s.temporal_ms},
+                             "folding, priorities and eviction", out);
   if (settings_.temporal.mode != TemporalMode::hybrid) return;
   out.counter("hashed.temporal.probes", s.probes, "previous-frame paths traced again (hybrid)");
   out.counter("hashed.temporal.probes_in_table", s.probes_found, "of those, in a voxel of the table");

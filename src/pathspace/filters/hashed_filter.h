@@ -51,13 +51,8 @@ class HashedFilter final : public PathSpaceFilter {
   HashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
 
   const char* name() const override { return "hashed"; }
-  std::string distribution_limit() const override {
-    return history_ ? "--temporal carries the voxel histories from pass to pass" : std::string();
-  }
-  // Frames in chunks (docs/distributed.md): the voxel histories start from the 8 frames before a
-  // chunk, the cycle in which the hybrid's probes (1/8 of the pixels a frame) visit every pixel
-  // once; integration weights are then N/(N+1) >= 8/9. Without --temporal every pass starts afresh.
-  static constexpr uint32_t kTemporalWarmUpFrames = 8;
+  std::string distribution_limit() const override { return history_ ? kTemporalDistributionLimit : std::string(); }
+  // Without --temporal every pass starts afresh.
   uint32_t frame_warm_up() const override { return history_ ? kTemporalWarmUpFrames : 0; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void statistics(Statistics& out) const override;
@@ -94,7 +89,6 @@ class HashedFilter final : public PathSpaceFilter {
   void settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
   // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
   void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
-  bool history_of(const VoxelKey& key, VoxelHistory* out) const;
 
   HashedFilterSettings settings_;
   int width_, height_;

@@ -12,23 +12,18 @@
 //    paper decides this with one atomicMin while inserting; here it is decided between steps, one
 //    probe window at a time, which keeps every frame independent of thread timing (bit-identical
 //    images for any thread count).
+// The per-cell arithmetic is temporal_steps.h, which the GPU filter runs too.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "pathspace/filters/temporal_settings.h"
+#include "pathspace/filters/temporal_steps.h"
 #include "pathspace/hashing/voxel_hash_table.h"
 #include "pathspace/math/rgb.h"
 
 namespace pathspace {
-
-struct VoxelHistory {
-  float mean[3] = {0.f, 0.f, 0.f};
-  float weight = 0.f;      // N_old: vertices behind the mean (0: no history)
-  uint32_t last_step = 0;  // the step that last used the cell
-  float change = 0.f;      // hybrid: the last relative change measured by re-traced paths
-};
 
 // Hybrid blending: what the re-traced paths of one step found in a cell.
 struct VoxelChange {
@@ -69,7 +64,7 @@ class TemporalHistory {
   TemporalStepStats end_step(const VoxelHashTableView& table, uint32_t step);
 
   // The priority byte of a cell: recency (15 - steps since use, at least 0) above min(15, log2 weight).
-  static uint32_t priority(const VoxelHistory& h, uint32_t step);
+  static uint32_t priority(const VoxelHistory& h, uint32_t step) { return temporal_priority(h, step); }
 
  private:
   TemporalSettings settings_;

@@ -42,4 +42,11 @@ struct TemporalSettings {
   bool enabled() const { return mode != TemporalMode::off; }
 };
 
+// Frames in chunks (docs/distributed.md): the voxel histories start from the 8 frames before a
+// chunk, the cycle in which the hybrid's probes (1/8 of the pixels a frame) visit every pixel once;
+// integration weights are then N/(N+1) >= 8/9.
+inline constexpr uint32_t kTemporalWarmUpFrames = 8;
+// Why a pass of a filter with --temporal cannot be split between processes.
+inline constexpr const char* kTemporalDistributionLimit = "--temporal carries the voxel histories from pass to pass";
+
 }  // namespace pathspace

@@ -30,6 +30,12 @@ enum Counter : int {
   kLost,
   kWon,
   kOccupied,
+  kBlended,      // --temporal: vertices whose estimate blended a history (sec. 3.4.1)
+  kAlphaSum,     // their alphas, fixed point 2^-32 (added per block, not through the 32-bit block counters)
+  kFromFiner,    // new cells that took their finer voxels' history (sec. 3.4.2)
+  kFromCoarser,  // new cells that took their coarser voxel's history
+  kFolded,       // cells used in the step (sec. 3.4.3)
+  kEvicted,      // cells evicted after the step
   kCounters
 };
 
@@ -138,21 +144,101 @@ __global__ void accumulate_kernel(HashedStepSettings s, VertexBufferView b, uint
   block_counters_flush(block, counters);
 }
 
-// Sec. 3.3: each valid slot's filtered contribution.
+// Sec. 3.3: each valid slot's filtered contribution; with a history (--temporal, which keeps one
+// level without neighbours) the cell's average blended with it as HashedFilter::lookup does (3.4.1).
 __global__ void lookup_kernel(HashedStepSettings s, VertexBufferView b, uint64_t pass_hash, VoxelHashTableView table,
                               VoxelHashTableView coarse, const int32_t* slots, const int32_t* coarse_slots,
-                              Rgb* filtered, unsigned long long* counters) {
+                              TemporalSettings temporal, const VoxelHistory* history, Rgb* filtered,
+                              unsigned long long* counters) {
   __shared__ unsigned block[kCounters];
+  __shared__ unsigned long long block_alpha;
+  if (threadIdx.x == 0) block_alpha = 0;
   block_counters_init(block);
   const size_t i = thread_index();
   const bool valid = valid_slot(b, i);
   const unsigned mask = __ballot_sync(kFullWarp, valid);
+  unsigned long long alpha_fixed = 0;
+  bool blended = false;
   if (valid) {
     LookupCounters c;
-    filtered[i] = lookup_vertex(s, b, i, pass_hash, table, coarse, slots[i], s.multi_level ? coarse_slots[i] : kSlotProbeFailed, &c);
+    const int32_t slot = slots[i];
+    if (history && slot >= 0) {
+      const VoxelCell& cell = table.cells[slot];
+      float alpha = 0.f;
+      Rgb average = temporal_blend(temporal, history[slot], cell, 0.f, &alpha);
+      blended = true;
+      alpha_fixed = (unsigned long long)(double(alpha) * 4294967296.0);
+      if (cell.count < s.min_count) average = low_count_average(s, table, coarse, cell, average, VoxelKey{}, kSlotProbeFailed, &c);
+      filtered[i] = average;
+    } else {
+      filtered[i] = lookup_vertex(s, b, i, pass_hash, table, coarse, slot, s.multi_level ? coarse_slots[i] : kSlotProbeFailed, &c);
+    }
     warp_add(mask, &block[kLowCount], unsigned(c.low_count));
     warp_add(mask, &block[kNeighbourLookups], unsigned(c.neighbour_lookups));
     warp_add(mask, &block[kMultiLevelUsed], unsigned(c.multi_level_used));
+    warp_add(mask, &block[kBlended], blended ? 1u : 0u);
+  }
+  if (history) {  // every thread of the warp takes part (invalid ones add 0)
+    for (int offset = 16; offset > 0; offset >>= 1) alpha_fixed += __shfl_down_sync(kFullWarp, alpha_fixed, offset);
+    if (lane_id() == 0 && alpha_fixed) atomicAdd(&block_alpha, alpha_fixed);
+  }
+  block_counters_flush(block, counters);  // begins with a barrier: block_alpha is complete after it
+  if (threadIdx.x == 0 && block_alpha) atomicAdd(&counters[(blockIdx.x % kCopies) * kCounters + kAlphaSum], block_alpha);
+}
+
+// Sec. 3.4.2, phase 1 (HashedFilter::transfer_levels): the first vertex of each cell new to the
+// table (no history) computes its transfer from the histories as they were; every vertex of a cell
+// has the same key, so which one does it does not change the result.
+__global__ void transfer_claim_kernel(HashedStepSettings s, TemporalSettings temporal, VertexBufferView b, uint64_t pass_hash,
+                                      VoxelHashTableView table, const int32_t* slots, const VoxelHistory* history,
+                                      uint32_t step, uint32_t* claimed, VoxelHistory* transferred,
+                                      unsigned long long* counters) {
+  __shared__ unsigned block[kCounters];
+  block_counters_init(block);
+  const size_t i = thread_index();
+  LevelTransfer kind = LevelTransfer::none;
+  if (valid_slot(b, i)) {
+    const int32_t cell = slots[i];
+    if (cell >= 0 && !(history[cell].weight > 0.f) && atomicCAS(&claimed[cell], 0u, 1u) == 0u) {
+      VoxelHistory out;
+      kind = level_transfer(temporal, table, history, s.key.normal, key_for_pass(s.key, b, i, pass_hash), step, &out);
+      if (kind != LevelTransfer::none) {
+        transferred[cell] = out;
+        claimed[cell] = 2u;
+      }
+    }
+  }
+  if (kind == LevelTransfer::from_finer) atomicAdd(&block[kFromFiner], 1u);
+  if (kind == LevelTransfer::from_coarser) atomicAdd(&block[kFromCoarser], 1u);
+  block_counters_flush(block, counters);
+}
+
+// Phase 2: the transfers take effect; the claims are cleared for the next step.
+__global__ void transfer_apply_kernel(uint64_t cells, uint32_t* claimed, const VoxelHistory* transferred, VoxelHistory* history) {
+  const size_t c = thread_index();
+  if (c >= cells) return;
+  if (claimed[c] == 2u) history[c] = transferred[c];
+  claimed[c] = 0u;
+}
+
+// Without hybrid probes a cell's change is its history's (TemporalHistory::change).
+struct HistoryChange {
+  const VoxelHistory* history;
+  __device__ float operator()(uint64_t c) const { return history[c].change; }
+};
+
+// Sec. 3.4.3 after the step's lookups: one thread per probe window folds, prioritises and evicts
+// (TemporalHistory::end_step).
+__global__ void end_step_kernel(TemporalSettings temporal, uint32_t keep, VoxelHashTableView table, VoxelHistory* history,
+                                uint64_t windows, uint32_t step, unsigned long long* counters) {
+  __shared__ unsigned block[kCounters];
+  block_counters_init(block);
+  const size_t w = thread_index();
+  if (w < windows) {
+    const TemporalWindowCounts n =
+        fold_and_evict_window(temporal, keep, table, history, uint64_t(w) * kFingerprintsPerLine, step, HistoryChange{history});
+    if (n.folded) atomicAdd(&block[kFolded], n.folded);
+    if (n.evicted) atomicAdd(&block[kEvicted], n.evicted);
   }
   block_counters_flush(block, counters);
 }
@@ -225,7 +311,7 @@ unsigned blocks_for(size_t n) { return unsigned((n + kBlock - 1) / kBlock); }
 
 // Events of one pass, released with it.
 struct PassEvents {
-  cudaEvent_t e[6] = {};
+  cudaEvent_t e[7] = {};
   PassEvents() {
     for (cudaEvent_t& x : e) PS_CUDA_CHECK(cudaEventCreate(&x));
   }
@@ -250,12 +336,16 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, const P
 CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float pixel_angle, size_t pixels)
     : settings_(settings) {
   check_hashed_filter_settings(settings);  // HashedFilter's checks
-  if (settings.temporal.enabled())
-    throw Error("the GPU hashed filter keeps no table across passes: --temporal is not supported with --device cuda");
+  if (settings.temporal.mode == TemporalMode::hybrid)
+    throw Error("--temporal hybrid re-traces the previous frame's paths, which the GPU path tracer does not do: "
+                "use --temporal integrate or ema with --device cuda");
+  if (settings.temporal.enabled() && (settings.multi_level || settings.neighbour_search))  // as HashedFilter
+    throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
   if (settings.debug_images)
     throw Error("the GPU hashed filter writes no debug images: --aov is not supported with --device cuda");
   settings_.key.pixel_angle = pixel_angle;  // as HashedFilter: sec. 4, s times the projected pixel size
   steps_ = pathspace::step_settings(settings_);
+  pixels_ = pixels;
   cells_ = hashed_filter_table_cells(settings_, pixels);  // HashedFilter's table size
   fingerprints_.resize(cells_);
   cells_buffer_.resize(cells_);
@@ -266,12 +356,31 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float p
   counters_.resize(size_t(kCounters) * kCopies);
   stats_.cells = cells_;
   stats_.table_bytes = size_t(cells_) * (sizeof(uint32_t) + sizeof(VoxelCell)) * (settings_.multi_level ? 2 : 1);
+  if (settings_.temporal.enabled()) {
+    // Sec. 3.4: the keys stay from pass to pass (the table starts empty), beside a history per cell.
+    fingerprints_.fill_bytes(0);
+    history_.resize(cells_);
+    history_.fill_bytes(0);
+    transferred_.resize(cells_);
+    transfer_claimed_.resize(cells_);
+    transfer_claimed_.fill_bytes(0);
+    stats_.temporal = true;
+    stats_.table_bytes += history_.bytes() + transferred_.bytes() + transfer_claimed_.bytes();
+  }
+}
+
+void CudaHashedFilter::begin_frame(const PerspectiveCamera& camera) {
+  if (size_t(camera.width) * size_t(camera.height) != pixels_) throw Error("the hashed filter's frames must keep one image size");
+  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);  // the field of view may change
+  steps_ = pathspace::step_settings(settings_);
 }
 
 void CudaHashedFilter::reset_stats() {
   CudaHashedFilterStats fresh;
   fresh.cells = stats_.cells;
   fresh.table_bytes = stats_.table_bytes;
+  fresh.temporal = stats_.temporal;
+  fresh.steps = stats_.steps;  // the histories' clock (recency, sec. 3.4.3), not only a statistic
   stats_ = fresh;
 }
 
@@ -281,6 +390,7 @@ VoxelHashTableView CudaHashedFilter::table() const {
   v.cells = const_cast<VoxelCell*>(cells_buffer_.data());
   v.mask = cells_ - 1;
   v.max_probes = settings_.max_probes;
+  if (settings_.temporal.enabled()) v.key_mask = kKeyBitsMask;  // priorities in the top bits (sec. 3.4.3)
   return v;
 }
 
@@ -317,9 +427,11 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   unsigned long long* counters = counters_.data();
   PassEvents ev;
 
-  // Clear (one memset per array: the table is rebuilt every pass).
+  const bool temporal = settings_.temporal.enabled();
+  // Clear (one memset per array: the table is rebuilt every pass; with --temporal the keys stay, so
+  // that they find their history).
   PS_CUDA_CHECK(cudaEventRecord(ev.e[0], stream));
-  PS_CUDA_CHECK(cudaMemsetAsync(fingerprints_.data(), 0, fingerprints_.bytes(), stream));
+  if (!temporal) PS_CUDA_CHECK(cudaMemsetAsync(fingerprints_.data(), 0, fingerprints_.bytes(), stream));
   PS_CUDA_CHECK(cudaMemsetAsync(cells_buffer_.data(), 0, cells_buffer_.bytes(), stream));
   if (settings_.multi_level) {
     PS_CUDA_CHECK(cudaMemsetAsync(coarse_fingerprints_.data(), 0, coarse_fingerprints_.bytes(), stream));
@@ -340,15 +452,20 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   const bool settle = failures > 0 && settings_.max_probes <= kFingerprintsPerLine;
   if (settle) settle_overflows(b, pass_hash, stream);
   PS_CUDA_CHECK(cudaEventRecord(ev.e[3], stream));
+  if (temporal && settings_.temporal.level_transfer && slots > 0) transfer_levels(b, pass_hash, stream);
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[4], stream));
 
   // Lookup.
   if (slots > 0) {
     lookup_kernel<<<blocks_for(slots), kBlock, 0, stream>>>(steps_, b, pass_hash, table, coarse, slots_.data(),
                                                             settings_.multi_level ? coarse_slots_.data() : nullptr,
+                                                            settings_.temporal, temporal ? history_.data() : nullptr,
                                                             device_filtered, counters);
     PS_CUDA_CHECK_LAUNCH("lookup_kernel");
   }
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[4], stream));
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[5], stream));
+  if (temporal) end_step(stream);
+  PS_CUDA_CHECK(cudaEventRecord(ev.e[6], stream));
   occupancy_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(fingerprints_.data(), cells_, counters);
   PS_CUDA_CHECK_LAUNCH("occupancy_kernel");
   const std::vector<unsigned long long> c = read_counters(stream);
@@ -368,11 +485,70 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   // Without settling, the accumulation ends at its kernel (e[2]); e[3] then follows a host wait.
   stats_.settle_ms_last = settle ? PassEvents::ms(ev.e[2], ev.e[3]) : 0.0;
   stats_.accumulate_ms_last = PassEvents::ms(ev.e[1], ev.e[2]) + stats_.settle_ms_last;
-  stats_.lookup_ms_last = PassEvents::ms(ev.e[3], ev.e[4]);
+  stats_.lookup_ms_last = PassEvents::ms(ev.e[4], ev.e[5]);
   stats_.clear_ms += stats_.clear_ms_last;
   stats_.accumulate_ms += stats_.accumulate_ms_last;
   stats_.settle_ms += stats_.settle_ms_last;
   stats_.lookup_ms += stats_.lookup_ms_last;
+  if (!temporal) return;
+  stats_.steps += 1;
+  stats_.blended += c[kBlended];
+  const double alpha = double(c[kAlphaSum]) / 4294967296.0;
+  stats_.alpha_sum += alpha;
+  stats_.mean_alpha_last = c[kBlended] ? alpha / double(c[kBlended]) : 0.0;
+  stats_.from_finer += c[kFromFiner];
+  stats_.from_coarser += c[kFromCoarser];
+  stats_.folded_last = c[kFolded];
+  stats_.evicted += c[kEvicted];
+  stats_.evicted_last = c[kEvicted];
+  stats_.temporal_ms_last = PassEvents::ms(ev.e[3], ev.e[4]) + PassEvents::ms(ev.e[5], ev.e[6]);
+  stats_.temporal_ms += stats_.temporal_ms_last;
+}
+
+// Sec. 3.4.2: new cells take the history of their finer or coarser voxels (two kernels: every claim
+// reads the histories as they were before any transfer is written).
+void CudaHashedFilter::transfer_levels(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream) {
+  transfer_claim_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(steps_, settings_.temporal, b, pass_hash, table(), slots_.data(),
+                                                                       history_.data(), uint32_t(stats_.steps),
+                                                                       transfer_claimed_.data(), transferred_.data(), counters_.data());
+  PS_CUDA_CHECK_LAUNCH("transfer_claim_kernel");
+  transfer_apply_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(cells_, transfer_claimed_.data(), transferred_.data(), history_.data());
+  PS_CUDA_CHECK_LAUNCH("transfer_apply_kernel");
+}
+
+// Sec. 3.4.3: folding, priorities and eviction, one probe window per thread; the step counts from 1.
+void CudaHashedFilter::end_step(cudaStream_t stream) {
+  const uint64_t windows = cells_ / kFingerprintsPerLine;
+  end_step_kernel<<<blocks_for(windows), kBlock, 0, stream>>>(settings_.temporal, temporal_window_keep(settings_.temporal), table(),
+                                                              history_.data(), windows, uint32_t(stats_.steps + 1), counters_.data());
+  PS_CUDA_CHECK_LAUNCH("end_step_kernel");
+}
+
+void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
+  host_buffer_.upload(buffer);
+  const VertexBufferView view = host_buffer_.view();
+  host_filtered_.resize(view.slots());
+  filter(view, seed, pass, host_filtered_.data());
+  filtered->resize(view.slots());
+  host_filtered_.download(filtered->data(), view.slots());
+}
+
+void CudaHashedFilter::save_state(StateWriter& out) const {
+  out.put("cuda_hashed.stats", stats_);
+  if (!settings_.temporal.enabled()) return;
+  out.put_vector("hashed.temporal.fingerprints", fingerprints_.download());
+  out.put_vector("hashed.temporal.history", history_.download());
+}
+
+void CudaHashedFilter::load_state(StateReader& in) {
+  in.get("cuda_hashed.stats", &stats_);
+  if (!settings_.temporal.enabled()) return;
+  std::vector<uint32_t> fingerprints;
+  std::vector<VoxelHistory> history;
+  in.get_vector("hashed.temporal.fingerprints", &fingerprints, size_t(cells_));
+  in.get_vector("hashed.temporal.history", &history, size_t(cells_));
+  fingerprints_.upload(fingerprints);
+  history_.upload(history);
 }
 
 // hashed_filter_overflow.cpp on the GPU's table: the failed vertices are listed on the device, the
@@ -389,11 +565,15 @@ void CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass
   PS_CUDA_CHECK(cudaStreamSynchronize(stream));
   const std::vector<FailedVertex> failed = failed_device.download();
   const std::vector<uint32_t> fingerprints = fingerprints_.download();
+  // As HashedFilter: a cell is new this pass when the table is cleared every pass, or when it has no
+  // history yet (--temporal).
+  const std::vector<VoxelHistory> history = history_.download();
 
   std::map<uint64_t, std::vector<uint32_t>> failed_keys;
   for (const FailedVertex& f : failed) failed_keys[f.window].push_back(f.key);
-  const OverflowDecision d = decide_overflows(std::move(failed_keys), table.key_mask,
-                                              [&](uint64_t c) { return fingerprints[c]; }, [](uint64_t) { return true; });
+  const OverflowDecision d = decide_overflows(
+      std::move(failed_keys), table.key_mask, [&](uint64_t c) { return fingerprints[c]; },
+      [&](uint64_t c) { return history.empty() || !(history[c].weight > 0.f); });
   if (d.assigned.empty()) return;  // as the CPU: nothing changes hands, the pass is not counted as settled
 
   std::vector<unsigned long long> assigned_cells;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "pathspace/filters/temporal_statistics.h"
 #include "pathspace/stats/statistics.h"
 
 #if PATHSPACE_HAS_CUDA
@@ -37,6 +38,13 @@ void report_statistics(const CudaHashedFilterStats& s, Statistics& out) {
   out.seconds("cuda_hashed.lookup_s_per_pass", s.lookup_ms * 1e-3 / passes);
   out.value("cuda_hashed.accumulate_ns_per_vertex", s.vertices ? s.accumulate_ms * 1e6 / vertices : 0.0);
   out.value("cuda_hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
+  if (!s.temporal) return;
+  report_temporal_statistics("cuda_hashed.",
+                             {.steps = s.steps, .evicted = s.evicted, .evicted_last = s.evicted_last, .blended = s.blended,
+                              .from_finer = s.from_finer, .from_coarser = s.from_coarser, .alpha_sum = s.alpha_sum,
+                              .mean_alpha_last = s.mean_alpha_last, .temporal_ms = s.temporal_ms},
+                             "level transfer, folding, priorities and eviction (cudaEvents)", out);
+  out.counter("cuda_hashed.temporal.folded_last", s.folded_last, "cells used in the last step");
 }
 
 #if PATHSPACE_HAS_CUDA

@@ -26,6 +26,12 @@ struct CudaHashedFilterStats {
   double clear_ms = 0, accumulate_ms = 0, settle_ms = 0, lookup_ms = 0;
   double clear_ms_last = 0, accumulate_ms_last = 0, settle_ms_last = 0, lookup_ms_last = 0;
 
+  // --temporal (sec. 3.4): summed over steps (passes), and the last step's.
+  bool temporal = false;
+  uint64_t steps = 0, blended = 0, from_finer = 0, from_coarser = 0, evicted = 0, evicted_last = 0, folded_last = 0;
+  double alpha_sum = 0, mean_alpha_last = 0;
+  double temporal_ms = 0, temporal_ms_last = 0;  // level transfer, folding, priorities and eviction
+
   double mean_probes() const { return insertions ? double(probes_total) / double(insertions) : 0.0; }
 };
 

@@ -2,6 +2,7 @@
 
 #include <cuda_runtime.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,7 +90,13 @@ class CudaPtIntegrator final : public Integrator {
     if (ctx.filter.active()) {
       // check_device allows only the filters the device entry names (hashed).
       const HashedFilterSettings fs = settings_cast<HashedFilterSettings>(ctx.filter.settings, ctx.filter.name);
-      filter_.emplace(fs, ctx.scene.camera, size_t(pixels_));
+      // An animation's next frame takes the previous frame's filter over with its table (sec. 3.4).
+      filter_ = std::dynamic_pointer_cast<CudaHashedFilter>(ctx.carried_filter);
+      if (filter_) {
+        filter_->begin_frame(ctx.scene.camera);
+      } else {
+        filter_ = std::make_shared<CudaHashedFilter>(fs, ctx.scene.camera, size_t(pixels_));
+      }
       buffer_.resize(pixels_, records_per_path(settings_.selection));
       filtered_.resize(size_t(pixels_) * size_t(records_per_path(settings_.selection)));
     } else {
@@ -102,6 +109,16 @@ class CudaPtIntegrator final : public Integrator {
   }
 
   const char* name() const override { return "pt"; }
+  std::shared_ptr<PathSpaceFilter> carried_filter() const override { return filter_; }
+  uint32_t frame_warm_up() const override { return filter_ ? filter_->frame_warm_up() : 0; }
+  std::string distribution_limit() const override { return filter_ ? filter_->distribution_limit() : std::string(); }
+  // What the next pass needs (--temporal: the filter's keys and histories), as PtIntegrator.
+  void save_state(StateWriter& out) const override {
+    if (filter_) filter_->save_state(out);
+  }
+  void load_state(StateReader& in) override {
+    if (filter_) filter_->load_state(in);
+  }
 
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override {
     PassParams p{scene_.view(), BvhTracer{scene_.view(), bvh_.view()}, settings_, seed_, pass, pixels_};
@@ -175,7 +192,7 @@ class CudaPtIntegrator final : public Integrator {
   std::string device_name_;
   DeviceScene scene_;
   DeviceBvh bvh_;
-  std::optional<CudaHashedFilter> filter_;
+  std::shared_ptr<CudaHashedFilter> filter_;
   std::optional<WavefrontPathTracer> wavefront_;
   WavefrontStageTimes stages_;
   DeviceVertexBuffer buffer_;
