@@ -1,4 +1,4 @@
-// pbrt-v4's "power" and "illuminance" light parameters (io/pbrt/pbrt_scene_builder.cpp): a point
+// pbrt-v4's "power" and "illuminance" light parameters (io/pbrt/pbrt_builder_lights.cpp, pbrt_builder_shapes.cpp): a point
 // light of power P has intensity I P / (4 pi); a spot divides by its cone's solid angle with the
 // smoothstep ramp counted at half; an area light's every pbrt shape (each triangle of a triangle
 // mesh, a whole sphere or disk) emits P, cosine-distributed; a projection light's image is scaled to

@@ -1,4 +1,4 @@
-// pbrt-v4 motion (io/pbrt/pbrt_scene_builder.cpp, pbrt_animated_transform.h): ActiveTransform
+// pbrt-v4 motion (io/pbrt/pbrt_builder.cpp and its lights and shapes, pbrt_animated_transform.h): ActiveTransform
 // StartTime / EndTime / All, TransformTimes and the camera's shutter give a shape its vertices at
 // shutter open (Scene::positions) and close (Scene::positions_end); transforms in between are
 // interpolated as pbrt-v4's AnimatedTransform does (translation and stretch linearly, rotation by

@@ -1,7 +1,8 @@
-// pbrt-v4 scene builder: executes the statement stream of pbrt_parser.h against a graphics state
-// (current transform, material, area light, attribute stack) and fills a pathspace Scene. Film,
-// Camera, Sampler and Integrator set resolution, camera, default spp and path length (pbrt's
-// maxdepth counts bounces; pathspace counts segments, so max_path_segments = maxdepth + 1).
+// pbrt-v4 scene loading: the statement stream of pbrt_parser.h, executed by the scene builder
+// (pbrt_builder.h) against a graphics state (current transform, material, area light, attribute
+// stack), fills a pathspace Scene. Film, Camera, Sampler and Integrator set resolution, camera,
+// default spp and path length (pbrt's maxdepth counts bounces; pathspace counts segments, so
+// max_path_segments = maxdepth + 1).
 #pragma once
 
 #include <string>
