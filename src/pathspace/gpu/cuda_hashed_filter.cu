@@ -7,79 +7,13 @@
 
 #include "pathspace/filters/hashed_filter_limits.h"
 #include "pathspace/filters/overflow_settling.h"
+#include "pathspace/gpu/cuda_filter_kernels.h"
 
 namespace pathspace::gpu {
 
 namespace {
 
-constexpr int kBlock = 256;
-constexpr unsigned kFullWarp = 0xffffffffu;
-
-// Device counters of one pass, summed per warp before one atomic each.
-enum Counter : int {
-  kVertices,
-  kNotAccumulated,
-  kInsertions,
-  kProbes,
-  kProbesMax,
-  kFailures,
-  kLowCount,
-  kNeighbourLookups,
-  kMultiLevelUsed,
-  kFailedListed,
-  kLost,
-  kWon,
-  kOccupied,
-  kBlended,      // --temporal: vertices whose estimate blended a history (sec. 3.4.1)
-  kAlphaSum,     // their alphas, fixed point 2^-32 (added per block, not through the 32-bit block counters)
-  kFromFiner,    // new cells that took their finer voxels' history (sec. 3.4.2)
-  kFromCoarser,  // new cells that took their coarser voxel's history
-  kFolded,       // cells used in the step (sec. 3.4.3)
-  kEvicted,      // cells evicted after the step
-  kCounters
-};
-
-// Per-pass counters are summed per warp, then per block in shared memory, and each block adds its
-// sums to one of kCopies copies in global memory: one atomic per warp on a single global address
-// serialised there and cost more than the filter itself (tens of thousands of warps per pass).
-constexpr int kCopies = 16;
-
-__device__ int lane_id() { return int(threadIdx.x & 31u); }
-
-// Zeroes the block's counters; every thread of the block calls it.
-__device__ void block_counters_init(unsigned* block) {
-  for (int k = int(threadIdx.x); k < kCounters; k += int(blockDim.x)) block[k] = 0;
-  __syncthreads();
-}
-// Adds the block's counters to the global copies; every thread of the block calls it.
-__device__ void block_counters_flush(const unsigned* block, unsigned long long* counters) {
-  __syncthreads();
-  for (int k = int(threadIdx.x); k < kCounters; k += int(blockDim.x)) {
-    if (block[k] == 0) continue;
-    unsigned long long* c = &counters[(blockIdx.x % kCopies) * kCounters + k];
-    if (k == kProbesMax) {
-      atomicMax(c, (unsigned long long)block[k]);
-    } else {
-      atomicAdd(c, (unsigned long long)block[k]);
-    }
-  }
-}
-// Adds the values of the lanes of `mask` to the block's counter (the lowest lane of mask adds).
-__device__ void warp_add(unsigned mask, unsigned* counter, unsigned value) {
-  const unsigned total = __reduce_add_sync(mask, value);
-  if (lane_id() == __ffs(mask) - 1 && total != 0) atomicAdd(counter, total);
-}
-__device__ void warp_max(unsigned mask, unsigned* counter, unsigned value) {
-  const unsigned m = __reduce_max_sync(mask, value);
-  if (lane_id() == __ffs(mask) - 1 && m != 0) atomicMax(counter, m);
-}
-
-__device__ size_t thread_index() { return size_t(blockIdx.x) * blockDim.x + threadIdx.x; }
-
-// Whether slot i holds a record of its path.
-__device__ bool valid_slot(const VertexBufferView& b, size_t i) {
-  return i < b.slots() && int(i % size_t(b.records_per_path)) < int(b.count[i / size_t(b.records_per_path)]);
-}
+using namespace filter_kernels;
 
 // Warp aggregation (sec. 4: neighbouring pixels' primary hits mostly share a voxel): the lanes of
 // `mask` with the same hash form a group; its leader inserts once and adds the group's summed
@@ -186,63 +120,6 @@ __global__ void lookup_kernel(HashedStepSettings s, VertexBufferView b, uint64_t
   if (threadIdx.x == 0 && block_alpha) atomicAdd(&counters[(blockIdx.x % kCopies) * kCounters + kAlphaSum], block_alpha);
 }
 
-// Sec. 3.4.2, phase 1 (HashedFilter::transfer_levels): the first vertex of each cell new to the
-// table (no history) computes its transfer from the histories as they were; every vertex of a cell
-// has the same key, so which one does it does not change the result.
-__global__ void transfer_claim_kernel(HashedStepSettings s, TemporalSettings temporal, VertexBufferView b, uint64_t pass_hash,
-                                      VoxelHashTableView table, const int32_t* slots, const VoxelHistory* history,
-                                      uint32_t step, uint32_t* claimed, VoxelHistory* transferred,
-                                      unsigned long long* counters) {
-  __shared__ unsigned block[kCounters];
-  block_counters_init(block);
-  const size_t i = thread_index();
-  LevelTransfer kind = LevelTransfer::none;
-  if (valid_slot(b, i)) {
-    const int32_t cell = slots[i];
-    if (cell >= 0 && !(history[cell].weight > 0.f) && atomicCAS(&claimed[cell], 0u, 1u) == 0u) {
-      VoxelHistory out;
-      kind = level_transfer(temporal, table, history, s.key.normal, key_for_pass(s.key, b, i, pass_hash), step, &out);
-      if (kind != LevelTransfer::none) {
-        transferred[cell] = out;
-        claimed[cell] = 2u;
-      }
-    }
-  }
-  if (kind == LevelTransfer::from_finer) atomicAdd(&block[kFromFiner], 1u);
-  if (kind == LevelTransfer::from_coarser) atomicAdd(&block[kFromCoarser], 1u);
-  block_counters_flush(block, counters);
-}
-
-// Phase 2: the transfers take effect; the claims are cleared for the next step.
-__global__ void transfer_apply_kernel(uint64_t cells, uint32_t* claimed, const VoxelHistory* transferred, VoxelHistory* history) {
-  const size_t c = thread_index();
-  if (c >= cells) return;
-  if (claimed[c] == 2u) history[c] = transferred[c];
-  claimed[c] = 0u;
-}
-
-// Without hybrid probes a cell's change is its history's (TemporalHistory::change).
-struct HistoryChange {
-  const VoxelHistory* history;
-  __device__ float operator()(uint64_t c) const { return history[c].change; }
-};
-
-// Sec. 3.4.3 after the step's lookups: one thread per probe window folds, prioritises and evicts
-// (TemporalHistory::end_step).
-__global__ void end_step_kernel(TemporalSettings temporal, uint32_t keep, VoxelHashTableView table, VoxelHistory* history,
-                                uint64_t windows, uint32_t step, unsigned long long* counters) {
-  __shared__ unsigned block[kCounters];
-  block_counters_init(block);
-  const size_t w = thread_index();
-  if (w < windows) {
-    const TemporalWindowCounts n =
-        fold_and_evict_window(temporal, keep, table, history, uint64_t(w) * kFingerprintsPerLine, step, HistoryChange{history});
-    if (n.folded) atomicAdd(&block[kFolded], n.folded);
-    if (n.evicted) atomicAdd(&block[kEvicted], n.evicted);
-  }
-  block_counters_flush(block, counters);
-}
-
 __global__ void occupancy_kernel(const uint32_t* fingerprints, uint64_t cells, unsigned long long* counters) {
   __shared__ unsigned block[kCounters];
   block_counters_init(block);
@@ -306,7 +183,6 @@ __global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table,
   atomicAdd(&counters[kWon], 1ull);
 }
 
-unsigned blocks_for(size_t n) { return unsigned((n + kBlock - 1) / kBlock); }
 
 
 // Events of one pass, released with it.
@@ -505,25 +381,6 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   stats_.temporal_ms += stats_.temporal_ms_last;
 }
 
-// Sec. 3.4.2: new cells take the history of their finer or coarser voxels (two kernels: every claim
-// reads the histories as they were before any transfer is written).
-void CudaHashedFilter::transfer_levels(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream) {
-  transfer_claim_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(steps_, settings_.temporal, b, pass_hash, table(), slots_.data(),
-                                                                       history_.data(), uint32_t(stats_.steps),
-                                                                       transfer_claimed_.data(), transferred_.data(), counters_.data());
-  PS_CUDA_CHECK_LAUNCH("transfer_claim_kernel");
-  transfer_apply_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(cells_, transfer_claimed_.data(), transferred_.data(), history_.data());
-  PS_CUDA_CHECK_LAUNCH("transfer_apply_kernel");
-}
-
-// Sec. 3.4.3: folding, priorities and eviction, one probe window per thread; the step counts from 1.
-void CudaHashedFilter::end_step(cudaStream_t stream) {
-  const uint64_t windows = cells_ / kFingerprintsPerLine;
-  end_step_kernel<<<blocks_for(windows), kBlock, 0, stream>>>(settings_.temporal, temporal_window_keep(settings_.temporal), table(),
-                                                              history_.data(), windows, uint32_t(stats_.steps + 1), counters_.data());
-  PS_CUDA_CHECK_LAUNCH("end_step_kernel");
-}
-
 void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
   host_buffer_.upload(buffer);
   const VertexBufferView view = host_buffer_.view();
@@ -531,24 +388,6 @@ void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_
   filter(view, seed, pass, host_filtered_.data());
   filtered->resize(view.slots());
   host_filtered_.download(filtered->data(), view.slots());
-}
-
-void CudaHashedFilter::save_state(StateWriter& out) const {
-  out.put("cuda_hashed.stats", stats_);
-  if (!settings_.temporal.enabled()) return;
-  out.put_vector("hashed.temporal.fingerprints", fingerprints_.download());
-  out.put_vector("hashed.temporal.history", history_.download());
-}
-
-void CudaHashedFilter::load_state(StateReader& in) {
-  in.get("cuda_hashed.stats", &stats_);
-  if (!settings_.temporal.enabled()) return;
-  std::vector<uint32_t> fingerprints;
-  std::vector<VoxelHistory> history;
-  in.get_vector("hashed.temporal.fingerprints", &fingerprints, size_t(cells_));
-  in.get_vector("hashed.temporal.history", &history, size_t(cells_));
-  fingerprints_.upload(fingerprints);
-  history_.upload(history);
 }
 
 // hashed_filter_overflow.cpp on the GPU's table: the failed vertices are listed on the device, the
