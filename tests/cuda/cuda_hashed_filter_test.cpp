@@ -124,6 +124,9 @@ TEST(CudaHashedFilter, RefusesWhatTheGpuDoesNotDo) {
   HashedFilterSettings aov;
   aov.debug_images = true;
   expect_refused(aov, "--aov");
+  HashedFilterSettings adaptive;
+  adaptive.adaptive = true;
+  expect_refused(adaptive, "--psf-adaptive");
 }
 
 }  // namespace

@@ -86,6 +86,8 @@ std::vector<Case> cases() {
   bpt.strategy_images = 3;
   HashedFilterSettings hashed;
   hashed.debug_images = true;  // its AOVs are compared too
+  HashedFilterSettings adaptive;  // each pass's choice of voxel level carries to the next (sec. 3.1.3)
+  adaptive.adaptive = true;
   ConsistentFilterSettings everything;  // batches, query paths and caustic photons
   everything.aa_paths = 1;
   everything.batch_memory_mb = 0.05;
@@ -93,6 +95,7 @@ std::vector<Case> cases() {
   return {
       {"pt", threaded(make_render_config("pt", PtSettings{}, kSeed))},
       {"pt_hashed", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "hashed", hashed))},
+      {"pt_hashed_adaptive", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "hashed", adaptive))},
       {"pt_consistent", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "consistent", ConsistentFilterSettings{}))},
       {"pt_consistent_caustics_aa", threaded(with_filter(make_render_config("pt", PtSettings{}, kSeed), "consistent", everything))},
       {"lt", threaded(make_render_config("lt", LtSettings{}, kSeed))},

@@ -61,15 +61,17 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
   check_hashed_filter_settings(settings);
   // The projected size of one pixel at distance 1 (sec. 4: "s-times the projected size of a pixel").
   settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
-  if (settings.multi_level) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
+  if (settings.multi_level || settings.adaptive) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
+  if (settings.adaptive) coarse_squares_.resize(table_.cells());
   if (settings.temporal.enabled()) {
-    if (settings.multi_level || settings.neighbour_search)
-      throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
+    if (settings.multi_level || settings.neighbour_search || settings.adaptive)
+      throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours, --psf-multi-level or --psf-adaptive");
     table_.keep_across_frames();
     history_ = std::make_unique<TemporalHistory>(settings.temporal, table_.cells());
   }
   stats_.cells = table_.cells();
-  stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0) + (history_ ? history_->bytes() : 0);
+  stats_.table_bytes = table_.bytes() + (coarse_table_ ? coarse_table_->bytes() : 0) + (history_ ? history_->bytes() : 0) +
+                       coarse_squares_.size() * sizeof(uint64_t);
 }
 
 void HashedFilter::begin_frame(const PerspectiveCamera& camera) {
@@ -194,6 +196,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   // Per-slot keys, probe counts and voxel counts are kept only when something reads them after
   // accumulation (neighbour search, debug images): storing them cost ~10% of the accumulation.
   keys_.resize(keeps_keys() ? slots : 0);
+  fine_voxel_.resize(settings_.adaptive ? slots : 0);
   probes_.resize(settings_.debug_images ? slots : 0);
   counts_.resize(settings_.debug_images ? slots : 0);
   slots_.resize(slots);
@@ -207,6 +210,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
     table_.clear();
   }
   if (coarse_table_) coarse_table_->clear();
+  std::fill(coarse_squares_.begin(), coarse_squares_.end(), uint64_t(0));
   stats_.clear_ms += milliseconds_since(t0);
   const uint64_t failures_before = stats_.probe_failures;
 
@@ -227,6 +231,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
 
   t0 = std::chrono::steady_clock::now();
   lookup(buffer, filtered);
+  if (settings_.adaptive) choose_levels(buffer);
   stats_.lookup_ms += milliseconds_since(t0);
   stats_.probe_failures_last = stats_.probe_failures - failures_before;
   if (history_) {
@@ -256,6 +261,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const uint64_t pass_hash = pass_jitter_hash(seed, pass);
   const VoxelKeyIsa isa = widest_voxel_key_isa();
   const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
+  const bool adaptive = settings_.adaptive;
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
   // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most.
@@ -325,6 +331,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
       for (int j = 0; j < block_n; ++j) {
         if (keep_keys) keys_[block_slot[j]] = key_batch.keys[j];
+        if (adaptive) fine_voxel_[block_slot[j]] = voxel_identity(key_batch.hashes[j]);
         local.prefetch(key_batch.hashes[j]);  // an L2 miss when vertices are incoherent
       }
     };
@@ -349,6 +356,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key_batch.keys[j]), settings_.key.normal));
           coarse_slots_[i] = int32_t(cr.slot);
           if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
+          if (cr.slot >= 0 && adaptive) atomic_fetch_add(&coarse_squares_[size_t(cr.slot)], luminance_square_fixed(b.contribution[i]));
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
@@ -376,6 +384,40 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   stats_.not_accumulated += counters.not_accumulated;
   stats_.probes_total += counters.probes;
   stats_.probes_max = std::max(stats_.probes_max, counters.probes_max.load());
+}
+
+// Sec. 3.1.3: the fine voxels whose vertices take the fine average in the next pass, those whose
+// average in this pass has the lower estimated error than its coarse cell's (prefer_fine_voxel).
+// Every vertex of a fine cell has the same voxel and coarse cell, so each cell is decided once.
+// Sorted: the same set for any thread count.
+void HashedFilter::choose_levels(const VertexBuffer& b) {
+  const VoxelHashTableView view = table_.view(), coarse = coarse_table_->view();
+  const size_t cells = size_t(table_.cells());
+  cell_voxel_.resize(cells);
+  cell_coarse_.assign(cells, kSlotProbeFailed);
+  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+    for (size_t path = begin; path < end; ++path)
+      for (int r = 0; r < b.count[path]; ++r) {
+        const size_t i = b.slot(path, r);
+        const int32_t s = slots_[i];
+        if (s < 0) continue;  // the vertices of one cell write the same values
+        std::atomic_ref<uint64_t>(cell_voxel_[size_t(s)]).store(fine_voxel_[i], std::memory_order_relaxed);
+        std::atomic_ref<int32_t>(cell_coarse_[size_t(s)]).store(coarse_slots_[i], std::memory_order_relaxed);
+      }
+  });
+  tbb::enumerable_thread_specific<std::vector<uint64_t>> chosen;
+  parallel_for(cells, 1 << 14, [&](size_t begin, size_t end) {
+    std::vector<uint64_t>& out = chosen.local();
+    for (size_t s = begin; s < end; ++s) {
+      const int32_t cs = cell_coarse_[s];
+      if (cs >= 0 && prefer_fine_voxel(view.cells[s], coarse.cells[cs], coarse_squares_[size_t(cs)])) out.push_back(cell_voxel_[s]);
+    }
+  });
+  std::vector<uint64_t> next;
+  for (const std::vector<uint64_t>& v : chosen) next.insert(next.end(), v.begin(), v.end());
+  std::sort(next.begin(), next.end());
+  next.erase(std::unique(next.begin(), next.end()), next.end());  // a voxel in two cells: a fingerprint collision
+  refined_voxels_ = std::move(next);
 }
 
 void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
@@ -410,7 +452,13 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         } else {
           average = from_fixed_point(cell.sum, cell.count);
         }
-        if (cell.count < min_count)  // sec. 3.3, the steps the GPU runs too (hashed_filter_steps.h)
+        if (steps.adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
+          const int32_t cs = coarse_slots_[i];
+          if (cs >= 0 && !std::binary_search(refined_voxels_.begin(), refined_voxels_.end(), fine_voxel_[i])) {
+            average = from_fixed_point(coarse.cells[cs].sum, coarse.cells[cs].count);
+            ++low_counters.multi_level_used;
+          }
+        } else if (cell.count < min_count)  // sec. 3.3, the steps the GPU runs too (hashed_filter_steps.h)
           average = low_count_average(steps, view, coarse, cell, average, settings_.neighbour_search ? keys_[i] : VoxelKey{},
                                       coarse_table_ ? coarse_slots_[i] : kSlotProbeFailed, &low_counters);
         (*filtered)[i] = average;
@@ -467,7 +515,7 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.expected_fingerprint_collisions", s.expected_fingerprint_collisions_last, "last pass");
   out.counter("hashed.low_count_vertices", s.low_count);
   out.counter("hashed.neighbour_lookups", s.neighbour_lookups);
-  out.counter("hashed.coarse_level_used", s.multi_level_used);
+  out.counter("hashed.coarse_level_used", s.multi_level_used, "vertices that took the coarser voxel (--psf-multi-level, --psf-adaptive)");
   out.seconds("hashed.clear_s_per_pass", s.clear_ms * 1e-3 / passes);
   out.seconds("hashed.accumulate_s_per_pass", s.accumulate_ms * 1e-3 / passes);
   out.seconds("hashed.lookup_s_per_pass", s.lookup_ms * 1e-3 / passes);
@@ -475,6 +523,8 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
   out.counter("hashed.probe_limit_fallbacks_last", s.probe_failures_last, "last pass");
   out.counter("hashed.overflow_settled_passes", s.settled_windows, "passes whose full probe windows were settled by fingerprint");
+  if (settings_.adaptive)
+    out.counter("hashed.adaptive.refined_voxels", refined_voxels_.size(), "fine voxels whose vertices take the fine average in the next pass (sec. 3.1.3)");
   if (!history_) return;
   report_temporal_statistics("hashed.",
                              {.steps = s.steps, .evicted = s.evicted, .evicted_last = s.evicted_last, .blended = s.blended,
@@ -499,9 +549,14 @@ std::vector<NamedImage> HashedFilter::aovs() const {
 }
 
 // Without --temporal the table is rebuilt every pass, so the statistics are the only state a
-// continued render needs; with it, the keys with their priorities and the histories too.
+// continued render needs; with it, the keys with their priorities and the histories too, and with
+// --psf-adaptive the voxels whose level the previous pass chose.
 void HashedFilter::save_state(StateWriter& out) const {
   out.put("hashed.stats", stats_);
+  if (settings_.adaptive) {
+    out.put("hashed.adaptive.count", uint64_t(refined_voxels_.size()));
+    out.put_vector("hashed.adaptive.refined", refined_voxels_);
+  }
   if (!history_) return;
   const VoxelHashTableView v = table_.view();
   out.put_vector("hashed.temporal.fingerprints", std::vector<uint32_t>(v.fingerprints, v.fingerprints + table_.cells()));
@@ -509,6 +564,13 @@ void HashedFilter::save_state(StateWriter& out) const {
 }
 void HashedFilter::load_state(StateReader& in) {
   in.get("hashed.stats", &stats_);
+  if (settings_.adaptive) {
+    uint64_t count = 0;
+    in.get("hashed.adaptive.count", &count);
+    if (count > table_.cells()) throw Error("checkpoint: more refined voxels than the table has cells");
+    in.get_vector("hashed.adaptive.refined", &refined_voxels_, size_t(count));
+    if (!std::is_sorted(refined_voxels_.begin(), refined_voxels_.end())) throw Error("checkpoint: the refined voxels are not sorted");
+  }
   if (!history_) return;
   std::vector<uint32_t> fingerprints;
   std::vector<VoxelHistory> history;

@@ -51,7 +51,10 @@ class HashedFilter final : public PathSpaceFilter {
   HashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels);
 
   const char* name() const override { return "hashed"; }
-  std::string distribution_limit() const override { return history_ ? kTemporalDistributionLimit : std::string(); }
+  std::string distribution_limit() const override {
+    if (history_) return kTemporalDistributionLimit;
+    return settings_.adaptive ? "--psf-adaptive carries each pass's choice of voxel level to the next pass" : std::string();
+  }
   // Without --temporal every pass starts afresh.
   uint32_t frame_warm_up() const override { return history_ ? kTemporalWarmUpFrames : 0; }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
@@ -93,7 +96,16 @@ class HashedFilter final : public PathSpaceFilter {
   HashedFilterSettings settings_;
   int width_, height_;
   VoxelHashTable table_;
-  std::unique_ptr<VoxelHashTable> coarse_table_;  // multi-level accumulation
+  std::unique_ptr<VoxelHashTable> coarse_table_;  // multi-level or adaptive accumulation
+  std::vector<uint64_t> coarse_squares_;          // adaptive: per coarse cell, its vertices' squared luminance (fixed point)
+  // Adaptive (sec. 3.1.3): each record slot's fine voxel (voxel_identity), and the fine voxels whose
+  // vertices take the fine average in this pass, chosen after the previous pass from its cells
+  // (choices made on the same vertices they average would favour the outliers: a biased image).
+  std::vector<uint64_t> fine_voxel_;
+  std::vector<uint64_t> refined_voxels_;  // sorted
+  std::vector<uint64_t> cell_voxel_;      // choose_levels: each fine cell's voxel and coarse cell
+  std::vector<int32_t> cell_coarse_;
+  void choose_levels(const VertexBuffer& b);
   std::unique_ptr<TemporalHistory> history_;      // sec. 3.4: null unless --temporal
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;

@@ -24,6 +24,10 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.number("psf-min-count", &S::min_count, 0, 1 << 20, "Voxels with fewer vertices are low-count", "sec. 3.3");
   t.flag("psf-neighbours", &S::neighbour_search, true, "Low-count voxels add their 26 neighbours", "sec. 3.3.1");
   t.flag("psf-multi-level", &S::multi_level, true, "Low-count voxels use a voxel one level coarser", "sec. 3.3.2");
+  t.flag("psf-adaptive", &S::adaptive, true,
+         "Adaptive resolution: each vertex takes its voxel or the one a level coarser, whichever has the lower estimated "
+         "squared error (finite difference across the levels against the extra variance)",
+         "sec. 3.1.3");
   t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
   t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
            std::vector<std::pair<std::string, TemporalMode>>{
@@ -56,10 +60,11 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.number("temporal-stale-frames", [](S& s) -> int& { return s.temporal.stale_frames; }, 1, 1 << 24,
            "--temporal-eviction stale: steps without use before a cell is evicted", "sec. 3.4.3");
   t.check([](const S& s) {
-    if (s.neighbour_search && s.multi_level)
-      throw OptionError("--psf-neighbours and --psf-multi-level are alternatives; pick one");
-    if (s.temporal.enabled() && (s.neighbour_search || s.multi_level))
-      throw OptionError("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
+    if (int(s.neighbour_search) + int(s.multi_level) + int(s.adaptive) > 1)
+      throw OptionError("--psf-neighbours, --psf-multi-level and --psf-adaptive are alternatives; pick one");
+    if (s.temporal.enabled() && (s.neighbour_search || s.multi_level || s.adaptive))
+      throw OptionError(
+          "--temporal keeps one level of voxels: it does not combine with --psf-neighbours, --psf-multi-level or --psf-adaptive");
   });
   return t;
 }

@@ -13,6 +13,9 @@ struct HashedFilterSettings {
   int min_count = 4;            // voxels with fewer vertices count as low-count (sec. 3.3)
   bool neighbour_search = false;  // sec. 3.3.1: add the 26 neighbouring voxels of a low-count voxel
   bool multi_level = false;       // sec. 3.3.2: also accumulate one level coarser, use it when low-count
+  // Sec. 3.1.3: also accumulate one level coarser, and give each vertex the fine voxel or the coarse
+  // one, whichever has the lower estimated squared error (adaptive resolution, prefer_fine_voxel).
+  bool adaptive = false;
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
   bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
   TemporalSettings temporal;      // sec. 3.4: the table kept across passes and frames

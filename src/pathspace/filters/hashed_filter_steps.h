@@ -28,6 +28,7 @@ struct HashedStepSettings {
   uint64_t min_count = 4;         // sec. 3.3
   bool neighbour_search = false;  // sec. 3.3.1
   bool multi_level = false;       // sec. 3.3.2
+  bool adaptive = false;          // sec. 3.1.3 (the CPU filter's lookup; prefer_fine_voxel)
 };
 
 // From the filter's settings, whose key.pixel_angle the filter has set from its camera.
@@ -37,6 +38,7 @@ inline HashedStepSettings step_settings(const HashedFilterSettings& f) {
   s.min_count = uint64_t(f.min_count > 0 ? f.min_count : 0);
   s.neighbour_search = f.neighbour_search;
   s.multi_level = f.multi_level;
+  s.adaptive = f.adaptive;
   return s;
 }
 
@@ -137,6 +139,42 @@ PS_INLINE Rgb low_count_average(const HashedStepSettings& s, const VoxelHashTabl
     }
   }
   return average;
+}
+
+// Sec. 3.1.3, adaptive resolution. The coarse cells keep, beside their sums, the sum of their vertices'
+// squared luminance in fixed point, so that the sums do not depend on the order of the adds either.
+// The luminance is capped at kMaxSquaredLuminance for this sum alone (fireflies then count with less
+// than their variance), which keeps 2^21 vertices of a cell from overflowing 64 bits.
+inline constexpr float kMaxSquaredLuminance = 1024.f;
+PS_INLINE uint64_t luminance_square_fixed(const Rgb& contribution) {
+  const double l = double(min_of(luminance(contribution), kMaxSquaredLuminance));
+  return uint64_t(l * l * double(kFixedPointScale) + 0.5);
+}
+
+// A voxel's identity across passes (its hash and fingerprint in one word), for choices that carry
+// from pass to pass.
+PS_INLINE uint64_t voxel_identity(const VoxelHash& h) { return h.index ^ (uint64_t(h.fingerprint) * 0x9e3779b97f4a7c15ull); }
+
+// Whether a vertex takes its fine cell's average rather than that of the coarse cell one level up
+// that contains it. The coarse average is off by about d = L_fine - L_coarse (the finite difference
+// of the luminance averages across the two levels); the fine average's variance is larger by about
+// V = sigma^2 (1/n_fine - 1/n_coarse), sigma^2 the variance of the luminance of the coarse cell's
+// vertices (an upper estimate where the cell holds detail, so doubt favours the coarse cell). The
+// fine cell has the lower expected squared error when d^2 > V; the estimated d^2 carries V itself
+// once (E[d_est^2] = d^2 + V), hence the test d_est^2 > 2 V, with nothing to tune.
+PS_INLINE bool prefer_fine_voxel(const VoxelCell& fine, const VoxelCell& coarse, uint64_t coarse_squares) {
+  if (coarse.count <= fine.count) return true;  // the coarse cell adds no vertex
+  const double nf = double(fine.count), nc = double(coarse.count), unit = 1.0 / double(kFixedPointScale);
+  const auto luminance_average = [&](const VoxelCell& c, double n) {
+    return (0.212671 * double(c.sum[0]) + 0.715160 * double(c.sum[1]) + 0.072169 * double(c.sum[2])) * unit / n;
+  };
+  const double lf = luminance_average(fine, nf), lc = luminance_average(coarse, nc);
+  const double mean_square = double(coarse_squares) * unit / nc;
+  double variance = (mean_square - lc * lc) * nc / (nc - 1.0);
+  variance = variance > 0.0 ? variance : 0.0;
+  const double d = lf - lc;
+  // Differences at the rounding level of the averages do not count (equal averages, no noise).
+  return d * d > 2.0 * variance * (1.0 / nf - 1.0 / nc) + 1e-12 * lc * lc;
 }
 
 // The filtered contribution of record slot i after accumulation (one pass, no temporal history);
