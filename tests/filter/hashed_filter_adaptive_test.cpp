@@ -4,8 +4,9 @@
 // 4-pass renders, so that the choices of passes 1-3 are exercised; alpha = 0.01, Sidak-corrected
 // over the two scenes); the image mean stays that of the fixed levels where contributions are
 // skewed (choices made on the vertices they average would favour the outliers, which is why each
-// pass uses the previous pass's choices); the renders are bit-identical for 1 and 2 threads; and on
-// the scene that shows light leaking, adaptive beats both fixed levels.
+// pass uses the previous pass's choices); the renders are bit-identical for 1 and 2 threads, and
+// frames rendered in chunks equal the sequence; and on the scene that shows light leaking, adaptive
+// beats both fixed levels.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "pathspace/options/option_values.h"
 #include "pathspace/session/render_config.h"
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/session/frame_sequence.h"
 #include "support/statistics.h"
 #include "support/test_scenes.h"
 
@@ -151,6 +153,30 @@ TEST(HashedFilterAdaptive, BeatsBothFixedLevelsWhereLightLeaks) {
   std::printf("filter-leak 48x48, 16 spp, relMSE summed over 3 seeds: fine %.4f, coarse %.4f, adaptive %.4f\n", fine, coarse, adaptive);
   EXPECT_LT(adaptive, fine);
   EXPECT_LT(adaptive, coarse);
+}
+
+// Frames dealt to processes in chunks (docs/distributed.md): a frame's first pass takes the choices
+// of the previous frame's last pass, so one warm-up frame before a chunk gives its frames exactly.
+TEST(HashedFilterAdaptive, FramesInChunksEqualTheSequence) {
+  Animation animation;
+  const Scene scene = make_builtin_scene("filter-leak", 24, 24);
+  animation.scene_at = [&](double) { return scene; };
+  animation.orbit_degrees_per_frame = 2.f;
+  std::vector<Image> sequence, chunk;
+  render_frames(animation, adaptive_config(5), FrameRange{0, 5}, 2, [&](const FrameResult& f) {
+    sequence.push_back(f.snapshot.mean);
+    return true;
+  });
+  const uint64_t reported = render_frames(
+      animation, adaptive_config(5), FrameRange{0, 5}, 2,
+      [&](const FrameResult& f) {
+        chunk.push_back(f.snapshot.mean);
+        return true;
+      },
+      {}, FrameChunk{1, 2});
+  ASSERT_EQ(reported, 3u);
+  ASSERT_EQ(sequence.size(), 6u);
+  for (size_t k = 0; k < 3; ++k) EXPECT_TRUE(testing::bit_identical(chunk[k], sequence[3 + k])) << "frame " << 3 + k;
 }
 
 // --psf-adaptive is one of three ways to treat a voxel's level; it keeps two levels, which --temporal

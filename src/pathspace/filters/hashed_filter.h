@@ -55,8 +55,12 @@ class HashedFilter final : public PathSpaceFilter {
     if (history_) return kTemporalDistributionLimit;
     return settings_.adaptive ? "--psf-adaptive carries each pass's choice of voxel level to the next pass" : std::string();
   }
-  // Without --temporal every pass starts afresh.
-  uint32_t frame_warm_up() const override { return history_ ? kTemporalWarmUpFrames : 0; }
+  // With --psf-adaptive a frame's first pass takes the choices of the previous frame's last pass:
+  // one frame before gives exactly that state. Otherwise every pass starts afresh.
+  uint32_t frame_warm_up() const override {
+    if (history_) return kTemporalWarmUpFrames;
+    return settings_.adaptive ? 1 : 0;
+  }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void statistics(Statistics& out) const override;
   // The four debug images (voxel, count, level, probes) when settings.debug_images is on.
