@@ -230,8 +230,9 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   }
 
   t0 = std::chrono::steady_clock::now();
+  if (settings_.adaptive) map_cells(buffer);
   lookup(buffer, filtered);
-  if (settings_.adaptive) choose_levels(buffer);
+  if (settings_.adaptive) choose_levels();
   stats_.lookup_ms += milliseconds_since(t0);
   stats_.probe_failures_last = stats_.probe_failures - failures_before;
   if (history_) {
@@ -386,37 +387,63 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   stats_.probes_max = std::max(stats_.probes_max, counters.probes_max.load());
 }
 
-// Sec. 3.1.3: the fine voxels whose vertices take the fine average in the next pass, those whose
-// average in this pass has the lower estimated error than its coarse cell's (prefer_fine_voxel).
-// Every vertex of a fine cell has the same voxel and coarse cell, so each cell is decided once.
-// Sorted: the same set for any thread count.
-void HashedFilter::choose_levels(const VertexBuffer& b) {
-  const VoxelHashTableView view = table_.view(), coarse = coarse_table_->view();
+// Sec. 3.1.3, before the lookup: each fine cell's voxel, coarse cell and level for this pass. Two
+// voxels share a cell only when their fingerprints collide; the cell then takes the smallest voxel
+// identity, is marked shared and keeps the coarse level, so nothing depends on which thread wrote
+// first.
+void HashedFilter::map_cells(const VertexBuffer& b) {
   const size_t cells = size_t(table_.cells());
-  cell_voxel_.resize(cells);
+  cell_voxel_.assign(cells, UINT64_MAX);
   cell_coarse_.assign(cells, kSlotProbeFailed);
-  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
-    for (size_t path = begin; path < end; ++path)
-      for (int r = 0; r < b.count[path]; ++r) {
-        const size_t i = b.slot(path, r);
-        const int32_t s = slots_[i];
-        if (s < 0) continue;  // the vertices of one cell write the same values
-        std::atomic_ref<uint64_t>(cell_voxel_[size_t(s)]).store(fine_voxel_[i], std::memory_order_relaxed);
-        std::atomic_ref<int32_t>(cell_coarse_[size_t(s)]).store(coarse_slots_[i], std::memory_order_relaxed);
-      }
+  cell_flags_.assign(cells, 0);
+  const auto each_vertex = [&](auto&& f) {
+    parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+      for (size_t path = begin; path < end; ++path)
+        for (int r = 0; r < b.count[path]; ++r) {
+          const size_t i = b.slot(path, r);
+          if (slots_[i] >= 0) f(i, size_t(slots_[i]));
+        }
+    });
+  };
+  each_vertex([&](size_t i, size_t s) {
+    std::atomic_ref<uint64_t> voxel(cell_voxel_[s]);
+    uint64_t seen = voxel.load(std::memory_order_relaxed);
+    while (fine_voxel_[i] < seen && !voxel.compare_exchange_weak(seen, fine_voxel_[i], std::memory_order_relaxed)) {
+    }
   });
-  tbb::enumerable_thread_specific<std::vector<uint64_t>> chosen;
+  each_vertex([&](size_t i, size_t s) {  // the vertices of one voxel have one coarse cell
+    if (fine_voxel_[i] == cell_voxel_[s]) {
+      std::atomic_ref<int32_t>(cell_coarse_[s]).store(coarse_slots_[i], std::memory_order_relaxed);
+    } else {
+      std::atomic_ref<uint8_t>(cell_flags_[s]).fetch_or(kCellShared, std::memory_order_relaxed);
+    }
+  });
   parallel_for(cells, 1 << 14, [&](size_t begin, size_t end) {
+    for (size_t s = begin; s < end; ++s)
+      if (cell_flags_[s] == 0 && cell_coarse_[s] >= 0 &&
+          std::binary_search(refined_voxels_.begin(), refined_voxels_.end(), cell_voxel_[s]))
+        cell_flags_[s] = kCellFine;
+  });
+}
+
+// Sec. 3.1.3, after the lookup: the fine voxels whose vertices take the fine average in the next
+// pass, those whose average in this pass has the lower estimated error than its coarse cell's
+// (prefer_fine_voxel). Sorted: the same set for any thread count.
+void HashedFilter::choose_levels() {
+  const VoxelHashTableView view = table_.view(), coarse = coarse_table_->view();
+  tbb::enumerable_thread_specific<std::vector<uint64_t>> chosen;
+  parallel_for(cell_voxel_.size(), 1 << 14, [&](size_t begin, size_t end) {
     std::vector<uint64_t>& out = chosen.local();
     for (size_t s = begin; s < end; ++s) {
       const int32_t cs = cell_coarse_[s];
-      if (cs >= 0 && prefer_fine_voxel(view.cells[s], coarse.cells[cs], coarse_squares_[size_t(cs)])) out.push_back(cell_voxel_[s]);
+      if (cs >= 0 && !(cell_flags_[s] & kCellShared) &&
+          prefer_fine_voxel(view.cells[s], coarse.cells[cs], coarse_squares_[size_t(cs)]))
+        out.push_back(cell_voxel_[s]);
     }
   });
   std::vector<uint64_t> next;
   for (const std::vector<uint64_t>& v : chosen) next.insert(next.end(), v.begin(), v.end());
   std::sort(next.begin(), next.end());
-  next.erase(std::unique(next.begin(), next.end()), next.end());  // a voxel in two cells: a fingerprint collision
   refined_voxels_ = std::move(next);
 }
 
@@ -454,7 +481,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         }
         if (steps.adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
           const int32_t cs = coarse_slots_[i];
-          if (cs >= 0 && !std::binary_search(refined_voxels_.begin(), refined_voxels_.end(), fine_voxel_[i])) {
+          if (cs >= 0 && !(cell_flags_[size_t(s)] & kCellFine)) {
             average = from_fixed_point(coarse.cells[cs].sum, coarse.cells[cs].count);
             ++low_counters.multi_level_used;
           }

@@ -107,9 +107,13 @@ class HashedFilter final : public PathSpaceFilter {
   // (choices made on the same vertices they average would favour the outliers: a biased image).
   std::vector<uint64_t> fine_voxel_;
   std::vector<uint64_t> refined_voxels_;  // sorted
-  std::vector<uint64_t> cell_voxel_;      // choose_levels: each fine cell's voxel and coarse cell
+  // Per fine cell in this pass (map_cells): its voxel, its coarse cell, and flags.
+  static constexpr uint8_t kCellFine = 1, kCellShared = 2;  // take the fine average; two voxels collide here
+  std::vector<uint64_t> cell_voxel_;
   std::vector<int32_t> cell_coarse_;
-  void choose_levels(const VertexBuffer& b);
+  std::vector<uint8_t> cell_flags_;
+  void map_cells(const VertexBuffer& b);
+  void choose_levels();
   std::unique_ptr<TemporalHistory> history_;      // sec. 3.4: null unless --temporal
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;
