@@ -59,13 +59,10 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
       table_(hashed_filter_table_cells(settings, pixels), settings.max_probes),
       camera_(camera) {
   check_hashed_filter_settings(settings);
-  // The projected size of one pixel at distance 1 (sec. 4: "s-times the projected size of a pixel").
-  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);
+  settings_.key.pixel_angle = hashed_filter_pixel_angle(camera);
   if (settings.multi_level || settings.adaptive) coarse_table_ = std::make_unique<VoxelHashTable>(table_.cells(), settings.max_probes);
   if (settings.adaptive) coarse_squares_.resize(table_.cells());
   if (settings.temporal.enabled()) {
-    if (settings.multi_level || settings.neighbour_search || settings.adaptive)
-      throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours, --psf-multi-level or --psf-adaptive");
     table_.keep_across_frames();
     history_ = std::make_unique<TemporalHistory>(settings.temporal, table_.cells());
   }
@@ -76,7 +73,7 @@ HashedFilter::HashedFilter(const HashedFilterSettings& settings, const Perspecti
 
 void HashedFilter::begin_frame(const PerspectiveCamera& camera) {
   if (camera.width != width_ || camera.height != height_) throw Error("the hashed filter's frames must keep one image size");
-  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);  // the field of view may change
+  settings_.key.pixel_angle = hashed_filter_pixel_angle(camera);
   // Hybrid: the previous frame's pass 0 recorded the paths to re-trace now, with its camera.
   has_probe_request_ = !next_request_.pixels.empty();
   if (has_probe_request_) {
@@ -356,8 +353,10 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
         if (coarse_table_) {
           const ProbeResult cr = coarse.find_or_insert(hash_voxel_key(coarser_key(key_batch.keys[j]), settings_.key.normal));
           coarse_slots_[i] = int32_t(cr.slot);
-          if (cr.slot >= 0) coarse.add(uint64_t(cr.slot), fixed);
-          if (cr.slot >= 0 && adaptive) atomic_fetch_add(&coarse_squares_[size_t(cr.slot)], luminance_square_fixed(b.contribution[i]));
+          if (cr.slot >= 0) {
+            coarse.add(uint64_t(cr.slot), fixed);
+            if (adaptive) atomic_fetch_add(&coarse_squares_[size_t(cr.slot)], luminance_square_fixed(b.contribution[i]));
+          }
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);
         if (combine && LocalVoxelCache::holds(e, h)) {
@@ -456,6 +455,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
   std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0}, blended_total{0};
   std::atomic<uint64_t> alpha_total{0};  // fixed point 2^-32: the sum does not depend on the thread count
   const TemporalHistory* history = history_.get();
+  const bool adaptive = settings_.adaptive;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     LookupCounters low_counters;
     uint64_t blended = 0, alpha_sum = 0;
@@ -479,7 +479,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         } else {
           average = from_fixed_point(cell.sum, cell.count);
         }
-        if (steps.adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
+        if (adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
           const int32_t cs = coarse_slots_[i];
           if (cs >= 0 && !(cell_flags_[size_t(s)] & kCellFine)) {
             average = from_fixed_point(coarse.cells[cs].sum, coarse.cells[cs].count);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "pathspace/base/error.h"
+#include "pathspace/camera/perspective_camera.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/hashing/voxel_hash_table.h"
 
@@ -21,7 +22,13 @@ inline void check_hashed_filter_settings(const HashedFilterSettings& s) {
   if (s.key.normal_bins < 1 || s.key.direction_bins < 1 || s.key.normal_bins > kMaxKeyBins || s.key.direction_bins > kMaxKeyBins)
     throw Error("normal and direction bins must be between 1 and " + std::to_string(kMaxKeyBins) + " per axis");
   if (s.max_probes < 1) throw Error("the probe limit must be at least 1");
+  if (s.temporal.enabled() && (s.multi_level || s.neighbour_search || s.adaptive))
+    throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours, --psf-multi-level or --psf-adaptive");
 }
+
+// The projected size of one pixel at distance 1 (sec. 4: voxels are "s-times the projected size of
+// a pixel"); the field of view may change from frame to frame.
+inline float hashed_filter_pixel_angle(const PerspectiveCamera& camera) { return 2.f * camera.tan_y / float(camera.height); }
 
 // Cells of the table (each level's) for an image of `pixels` pixels: table_factor per pixel,
 // rounded up to a power of two (voxel_table_cells).

@@ -28,7 +28,6 @@ struct HashedStepSettings {
   uint64_t min_count = 4;         // sec. 3.3
   bool neighbour_search = false;  // sec. 3.3.1
   bool multi_level = false;       // sec. 3.3.2
-  bool adaptive = false;          // sec. 3.1.3 (the CPU filter's lookup; prefer_fine_voxel)
 };
 
 // From the filter's settings, whose key.pixel_angle the filter has set from its camera.
@@ -38,7 +37,6 @@ inline HashedStepSettings step_settings(const HashedFilterSettings& f) {
   s.min_count = uint64_t(f.min_count > 0 ? f.min_count : 0);
   s.neighbour_search = f.neighbour_search;
   s.multi_level = f.multi_level;
-  s.adaptive = f.adaptive;
   return s;
 }
 

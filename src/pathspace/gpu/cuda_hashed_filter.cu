@@ -207,7 +207,7 @@ struct PassEvents {
 }  // namespace
 
 CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels)
-    : CudaHashedFilter(settings, 2.f * camera.tan_y / float(camera.height), pixels) {}
+    : CudaHashedFilter(settings, hashed_filter_pixel_angle(camera), pixels) {}
 
 CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float pixel_angle, size_t pixels)
     : settings_(settings) {
@@ -215,8 +215,6 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float p
   if (settings.temporal.mode == TemporalMode::hybrid)
     throw Error("--temporal hybrid re-traces the previous frame's paths, which the GPU path tracer does not do: "
                 "use --temporal integrate or ema with --device cuda");
-  if (settings.temporal.enabled() && (settings.multi_level || settings.neighbour_search))  // as HashedFilter
-    throw Error("--temporal keeps one level of voxels: it does not combine with --psf-neighbours or --psf-multi-level");
   if (settings.debug_images)
     throw Error("the GPU hashed filter writes no debug images: --aov is not supported with --device cuda");
   if (settings.adaptive)  // the coarse cells' sums of squares are not accumulated on the device
@@ -249,7 +247,7 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float p
 
 void CudaHashedFilter::begin_frame(const PerspectiveCamera& camera) {
   if (size_t(camera.width) * size_t(camera.height) != pixels_) throw Error("the hashed filter's frames must keep one image size");
-  settings_.key.pixel_angle = 2.f * camera.tan_y / float(camera.height);  // the field of view may change
+  settings_.key.pixel_angle = hashed_filter_pixel_angle(camera);
   steps_ = pathspace::step_settings(settings_);
 }
 
