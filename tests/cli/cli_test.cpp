@@ -267,9 +267,10 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
     for (const auto& run : figures.at(fig).at("runs"))
       for (const char* key : {"image_png", "error_png"}) EXPECT_TRUE(fs::exists(dir_ / "sp" / run.at(key).get<std::string>())) << run.at(key);
   }
-  EXPECT_EQ(figures.at("2021-sec3.4.1").at("runs").size(), 8u);  // 2 scenes x 2 modes x frames 1 and 4
+  // Modes: integrate and off, on textured-room also both with --texture-footprint.
+  EXPECT_EQ(figures.at("2021-sec3.4.1").at("runs").size(), 12u);  // (2 + 4) modes x frames 1 and 4
   const auto& orbit = figures.at("2021-sec3.4.1").at("data").at("temporal_orbit").at("rows");
-  EXPECT_EQ(orbit.size(), 12u);  // 2 scenes x 2 modes x frames 1, 2, 4
+  EXPECT_EQ(orbit.size(), 18u);  // (2 + 4) modes x frames 1, 2, 4
   EXPECT_EQ(orbit.at(0).at("frame"), 1);
   EXPECT_EQ(json.at("scenes").at("bs_c-orbit-f4").at("integrator"), "pt");
   const auto& fig9 = figures.at("2021-fig9").at("runs");

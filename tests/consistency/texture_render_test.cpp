@@ -6,12 +6,17 @@
 //    detail sharp;
 //  - light tracing agrees with path tracing in a Cornell box whose walls carry textures and whose
 //    back wall has tilted vertex normals (uv and shading normals through the real Embree hits; LT
-//    applies the adjoint shading-normal correction).
+//    applies the adjoint shading-normal correction);
+//  - PT's --texture-footprint (scene/texture_footprint.h): a camera hit's textures averaged over its
+//    pixel are the same for every ray of the pixel, close to the pixel's exact average where a point
+//    lookup is far from it, the point lookup itself where the texture is magnified, and what the
+//    rendered image converges to (z-test); untextured scenes render bit for bit as without it.
 #include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/shading_material.h"
+#include "pathspace/scene/texture_footprint.h"
 #include "support/integrator_comparison.h"
 #include "support/statistics.h"
 
@@ -20,7 +25,7 @@ namespace {
 
 using testing::Rendered;
 
-constexpr int kComparisons = 3;
+constexpr int kComparisons = 5;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 ImageTexture checker_texture(int n) {
@@ -35,10 +40,11 @@ ImageTexture checker_texture(int n) {
   return t;
 }
 
-// A [-1, 1]^2 quad in z = 0 facing +z, uv (0,0) .. (1,1), seen from above, under a sky of radiance 1.
-Scene textured_quad_scene(int resolution) {
+// A [-1, 1]^2 quad in z = 0 facing +z, uv (0,0) .. (1,1), seen from above, under a sky of radiance 1,
+// textured with a texels x texels checker repeated twice across (16 px: texels / 4 texels per pixel).
+Scene textured_quad_scene(int resolution, int texels = 4) {
   Scene s;
-  ImageTexture t = checker_texture(4);
+  ImageTexture t = checker_texture(texels);
   t.uscale = 2.f;  // repeats once across the quad
   s.add_texture(t);
   Material m = make_diffuse(Rgb(1.f));
@@ -125,6 +131,102 @@ TEST(TextureRender, LightTracingAgreesWithPathTracing) {
   const Rendered c = testing::render_integrator(untextured, testing::default_config("pt", testing::test_seed(305)), 1024);
   const testing::ImageZTest z = testing::image_z_test(c.mean, c.variance, b.mean, b.variance, 1e-3, kAlphaImage);
   EXPECT_FALSE(z.passed()) << "textures and vertex normals had no visible effect";
+}
+
+// The camera hit's footprint-averaged albedo of each pixel seen through raster position (x + fx, y + fy).
+Image footprint_albedo(const Scene& scene, const Accel& accel, float fx, float fy) {
+  const SceneView view = scene.view();
+  Image out(scene.camera.width, scene.camera.height);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      const Ray ray = scene.camera.generate_ray(float(x) + fx, float(y) + fy);
+      SurfaceHit hit;
+      if (!accel.intersect(ray, &hit)) continue;
+      Material storage;
+      out.at(x, y) = footprint_shading_material(view, hit, ray, &storage).diffuse;
+    }
+  return out;
+}
+
+double rms_difference(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) sum += double(a.pixels[i][c] - b.pixels[i][c]) * double(a.pixels[i][c] - b.pixels[i][c]);
+  return std::sqrt(sum / double(3 * a.pixels.size()));
+}
+
+TEST(TextureFootprint, AveragesTheTextureOverThePixel) {
+  const Scene scene = textured_quad_scene(16, 32);  // about 3 texels per pixel each way: aliased
+  const Accel accel(scene);
+  const Image exact = expected_radiance(scene, accel);
+  const Image centre = footprint_albedo(scene, accel, 0.5f, 0.5f);
+  for (const auto& [fx, fy] : {std::pair{0.1f, 0.8f}, std::pair{0.93f, 0.02f}}) {
+    const Image jittered = footprint_albedo(scene, accel, fx, fy);
+    for (size_t i = 0; i < centre.pixels.size(); ++i) ASSERT_EQ(jittered.pixels[i], centre.pixels[i]) << "pixel " << i;
+  }
+  const SceneView view = scene.view();
+  const Image point = testing::footprint_average(scene, accel, 1, [&](const SurfaceHit* hit) { return hit ? shading_material(view, *hit).diffuse : Rgb(); });
+  const double footprint_error = rms_difference(centre, exact), point_error = rms_difference(point, exact);
+  // 4 x 4 lookups against a 32 x 32 quadrature of the same bilinear texture: what is left is the
+  // coarser rule's error, measured 0.0055 against the point lookup's 0.12.
+  EXPECT_LT(footprint_error, 0.1 * point_error) << "footprint " << footprint_error << ", point lookup " << point_error;
+  EXPECT_GT(point_error, 0.05) << "the texture must alias at one lookup per pixel, or this proves nothing";
+}
+
+TEST(TextureFootprint, MagnifiedTexturesKeepThePointLookup) {
+  const Scene scene = textured_quad_scene(16, 4);  // half a texel per pixel
+  const Accel accel(scene);
+  const SceneView view = scene.view();
+  for (const auto& [fx, fy] : {std::pair{0.5f, 0.5f}, std::pair{0.1f, 0.8f}}) {
+    const Image footprint = footprint_albedo(scene, accel, fx, fy);
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) {
+        SurfaceHit hit;
+        ASSERT_TRUE(accel.intersect(scene.camera.generate_ray(float(x) + fx, float(y) + fy), &hit));
+        ASSERT_EQ(footprint.at(x, y), shading_material(view, hit).diffuse) << x << "," << y;
+      }
+  }
+}
+
+TEST(TextureFootprint, PathTracingConvergesToTheFootprintAverage) {
+  const Scene scene = textured_quad_scene(16, 32);
+  const Accel accel(scene);
+  const Image expected = footprint_albedo(scene, accel, 0.5f, 0.5f);  // times the sky's radiance 1
+  PtSettings pt;
+  pt.texture_footprint = true;
+  const Rendered footprint = testing::render_integrator(scene, accel, make_render_config("pt", pt, testing::test_seed(306)), 256);
+  testing::expect_matches_exact(footprint, expected, "pt --texture-footprint", kAlphaImage);
+  // The point lookup converges to nearly the same image, so the z-test alone would not notice PT
+  // ignoring the option. Without light sampling every path of this scene is camera, quad, sky, and
+  // its value is the albedo times 1 exactly (f cos / pdf = albedo): then each pixel's samples all
+  // equal its footprint average, while point lookups scatter over the texels.
+  pt.nee = false;
+  const Rendered exact = testing::render_integrator(scene, accel, make_render_config("pt", pt, testing::test_seed(308)), 4);
+  pt.texture_footprint = false;
+  const Rendered point = testing::render_integrator(scene, accel, make_render_config("pt", pt, testing::test_seed(308)), 4);
+  double point_variance = 0.0;
+  for (size_t i = 0; i < expected.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_NEAR(exact.mean.pixels[i][c], expected.pixels[i][c], 1e-5f * expected.pixels[i][c]) << "pixel " << i;
+      ASSERT_LT(exact.variance.pixels[i][c], 1e-10f) << "pixel " << i;
+    }
+    point_variance += luminance(point.variance.pixels[i]);
+  }
+  EXPECT_GT(point_variance / double(expected.pixels.size()), 1e-3) << "point lookups should scatter here";
+  HashedFilterSettings hashed;
+  hashed.key.psf_scale = 8.f;
+  const RenderConfig f = with_filter(make_render_config("pt", pt, testing::test_seed(307)), "hashed", hashed);
+  testing::expect_matches_exact(testing::render_integrator(scene, accel, f, 128), expected, "pt --texture-footprint + hashed filter",
+                                kAlphaImage, false);
+}
+
+TEST(TextureFootprint, UntexturedScenesRenderAsWithoutIt) {
+  const Scene scene = make_cornell_box(0, 24, 24);
+  PtSettings pt;
+  pt.texture_footprint = true;
+  const Rendered a = testing::render_integrator(scene, testing::default_config("pt", 5), 4);
+  const Rendered b = testing::render_integrator(scene, make_render_config("pt", pt, 5), 4);
+  for (size_t i = 0; i < a.mean.pixels.size(); ++i) ASSERT_EQ(a.mean.pixels[i], b.mean.pixels[i]) << "pixel " << i;
 }
 
 }  // namespace

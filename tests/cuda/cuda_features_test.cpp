@@ -6,7 +6,7 @@
 // alpha = 0.01, Sidak-corrected over this file's comparisons), plain and with the hashed filter, and
 // the wavefront must equal the megakernel bit for bit. A Cornell box whose light slides and whose
 // floor rises during the shutter checks motion blur the same way, as do a moving camera and moving
-// point-like lights.
+// point-like lights, and PT's --texture-footprint.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,7 +21,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 5;
+constexpr int kComparisons = 6;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 ImageTexture four_by_four(const char* name, bool monochrome) {
@@ -154,6 +154,28 @@ TEST(CudaFeatures, MovingPointLightsMatchCpu) {
   testing::expect_gpu_matches_cpu(scene, testing::default_config("pt", testing::test_seed(15)), 256, "moving lights pt cuda vs cpu",
                                   kAlphaImage);
   testing::expect_pipelines_agree(scene, FilterChoice{});
+}
+
+// --texture-footprint (scene/texture_footprint.h): the cutout also carries a diffuse texture eight
+// times repeated, about two texels per pixel, so the device averages it over each camera hit's pixel.
+TEST(CudaFeatures, TextureFootprintMatchesCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  Scene scene = features_box();
+  ImageTexture fine = four_by_four("fine", false);
+  fine.uscale = fine.vscale = 8.f;
+  const int32_t texture = int32_t(scene.add_texture(fine));
+  int textured = 0;
+  for (Material& m : scene.materials)
+    if (m.opacity_texture >= 0) {
+      m.diffuse_texture = texture;
+      ++textured;
+    }
+  ASSERT_EQ(textured, 1);
+  scene.finalize();
+  PtSettings pt;
+  pt.texture_footprint = true;
+  testing::expect_gpu_matches_cpu(scene, make_render_config("pt", pt, testing::test_seed(16)), 256, "texture footprint pt cuda vs cpu",
+                                  kAlphaImage);
 }
 
 }  // namespace

@@ -57,6 +57,7 @@
 #include "pathspace/scene/motion.h"
 #include "pathspace/scene/surface_opacity.h"
 #include "pathspace/scene/texture.h"
+#include "pathspace/scene/texture_footprint.h"
 #include "pathspace/film/splat_film.h"
 #include "pathspace/film/tonemap.h"
 

@@ -18,6 +18,7 @@
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/shading_material.h"
+#include "pathspace/scene/texture_footprint.h"
 
 namespace pathspace {
 
@@ -224,7 +225,8 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   if (segments >= max_segments) return PtNext::end;
 
   Material textured;
-  const Material& mat = shading_material(scene, hit, &textured);
+  const Material& mat = segments == 1 && settings.texture_footprint ? footprint_shading_material(scene, hit, ray, &textured)
+                                                                     : shading_material(scene, hit, &textured);
   const Frame frame(hit.ns);
   const Vec3 wo = frame.to_local(-ray.d);
   const uint32_t v = uint32_t(segments - 1);

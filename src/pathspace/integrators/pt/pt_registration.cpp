@@ -15,6 +15,10 @@ OptionTable<PtSettings> pt_options() {
   t.flag("no-nee", &S::nee, false, "No next event estimation (BSDF sampling only)");
   t.flag("no-bsdf-sampling", &S::bsdf_sampling, false, "Emission only through next event estimation");
   add_mis_option(t, &S::mis);
+  t.flag("texture-footprint", &S::texture_footprint, true,
+         "Average the textures at a camera ray's hit over its pixel (up to 4x4 lookups): no texture aliasing at 1 spp; "
+         "biased where lighting and texture vary together inside a pixel",
+         "Igehy 1999 (ray differentials); docs/animation.md");
   t.choice("psf-select", [](S& s) -> VertexSelectionMode& { return s.selection.mode; },
            std::vector<std::pair<std::string, VertexSelectionMode>>{
                {"first", VertexSelectionMode::first}, {"nth", VertexSelectionMode::nth}, {"all", VertexSelectionMode::all}},

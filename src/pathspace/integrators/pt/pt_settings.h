@@ -12,6 +12,7 @@ struct PtSettings {
   bool bsdf_sampling = true;        // count emission found by BSDF-sampled rays (after non-delta bounces)
   MisHeuristic mis = MisHeuristic::power;
   int roulette_start = 3;           // Russian roulette from this many segments on; < 0 disables it
+  bool texture_footprint = false;   // camera hits: textures averaged over the pixel (scene/texture_footprint.h)
   VertexSelection selection;        // where the path is split for path space filtering
 };
 
