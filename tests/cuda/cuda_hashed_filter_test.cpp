@@ -127,6 +127,9 @@ TEST(CudaHashedFilter, RefusesWhatTheGpuDoesNotDo) {
   HashedFilterSettings adaptive;
   adaptive.adaptive = true;
   expect_refused(adaptive, "--psf-adaptive");
+  HashedFilterSettings queries;
+  queries.aa_paths = 2;
+  expect_refused(queries, "--psf-aa-paths");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Furnace tests with the hashed filter on: in a closed scene with a constant radiance field every
 // vertex's contribution has the same expectation, so a voxel average is unbiased and the image mean
-// must stay exact ("a constant radiance field is a fixed point of averaging"). Voxel averages
+// must stay exact ("a constant radiance field is a fixed point of averaging"), and so must the
+// anti-aliasing queries that read those averages. Voxel averages
 // correlate pixels within a pass, so the samples of the t-test are whole passes (independent seeds).
 // alpha = 0.01, Sidak-corrected over the tests in this file.
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace pathspace {
 namespace {
 
 constexpr int kPasses = 40;
-constexpr int kVariants = 9;
+constexpr int kVariants = 12;
 constexpr int kScenes = 2;
 const double kAlpha = testing::sidak(0.01, kVariants * kScenes);
 
@@ -49,6 +50,17 @@ const Variant kVariantList[kVariants] = {
     {"tiny_table", [](PtSettings*, HashedFilterSettings* h) {
        h->table_factor = 1.f / 64.f;
        h->max_probes = 2;
+     }},
+    // --psf-aa-paths: the query-only paths read the same voxel averages (hashed_filter_query.cpp).
+    {"query_paths", [](PtSettings*, HashedFilterSettings* h) { h->aa_paths = 2; }},
+    {"query_paths_multi_level", [](PtSettings*, HashedFilterSettings* h) {
+       h->aa_paths = 2;
+       h->multi_level = true;
+       h->min_count = 64;
+     }},
+    {"query_paths_adaptive", [](PtSettings*, HashedFilterSettings* h) {
+       h->aa_paths = 2;
+       h->adaptive = true;
      }},
 };
 

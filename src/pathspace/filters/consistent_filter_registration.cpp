@@ -1,5 +1,6 @@
 // `--filter consistent`: the options of consistent path space filtering (Keller, Dahm, Binder 2014)
 // and its registration. Section, equation and figure numbers are those of the 2014 paper.
+#include "pathspace/filters/common_filter_options.h"
 #include "pathspace/filters/consistent_filter.h"
 #include "pathspace/filters/filter_registry.h"
 
@@ -30,9 +31,7 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
            "Albedo weight: largest difference of the stored attenuation per channel", "sec. 2.1");
   t.number("psf-visibility-threshold", &S::visibility_threshold, 0.0, 1.0,
            "Visibility weight: largest relative difference of the lengths of the vertices' rays along the normal", "sec. 2.1");
-  t.number("psf-aa-paths", &S::aa_paths, 0, 64,
-           "Extra camera paths per pixel and pass that only query the filtered vertices (anti-aliasing); empty queries are not counted",
-           "sec. 3, fig. 7");
+  add_aa_paths_option(t, &S::aa_paths);
   t.number("psf-iterations", &S::iterations, 1, 64, "Iterated averaging: average the averages this many times", "sec. 2, fig. 2");
   t.number("psf-caustic-photons", [](S& s) -> double& { return s.caustics.photons_per_pixel; }, 0.0, 1e4,
            "Caustic photons per pixel and pass: light -> specular -> diffuse paths come from a photon map gathered at diffuse vertices, "

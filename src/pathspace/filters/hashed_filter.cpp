@@ -211,6 +211,8 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   stats_.clear_ms += milliseconds_since(t0);
   const uint64_t failures_before = stats_.probe_failures;
 
+  pass_hash_ = pass_jitter_hash(seed, pass);
+  query_round_ = 0;
   t0 = std::chrono::steady_clock::now();
   accumulate(buffer, seed, pass);
   // Fallbacks that do not depend on timing (one cache line per window: the default probe limit).
@@ -446,16 +448,30 @@ void HashedFilter::choose_levels() {
   refined_voxels_ = std::move(next);
 }
 
-void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
+Rgb HashedFilter::level_estimate(int32_t slot, int32_t coarse_slot, const VoxelKey& key, const Rgb& average,
+                                 const HashedStepSettings& steps, LookupCounters* counters) const {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
+  if (settings_.adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
+    if (coarse_slot >= 0 && !(cell_flags_[size_t(slot)] & kCellFine)) {
+      ++counters->multi_level_used;
+      return from_fixed_point(coarse.cells[coarse_slot].sum, coarse.cells[coarse_slot].count);
+    }
+    return average;
+  }
+  const VoxelCell& cell = view.cells[slot];
+  if (cell.count >= steps.min_count) return average;
+  // Sec. 3.3, the steps the GPU runs too (hashed_filter_steps.h).
+  return low_count_average(steps, view, coarse, cell, average, key, coarse_slot, counters);
+}
+
+void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
+  const VoxelHashTableView view = table_.view();
   const HashedStepSettings steps = step_settings(settings_);
-  const uint64_t min_count = steps.min_count;
   const bool keep_counts = settings_.debug_images;
   std::atomic<uint64_t> low_total{0}, neighbour_total{0}, multi_total{0}, blended_total{0};
   std::atomic<uint64_t> alpha_total{0};  // fixed point 2^-32: the sum does not depend on the thread count
   const TemporalHistory* history = history_.get();
-  const bool adaptive = settings_.adaptive;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     LookupCounters low_counters;
     uint64_t blended = 0, alpha_sum = 0;
@@ -479,16 +495,8 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         } else {
           average = from_fixed_point(cell.sum, cell.count);
         }
-        if (adaptive) {  // sec. 3.1.3: the fine cell or the coarse one, as chosen after the previous pass
-          const int32_t cs = coarse_slots_[i];
-          if (cs >= 0 && !(cell_flags_[size_t(s)] & kCellFine)) {
-            average = from_fixed_point(coarse.cells[cs].sum, coarse.cells[cs].count);
-            ++low_counters.multi_level_used;
-          }
-        } else if (cell.count < min_count)  // sec. 3.3, the steps the GPU runs too (hashed_filter_steps.h)
-          average = low_count_average(steps, view, coarse, cell, average, settings_.neighbour_search ? keys_[i] : VoxelKey{},
-                                      coarse_table_ ? coarse_slots_[i] : kSlotProbeFailed, &low_counters);
-        (*filtered)[i] = average;
+        (*filtered)[i] = level_estimate(s, coarse_table_ ? coarse_slots_[i] : kSlotProbeFailed,
+                                        settings_.neighbour_search ? keys_[i] : VoxelKey{}, average, steps, &low_counters);
       }
     }
     low_total += low_counters.low_count;
@@ -550,6 +558,10 @@ void HashedFilter::statistics(Statistics& out) const {
   out.value("hashed.lookup_ns_per_vertex", s.vertices ? s.lookup_ms * 1e6 / vertices : 0.0);
   out.counter("hashed.probe_limit_fallbacks_last", s.probe_failures_last, "last pass");
   out.counter("hashed.overflow_settled_passes", s.settled_windows, "passes whose full probe windows were settled by fingerprint");
+  if (settings_.aa_paths > 0) {
+    out.counter("hashed.query_records", s.query_records, "vertices of the query-only anti-aliasing paths (--psf-aa-paths)");
+    out.counter("hashed.query_found", s.query_found, "of those, in a voxel with an estimate (the others' paths are left out)");
+  }
   if (settings_.adaptive)
     out.counter("hashed.adaptive.refined_voxels", refined_voxels_.size(), "fine voxels whose vertices take the fine average in the next pass (sec. 3.1.3)");
   if (!history_) return;

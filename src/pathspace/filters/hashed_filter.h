@@ -11,6 +11,7 @@
 #include "pathspace/camera/perspective_camera.h"
 #include "pathspace/film/image.h"
 #include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed_filter_steps.h"
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/filters/temporal_history.h"
 #include "pathspace/hashing/voxel_hash_table.h"
@@ -38,6 +39,7 @@ struct HashedFilterStats {
   uint64_t probes = 0, probes_found = 0;  // hybrid: re-traced paths, and those whose voxel was in the table
   uint64_t from_finer = 0, from_coarser = 0;  // sec. 3.4.2: new cells that took another level's history
   double change_sum = 0.0;                // their relative changes |now - before| / max
+  uint64_t query_records = 0, query_found = 0;  // --psf-aa-paths: queried vertices, and those with an estimate
 
   // Mean cells inspected per insertion (1 = found or claimed the home cell).
   double mean_probes() const { return insertions ? double(probes_total) / double(insertions) : 0.0; }
@@ -61,7 +63,14 @@ class HashedFilter final : public PathSpaceFilter {
     if (history_) return kTemporalWarmUpFrames;
     return settings_.adaptive ? 1 : 0;
   }
+  // --psf-aa-paths: query-only camera paths (2014 paper, sec. 3) read the table the pass left.
+  FilterNeeds needs() const override {
+    FilterNeeds n;
+    n.query_paths = settings_.aa_paths;
+    return n;
+  }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
   void statistics(Statistics& out) const override;
   // The four debug images (voxel, count, level, probes) when settings.debug_images is on.
   std::vector<NamedImage> aovs() const override;
@@ -87,6 +96,11 @@ class HashedFilter final : public PathSpaceFilter {
   bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
+  // A vertex's estimate in fine cell `slot` from the cell's `average` (this pass's, or blended with
+  // its history): the coarse cell where sec. 3.1.3 chose it, else the low-count steps of sec. 3.3.
+  // `key` is read only by the neighbour search, `coarse_slot` only with a coarse table.
+  Rgb level_estimate(int32_t slot, int32_t coarse_slot, const VoxelKey& key, const Rgb& average, const HashedStepSettings& steps,
+                     LookupCounters* counters) const;
   // Hybrid (sec. 3.4.1): the re-traced paths' changes into their cells, and this frame's values of
   // the paths the next frame re-traces.
   void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);
@@ -122,6 +136,8 @@ class HashedFilter final : public PathSpaceFilter {
   std::vector<uint32_t> counts_;
   std::vector<uint32_t> first_slot_of_pixel_;
   HashedFilterStats stats_;
+  uint64_t pass_hash_ = 0;      // the last filtered pass's jitter hash, which its queries mix with
+  uint32_t query_round_ = 0;    // query paths of that pass so far (each round has its own jitter)
   // Frames and temporal finite differences (--temporal hybrid).
   PerspectiveCamera camera_;       // of the current frame
   uint64_t frame_ = 0;             // frames begun before this one

@@ -1,5 +1,6 @@
 // `--filter hashed`: the options of hashed path space filtering (Binder, Fricke, Keller 2021) and
 // its registration. Section numbers are those of the 2021 paper.
+#include "pathspace/filters/common_filter_options.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/filters/hashed_filter.h"
 
@@ -28,6 +29,7 @@ OptionTable<HashedFilterSettings> hashed_options() {
          "Adaptive resolution: each vertex takes its voxel or the one a level coarser, whichever has the lower estimated "
          "squared error (finite difference across the levels against the extra variance)",
          "sec. 3.1.3");
+  add_aa_paths_option(t, &S::aa_paths);
   t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
   t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
            std::vector<std::pair<std::string, TemporalMode>>{

@@ -16,6 +16,7 @@ struct HashedFilterSettings {
   // Sec. 3.1.3: also accumulate one level coarser, and give each vertex the fine voxel or the coarse
   // one, whichever has the lower estimated squared error (adaptive resolution, prefer_fine_voxel).
   bool adaptive = false;
+  int aa_paths = 0;                // extra query-only camera paths per pixel and pass (2014 paper, sec. 3)
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
   bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
   TemporalSettings temporal;      // sec. 3.4: the table kept across passes and frames

@@ -219,6 +219,8 @@ CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, float p
     throw Error("the GPU hashed filter writes no debug images: --aov is not supported with --device cuda");
   if (settings.adaptive)  // the coarse cells' sums of squares are not accumulated on the device
     throw Error("the GPU hashed filter has no adaptive resolution: --psf-adaptive is not supported with --device cuda");
+  if (settings.aa_paths > 0)  // the CUDA path tracer traces no query-only paths
+    throw Error("the GPU path tracer traces no query-only paths: --psf-aa-paths is not supported with --device cuda");
   settings_.key.pixel_angle = pixel_angle;  // as HashedFilter: sec. 4, s times the projected pixel size
   steps_ = pathspace::step_settings(settings_);
   pixels_ = pixels;
