@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/session/frame_sequence.h"
 #include "pathspace/session/render.h"
 #include "support/statistics.h"
 
@@ -52,6 +54,28 @@ inline void expect_exact_image_mean(const Scene& scene, const std::function<Rend
   }
   const MeanTest t = t_test_mean(sum, sum_sq, passes, expected);
   EXPECT_GT(t.p, alpha) << what << ": mean " << t.mean << " +- " << t.std_error << ", expected " << expected;
+}
+
+// An animation whose every frame is `scene` (a copy).
+inline Animation still(const Scene& scene) {
+  Animation a;
+  a.scene_at = [scene](double) { return scene; };
+  return a;
+}
+
+// The images of frames 0 .. frames - 1 of `animation`, one pass each, with `threads` threads; the
+// last frame's statistics into *last_stats.
+inline std::vector<Image> frames_of(const Animation& animation, const RenderConfig& config, uint64_t frames, int threads = 0,
+                                    Statistics* last_stats = nullptr) {
+  RenderConfig c = config;
+  c.threads = threads;
+  std::vector<Image> images;
+  render_frames(animation, c, FrameRange{0, frames - 1}, 1, [&](const FrameResult& f) {
+    images.push_back(f.snapshot.mean);
+    if (last_stats) *last_stats = f.snapshot.stats.details;
+    return true;
+  });
+  return images;
 }
 
 inline bool bit_identical(const Image& a, const Image& b) {

@@ -17,6 +17,9 @@
 namespace pathspace {
 namespace {
 
+using testing::frames_of;
+using testing::still;
+
 TEST(HashedFilterQueries, LowerTheErrorAtThinGeometry) {
   const Scene scene = make_builtin_scene("filter-fence", 128, 128);
   const testing::FilteredRender reference = testing::render_with(scene, testing::pt_config(11), 1024);
@@ -34,25 +37,6 @@ TEST(HashedFilterQueries, LowerTheErrorAtThinGeometry) {
   const double without = error(0), with = error(3);
   std::printf("relMSE at 1 spp: hashed %.4g, with 3 query paths per pixel %.4g (%.2fx)\n", without, with, without / with);
   EXPECT_LT(with, 0.5 * without);
-}
-
-std::vector<Image> frames_of(const Animation& animation, const RenderConfig& config, uint64_t frames, int threads = 0,
-                             Statistics* last_stats = nullptr) {
-  RenderConfig c = config;
-  c.threads = threads;
-  std::vector<Image> images;
-  render_frames(animation, c, FrameRange{0, frames - 1}, 1, [&](const FrameResult& f) {
-    images.push_back(f.snapshot.mean);
-    if (last_stats) *last_stats = f.snapshot.stats.details;
-    return true;
-  });
-  return images;
-}
-
-Animation still(const Scene& scene) {
-  Animation a;
-  a.scene_at = [scene](double) { return scene; };
-  return a;
 }
 
 HashedFilterSettings integrate(int aa_paths) {

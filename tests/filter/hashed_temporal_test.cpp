@@ -18,6 +18,9 @@
 namespace pathspace {
 namespace {
 
+using testing::frames_of;
+using testing::still;
+
 // A one-window table whose cell `slot` received `count` vertices of value `v` in this step.
 void set_cell(VoxelHashTable& table, uint64_t slot, uint32_t key, float v, uint64_t count) {
   const VoxelHashTableView view = table.view();
@@ -132,25 +135,6 @@ TEST(TemporalEviction, PriorityOrderUsesRecencyBeforeSize) {
 }
 
 constexpr int kSize = 32;
-
-Animation still(const Scene& scene) {
-  Animation a;
-  a.scene_at = [&scene](double) { return scene; };
-  return a;
-}
-
-std::vector<Image> frames_of(const Animation& animation, const RenderConfig& config, uint64_t frames, int threads = 0,
-                             Statistics* last_stats = nullptr) {
-  RenderConfig c = config;
-  c.threads = threads;
-  std::vector<Image> images;
-  render_frames(animation, c, FrameRange{0, frames - 1}, 1, [&](const FrameResult& f) {
-    images.push_back(f.snapshot.mean);
-    if (last_stats) *last_stats = f.snapshot.stats.details;
-    return true;
-  });
-  return images;
-}
 
 double red_mean(const Image& img) {
   double m = 0.0;
