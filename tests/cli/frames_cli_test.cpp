@@ -68,7 +68,8 @@ TEST_F(FramesCli, MisuseIsAUsageError) {
   for (const std::string& args :
        {"--frames 0:1 -o " + path("no-number.exr"), "--frames 3:1 -o " + path("a-%d.exr"), "--frames x -o " + path("a-%d.exr"),
         "--orbit 5 -o " + path("a.exr"), "--frames 0:1 --checkpoint " + path("c.ckpt") + " -o " + path("a-%d.exr"),
-        "--frames 0:1 -o " + path("a-%d-%d.exr")}) {
+        "--frames 0:1 -o " + path("a-%d-%d.exr"),
+        "--frames 0:1 --filter hashed --temporal integrate --temporal-rectify -o " + path("a-%d.exr")}) {
     const auto r = run_pathspace("render cornell-box -r 8x8 -q " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
   }

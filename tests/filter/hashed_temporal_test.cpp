@@ -56,6 +56,32 @@ TEST(TemporalHistory, IntegrationIsTheMeanOfEveryStepsVertices) {
   EXPECT_FLOAT_EQ(history.at(3).mean[1], 2.5f);
 }
 
+// --temporal-rectify: a probed cell's history mean times the ratio of its probes' luminance sums
+// now over before, capped at kMaxRectification; cells without a lit probe before keep theirs.
+TEST(TemporalHistory, RectifyScalesByTheProbesRatio) {
+  TemporalSettings settings = temporal(TemporalMode::hybrid);
+  settings.rectify = true;
+  TemporalHistory history(settings, 16);
+  std::vector<VoxelHistory> cells(16);
+  for (VoxelHistory& h : cells) {
+    h.mean[0] = 2.f, h.mean[1] = 4.f, h.mean[2] = 6.f;
+    h.weight = 10.f;
+  }
+  history.restore(cells);
+  history.add_change(1, 1.f, 0.25f);  // two probes: (0.25 + 0.75) / (1 + 1) = 0.5
+  history.add_change(1, 1.f, 0.75f);
+  history.add_change(2, 0.1f, 1.f);   // 10x: capped
+  history.add_change(3, 0.f, 1.f);    // dark before: nothing to scale
+  history.rectify();
+  EXPECT_FLOAT_EQ(history.at(1).mean[0], 1.f);
+  EXPECT_FLOAT_EQ(history.at(1).mean[2], 3.f);
+  EXPECT_FLOAT_EQ(history.at(2).mean[1], 4.f * kMaxRectification);
+  EXPECT_FLOAT_EQ(history.at(3).mean[0], 2.f);
+  EXPECT_FLOAT_EQ(history.at(4).mean[0], 2.f);  // not probed
+  EXPECT_FLOAT_EQ(history.at(1).weight, 10.f);  // the change decides the weight, as without rectifying
+  EXPECT_FLOAT_EQ(history.change(1), 0.5f);
+}
+
 TEST(TemporalHistory, MovingAverageAndHistoryCap) {
   TemporalSettings ema = temporal(TemporalMode::ema);
   ema.alpha = 0.8f;
@@ -237,17 +263,20 @@ TEST(HashedTemporal, OverflowingTablesStayBitIdenticalForAnyThreadCount) {
 TEST(HashedTemporal, HybridIntegratesAStaticScene) {
   const Scene scene = make_builtin_scene("cornell-empty-area", kSize, kSize);
   const Animation animation = still(scene);
-  HashedFilterSettings hybrid = integrate_settings(2.f);
-  hybrid.temporal.mode = TemporalMode::hybrid;
-  Statistics stats;
-  const std::vector<Image> h = frames_of(animation, testing::hashed_config(9, hybrid), 6, 0, &stats);
   const std::vector<Image> i = frames_of(animation, testing::hashed_config(9, integrate_settings(2.f)), 6);
-  EXPECT_GT(stats.number("hashed.temporal.probes_in_table"), 0.0);
-  EXPECT_EQ(stats.number("hashed.temporal.mean_change"), 0.0);
-  double largest = 0.0;
-  for (size_t p = 0; p < h.back().size(); ++p)
-    largest = std::max(largest, double(std::fabs(h.back().pixels[p].r - i.back().pixels[p].r)) / (1e-3 + i.back().pixels[p].r));
-  EXPECT_LT(largest, 1e-4);
+  for (const bool rectify : {false, true}) {  // rectified by the ratio 1: unchanged
+    HashedFilterSettings hybrid = integrate_settings(2.f);
+    hybrid.temporal.mode = TemporalMode::hybrid;
+    hybrid.temporal.rectify = rectify;
+    Statistics stats;
+    const std::vector<Image> h = frames_of(animation, testing::hashed_config(9, hybrid), 6, 0, &stats);
+    EXPECT_GT(stats.number("hashed.temporal.probes_in_table"), 0.0);
+    EXPECT_EQ(stats.number("hashed.temporal.mean_change"), 0.0);
+    double largest = 0.0;
+    for (size_t p = 0; p < h.back().size(); ++p)
+      largest = std::max(largest, double(std::fabs(h.back().pixels[p].r - i.back().pixels[p].r)) / (1e-3 + i.back().pixels[p].r));
+    EXPECT_LT(largest, 1e-4) << "rectify " << rectify;
+  }
 }
 
 // relMSE over the pixels of `band` only.
@@ -289,10 +318,13 @@ TEST(HashedTemporal, HybridFollowsAMovingLightBetterThanIntegration) {
     return band_rel_mse(frames.back(), reference, band);
   };
   const double integrate = error_of(TemporalMode::integrate), hybrid = error_of(TemporalMode::hybrid), ema = error_of(TemporalMode::ema);
-  std::printf("relMSE in the band (%zu pixels) at frame %d: integrate %.4g, ema %.4g, hybrid %.4g\n", in_band, kFrames - 1, integrate,
-              ema, hybrid);
+  s.temporal.rectify = true;
+  const double rectified = error_of(TemporalMode::hybrid);
+  std::printf("relMSE in the band (%zu pixels) at frame %d: integrate %.4g, ema %.4g, hybrid %.4g, rectified %.4g\n", in_band, kFrames - 1,
+              integrate, ema, hybrid, rectified);
   ASSERT_GT(in_band, size_t(20));
   EXPECT_LT(hybrid, integrate);
+  EXPECT_LT(rectified, hybrid);
 }
 
 // Sec. 3.4.2: a camera moving away from the box (voxels get coarser) and towards it (finer): new

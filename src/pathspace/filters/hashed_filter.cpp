@@ -222,7 +222,10 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
 
   if (history_ && settings_.temporal.level_transfer) transfer_levels(buffer, pass_jitter_hash(seed, pass));
   if (history_ && settings_.temporal.mode == TemporalMode::hybrid && pass == 0) {
-    if (pending_probes_ && has_probe_request_) apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
+    if (pending_probes_ && has_probe_request_) {
+      apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
+      if (settings_.temporal.rectify) history_->rectify();
+    }
     pending_probes_ = nullptr;
     has_probe_request_ = false;
     record_probe_originals(buffer, seed, pass);

@@ -47,6 +47,10 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.number("temporal-change-threshold", [](S& s) -> float& { return s.temporal.change_threshold; }, 1e-4, 1e4,
            "--temporal hybrid: relative change of a voxel's re-traced paths at which the history's weight reaches 0",
            "sec. 3.4.1, fig. 9");
+  t.flag("temporal-rectify", [](S& s) -> bool& { return s.temporal.rectify; }, true,
+         "--temporal hybrid: scale a probed voxel's history by its re-traced paths' luminance now over before (a ratio "
+         "estimator of the change; beyond the paper) before blending",
+         "sec. 3.4.1, fig. 9");
   t.number("temporal-alpha", [](S& s) -> float& { return s.temporal.alpha; }, 0.0, 1.0,
            "--temporal ema: weight of the old average", "sec. 3.4.1");
   t.number("temporal-max-frames", [](S& s) -> int& { return s.temporal.max_frames; }, 0, 1 << 24,
@@ -64,6 +68,8 @@ OptionTable<HashedFilterSettings> hashed_options() {
   t.check([](const S& s) {
     if (int(s.neighbour_search) + int(s.multi_level) + int(s.adaptive) > 1)
       throw OptionError("--psf-neighbours, --psf-multi-level and --psf-adaptive are alternatives; pick one");
+    if (s.temporal.rectify && s.temporal.mode != TemporalMode::hybrid)
+      throw OptionError("--temporal-rectify scales histories by the change that --temporal hybrid measures: it needs --temporal hybrid");
     if (s.temporal.enabled() && (s.neighbour_search || s.multi_level || s.adaptive))
       throw OptionError(
           "--temporal keeps one level of voxels: it does not combine with --psf-neighbours, --psf-multi-level or --psf-adaptive");

@@ -23,7 +23,18 @@ void TemporalHistory::add_change(uint64_t slot, float before, float now) {
   if (c.magnitude == 0.f && c.difference == 0.f) changed_cells_.push_back(slot);
   c.difference += std::fabs(now - before);
   c.magnitude += std::max(std::fabs(now), std::fabs(before));
+  c.now += now;
+  c.before += before;
   if (c.magnitude == 0.f && c.difference == 0.f) c.magnitude = 1e-30f;  // black both times: probed, no change
+}
+
+void TemporalHistory::rectify() {
+  for (const uint64_t slot : changed_cells_) {
+    const VoxelChange& c = change_[slot];
+    if (!(c.before > 0.f) || !(c.now >= 0.f)) continue;  // nothing to scale: the change alone decides
+    const float r = std::min(c.now / c.before, kMaxRectification);
+    for (float& m : history_[slot].mean) m *= r;
+  }
 }
 
 float TemporalHistory::change(uint64_t slot) const {

@@ -3,7 +3,9 @@
 //  * Blending (3.4.1): a vertex looks up its voxel's history combined with this step's average,
 //    by temporal integration (alpha = N_old / (N_old + N_new)), an exponential moving average, or
 //    the hybrid of fig. 9c: integration scaled down to 0 as the voxel's measured change (temporal
-//    finite differences of re-traced paths, HashedFilter::temporal_probes) reaches a threshold.
+//    finite differences of re-traced paths, HashedFilter::temporal_probes) reaches a threshold;
+//    with rectify (beyond the paper) a probed voxel's history is first scaled by its re-traced
+//    paths' luminance ratio now / before.
 //  * Folding: after the step's lookups, every voxel used in the step stores that combination as its
 //    new history, its weight capped at max_frames steps' worth of vertices.
 //  * Eviction (3.4.3): the top kPriorityShift.. bits of each fingerprint word hold a priority
@@ -29,6 +31,7 @@ namespace pathspace {
 struct VoxelChange {
   float difference = 0.f;  // sum of |luminance now - luminance in the previous frame|
   float magnitude = 0.f;   // sum of the larger of the two
+  float now = 0.f, before = 0.f;  // sums of the luminance now and in the previous frame (--temporal-rectify)
 };
 
 struct TemporalStepStats {
@@ -57,6 +60,10 @@ class TemporalHistory {
   // Hybrid: a re-traced path in cell `slot` whose contribution's luminance was `before` in the
   // previous frame and is `now` (serial; before the step's lookups).
   void add_change(uint64_t slot, float before, float now);
+  // --temporal-rectify, after the step's add_change calls and before its lookups: each probed cell's
+  // history mean times min(sum now / sum before, kMaxRectification) (serial, in the order the cells
+  // were first probed).
+  void rectify();
   // The relative change of a cell: this step's probes', else the last one measured.
   float change(uint64_t slot) const;
   // After the step's lookups: folds each used cell into its history, writes the priorities into the

@@ -33,6 +33,10 @@ struct TemporalSettings {
   // voxel's probed contributions at which alpha reaches 0.
   float probe_fraction = 0.125f;
   float change_threshold = 0.25f;
+  // hybrid, beyond the paper: before blending, a probed voxel's history is scaled by the ratio of its
+  // re-traced paths' luminance now to before (at most kMaxRectification), a ratio estimator of
+  // how much the voxel's mean changed, so that what is kept of the history follows the change.
+  bool rectify = false;
   // Sec. 3.4.2: a voxel new to the table whose point had history at another level of detail (the
   // camera moved) starts from it: the sums of its finer voxels as they are, or its coarser voxel's
   // average with finer_weight times that voxel's weight (a compromise: less noise, some blur).
@@ -41,6 +45,10 @@ struct TemporalSettings {
 
   bool enabled() const { return mode != TemporalMode::off; }
 };
+
+// --temporal-rectify: the largest factor by which a history is scaled up in one step (a voxel that
+// was nearly dark before is reset by its change instead).
+inline constexpr float kMaxRectification = 4.f;
 
 // Frames in chunks (docs/distributed.md): the voxel histories start from the 8 frames before a
 // chunk, the cycle in which the hybrid's probes (1/8 of the pixels a frame) visit every pixel once;
