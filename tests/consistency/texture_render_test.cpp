@@ -9,7 +9,8 @@
 //    applies the adjoint shading-normal correction);
 //  - PT's --texture-footprint (scene/texture_footprint.h): a camera hit's textures averaged over its
 //    pixel are the same for every ray of the pixel, close to the pixel's exact average where a point
-//    lookup is far from it, the point lookup itself where the texture is magnified, and what the
+//    lookup is far from it, the same through any lens point of a thin lens focused on the surface,
+//    the point lookup itself where the texture is magnified, and what the
 //    rendered image converges to (z-test); untextured scenes render bit for bit as without it.
 #include <gtest/gtest.h>
 
@@ -171,6 +172,30 @@ TEST(TextureFootprint, AveragesTheTextureOverThePixel) {
   // coarser rule's error, measured 0.0055 against the point lookup's 0.12.
   EXPECT_LT(footprint_error, 0.1 * point_error) << "footprint " << footprint_error << ", point lookup " << point_error;
   EXPECT_GT(point_error, 0.05) << "the texture must alias at one lookup per pixel, or this proves nothing";
+}
+
+// A thin lens focused on the quad: every lens point sees the pixel's square on the quad, so rays
+// through any lens point of a pixel average the same texels (up to rounding).
+TEST(TextureFootprint, ThinLensFocusedOnTheSurfaceSeesThePixel) {
+  Scene scene = textured_quad_scene(16, 32);
+  ASSERT_TRUE(set_thin_lens(&scene.camera, 0.05f, 3.f));  // the quad lies 3 units below the lens
+  scene.finalize();
+  const Accel accel(scene);
+  const SceneView view = scene.view();
+  const Scene pinhole_scene = textured_quad_scene(16, 32);
+  const Image pinhole = footprint_albedo(pinhole_scene, Accel(pinhole_scene), 0.5f, 0.5f);
+  double largest = 0.0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x)
+      for (const Point2 lens : {Point2{0.1f, 0.2f}, Point2{0.9f, 0.6f}}) {
+        const Ray ray = scene.camera.generate_ray(float(x) + 0.3f, float(y) + 0.7f, lens);
+        SurfaceHit hit;
+        ASSERT_TRUE(accel.intersect(ray, &hit));
+        Material storage;
+        const Rgb a = footprint_shading_material(view, hit, ray, &storage).diffuse, b = pinhole.at(x, y);
+        for (int c = 0; c < 3; ++c) largest = std::max(largest, double(std::fabs(a[c] - b[c])));
+      }
+  EXPECT_LT(largest, 1e-3);
 }
 
 TEST(TextureFootprint, MagnifiedTexturesKeepThePointLookup) {
