@@ -8,12 +8,27 @@
 
 namespace pathspace {
 
-PS_INLINE Material shading_material(const SceneView& scene, uint32_t material, Point2 uv) {
+PS_INLINE bool has_textures(const Material& m) { return m.diffuse_texture >= 0 || m.glossy_texture >= 0 || m.specular_texture >= 0; }
+
+// A copy of material record `material` with each textured reflectance multiplied by lookup(texture):
+// the one place that knows which reflectances carry textures (point lookups here, pixel footprints
+// in texture_footprint.h).
+template <typename Lookup>
+PS_INLINE Material textured_material(const SceneView& scene, uint32_t material, const Lookup& lookup) {
   Material m = scene.materials[material];
-  if (m.diffuse_texture >= 0) m.diffuse *= texture_lookup(scene.textures[m.diffuse_texture], uv);
-  if (m.glossy_texture >= 0) m.glossy *= texture_lookup(scene.textures[m.glossy_texture], uv);
-  if (m.specular_texture >= 0) m.specular *= texture_lookup(scene.textures[m.specular_texture], uv);
+  if (m.diffuse_texture >= 0) m.diffuse *= lookup(scene.textures[m.diffuse_texture]);
+  if (m.glossy_texture >= 0) m.glossy *= lookup(scene.textures[m.glossy_texture]);
+  if (m.specular_texture >= 0) m.specular *= lookup(scene.textures[m.specular_texture]);
   return m;
+}
+
+struct PointTextureLookup {
+  Point2 uv;
+  PS_HD Rgb operator()(const TextureView& t) const { return texture_lookup(t, uv); }
+};
+
+PS_INLINE Material shading_material(const SceneView& scene, uint32_t material, Point2 uv) {
+  return textured_material(scene, material, PointTextureLookup{uv});
 }
 
 PS_INLINE Material shading_material(const SceneView& scene, const SurfaceHit& hit) {
@@ -24,7 +39,7 @@ PS_INLINE Material shading_material(const SceneView& scene, const SurfaceHit& hi
 // pay no copy per bounce), else the textured copy written to *storage.
 PS_INLINE const Material& shading_material(const SceneView& scene, uint32_t material, Point2 uv, Material* storage) {
   const Material& m = scene.materials[material];
-  if (m.diffuse_texture < 0 && m.glossy_texture < 0 && m.specular_texture < 0) return m;
+  if (!has_textures(m)) return m;
   *storage = shading_material(scene, material, uv);
   return *storage;
 }

@@ -107,18 +107,21 @@ PS_INLINE Rgb footprint_texture_lookup(const TextureView& t, const PixelFootprin
   return sum * (1.f / float(nx * ny));
 }
 
+struct FootprintTextureLookup {
+  const PixelFootprint& footprint;
+  Point2 uv;  // the hit's: the point lookup of magnified textures
+  PS_HD Rgb operator()(const TextureView& t) const { return footprint_texture_lookup(t, footprint, uv); }
+};
+
 // shading_material for a camera ray's hit with its textures averaged over the pixel's footprint:
 // the scene's record when the material has no textures, else the filtered copy in *storage.
 PS_INLINE const Material& footprint_shading_material(const SceneView& scene, const SurfaceHit& hit, const Ray& camera_ray,
                                                      Material* storage) {
   const Material& m = scene.materials[hit.material];
-  if (m.diffuse_texture < 0 && m.glossy_texture < 0 && m.specular_texture < 0) return m;
+  if (!has_textures(m)) return m;
   PixelFootprint fp;
   if (!pixel_footprint(scene, hit, camera_ray, &fp)) return shading_material(scene, hit, storage);
-  *storage = m;
-  if (m.diffuse_texture >= 0) storage->diffuse *= footprint_texture_lookup(scene.textures[m.diffuse_texture], fp, hit.uv);
-  if (m.glossy_texture >= 0) storage->glossy *= footprint_texture_lookup(scene.textures[m.glossy_texture], fp, hit.uv);
-  if (m.specular_texture >= 0) storage->specular *= footprint_texture_lookup(scene.textures[m.specular_texture], fp, hit.uv);
+  *storage = textured_material(scene, hit.material, FootprintTextureLookup{fp, hit.uv});
   return *storage;
 }
 
