@@ -105,7 +105,12 @@ study::SceneSummary frame_summary(const study::ExperimentRunner& runner, const s
   return s;
 }
 
-study::Configuration hashed_config(const std::string& label, const std::vector<std::pair<std::string, std::string>>& options) {
+// Option names and values as the command line gives them ("" for a flag).
+using OptionList = std::vector<std::pair<std::string, std::string>>;
+// Named option lists: the modes and variants of a figure.
+using NamedOptions = std::vector<std::pair<std::string, OptionList>>;
+
+study::Configuration hashed_config(const std::string& label, const OptionList& options) {
   OptionValues values;
   for (const auto& [name, value] : options) values.set(name, value);
   return study::configuration(label, "pt", "hashed", values);
@@ -327,7 +332,7 @@ void run_fig9(const study::ExperimentRunner& runner, const TemporalStudyParams& 
   band_error(ref.mean, &band_noise);
 
   // Fig. 9's three modes, and hybrid with its histories rectified by the probes' ratio (beyond the paper).
-  const std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> modes = {
+  const NamedOptions modes = {
       {"ema", {{"temporal", "ema"}}},
       {"integrate", {{"temporal", "integrate"}}},
       {"hybrid", {{"temporal", "hybrid"}}},
@@ -351,13 +356,13 @@ void run_fig9(const study::ExperimentRunner& runner, const TemporalStudyParams& 
   }
   // At the filter's defaults, then with the voxels and queries of the orbit's last mode (s = 4 px,
   // 7 query paths per pixel: the per-frame error that hybrid is left with is smaller there).
-  const std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> variants = {
+  const NamedOptions variants = {
       {"", {}}, {fmt::format("s {}, {} queries", kTemporalScale, kTemporalQueries), {{"psf-scale", kTemporalScale}, {"psf-aa-paths", kTemporalQueries}}}};
   std::vector<double> bands, whole;  // per variant: ema, integrate, hybrid, hybrid rectified
   for (const auto& [variant, variant_options] : variants) {
     for (const auto& [mode_name, mode_options] : modes) {
       const std::string mode = variant.empty() ? mode_name : mode_name + ", " + variant;
-      std::vector<std::pair<std::string, std::string>> options = mode_options;
+      OptionList options = mode_options;
       options.emplace_back("psf-no-jitter", "");
       options.insert(options.end(), variant_options.begin(), variant_options.end());
       const study::Configuration c = hashed_config("hashed, temporal " + mode, options);

@@ -22,7 +22,6 @@ namespace pathspace {
 
 namespace {
 
-constexpr size_t kGrain = 2048;
 constexpr int32_t kNotAccumulated = kSlotNotAccumulated;  // contribution not representable (NaN, negative, huge)
 
 double milliseconds_since(std::chrono::steady_clock::time_point t0) {

@@ -92,6 +92,7 @@ class HashedFilter final : public PathSpaceFilter {
   VoxelKey key_of(const VertexBuffer& buffer, size_t slot, uint64_t seed, uint32_t pass) const;
 
  private:
+  static constexpr size_t kGrain = 2048;  // paths per parallel_for chunk of the per-vertex steps
   VoxelKey key_for_pass(const VertexBuffer& buffer, size_t slot, uint64_t pass_hash) const;
   bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
   void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);

@@ -51,7 +51,7 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
   std::vector<uint8_t> reassigned(size_t(table_.cells()), 0);
   for (const auto& a : assigned) reassigned[a.first] = 1;
   std::atomic<uint64_t> lost{0};
-  parallel_for(b.paths(), 2048, [&](size_t begin, size_t end) {
+  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t n = 0;
     for (size_t path = begin; path < end; ++path)
       for (int r = 0; r < b.count[path]; ++r) {

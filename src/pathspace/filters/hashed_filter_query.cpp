@@ -24,7 +24,7 @@ void HashedFilter::query(const VertexBuffer& queries, std::vector<Rgb>* values, 
   const VertexBufferView qv = queries.view();
   const TemporalHistory* history = history_.get();
   std::atomic<uint64_t> records{0}, hits{0};
-  parallel_for(queries.paths(), 2048, [&](size_t begin, size_t end) {
+  parallel_for(queries.paths(), kGrain, [&](size_t begin, size_t end) {
     LookupCounters ignored;  // the pass's own lookups keep the low-count statistics
     uint64_t local_records = 0, local_hits = 0;
     for (size_t path = begin; path < end; ++path)
