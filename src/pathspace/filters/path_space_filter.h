@@ -12,6 +12,7 @@
 #include "pathspace/base/state_archive.h"
 #include "pathspace/camera/perspective_camera.h"
 #include "pathspace/filters/caustic_settings.h"
+#include "pathspace/filters/filter_workspace.h"
 #include "pathspace/film/film.h"
 #include "pathspace/film/image.h"
 #include "pathspace/filters/vertex_buffer.h"
@@ -80,6 +81,13 @@ class PathSpaceFilter {
   // What the next pass needs besides the options (RenderSession::save_state).
   virtual void save_state(StateWriter&) const {}
   virtual void load_state(StateReader&) {}
+
+  // The integrator's buffers for this filter's passes (filter_workspace.h: why the filter keeps them).
+  FilterWorkspace& workspace() { return workspace_; }
+  const FilterWorkspace& workspace() const { return workspace_; }
+
+ private:
+  FilterWorkspace workspace_;
 };
 
 // `--filter passthrough`: every vertex keeps its own contribution, so the image equals plain PT

@@ -183,7 +183,7 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   integrator_ = create_integrator(*scene, *next_accel, frame_config, integrator_->carried_filter());
   scene_ = std::move(scene);
   accel_ = std::move(next_accel);
-  film_ = Film(film_.width(), film_.height());
+  film_.clear();  // same size (checked above): its memory is reused, not allocated and faulted in again
   counters_ = PathCounters{};
   passes_ = 0;
   wall_s_ = 0.0;

@@ -84,6 +84,11 @@ void PtIntegrator::skip_pass(uint32_t, size_t pixels) {
   if (filter_) filter_->skip_pass(pixels);
 }
 
+const VertexBuffer& PtIntegrator::vertex_buffer() const {
+  static const VertexBuffer kNone;
+  return filter_ ? filter_->workspace().paths : kNone;
+}
+
 std::string PtIntegrator::distribution_limit() const { return filter_ ? filter_->distribution_limit() : std::string(); }
 
 void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counters) {
@@ -111,21 +116,22 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
   const size_t batch = filter_->batch_paths(per_path);
   const size_t step = batch == 0 ? n : std::min(n, batch);
   if (caustics_) caustics_->build(accel_, seed_, pass, counters);  // 2014 paper, sec. 2.3
+  FilterWorkspace& w = filter_->workspace();
   if (const ProbeRequest* request = filter_->probe_request(pass)) {  // 2021 paper, sec. 3.4.1 (hybrid)
-    trace_probes(*request, &probes_buffer_, counters);
-    filter_->temporal_probes(probes_buffer_);
+    trace_probes(*request, &w.probes, counters);
+    filter_->temporal_probes(w.probes);
   }
   for (size_t first = 0; first < n; first += step) {
     const size_t paths = std::min(step, n - first);
-    trace_batch(pass, first, paths, 0, &buffer_, counters);
-    filter_->filter(buffer_, seed_, pass, &filtered_);
-    resolve_filtered_pass(buffer_, filtered_, film, &counters);
+    trace_batch(pass, first, paths, 0, &w.paths, counters);
+    filter_->filter(w.paths, seed_, pass, &w.filtered);
+    resolve_filtered_pass(w.paths, w.filtered, film, &counters);
     // 2014 paper, sec. 3 (fig. 7): extra camera paths per pixel that only query the batch's
     // vertices, so anti-aliasing costs a primary ray, not a path.
     for (int k = 1; k <= needs_.query_paths; ++k) {
-      trace_batch(pass, first, paths, k, &queries_, counters);  // their rays count, they are not paths
-      filter_->query(queries_, &queried_, &found_);
-      resolve_filtered_pass(queries_, queried_, film, &counters, &found_);
+      trace_batch(pass, first, paths, k, &w.queries, counters);  // their rays count, they are not paths
+      filter_->query(w.queries, &w.queried, &w.found);
+      resolve_filtered_pass(w.queries, w.queried, film, &counters, &w.found);
     }
   }
   filter_->end_pass();

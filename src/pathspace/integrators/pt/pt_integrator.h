@@ -39,7 +39,8 @@ class PtIntegrator final : public Integrator {
   std::shared_ptr<PathSpaceFilter> carried_filter() const override { return filter_; }
   uint32_t frame_warm_up() const override { return filter_ ? filter_->frame_warm_up() : 0; }
 
-  const VertexBuffer& vertex_buffer() const { return buffer_; }
+  // The last batch's vertices (empty without a filter).
+  const VertexBuffer& vertex_buffer() const;
   const PathSpaceFilter* filter() const { return filter_.get(); }
 
  private:
@@ -57,12 +58,6 @@ class PtIntegrator final : public Integrator {
   std::vector<uint32_t> probe_lights_;  // the delta lights of the visibility weight
   VisibilityProbes probes_;             // none unless the filter needs visibility
   std::unique_ptr<CausticPhotonMap> caustics_;  // null unless the filter asks for photon-mapped caustics
-  VertexBuffer buffer_;                 // one batch of the pass
-  std::vector<Rgb> filtered_;
-  VertexBuffer queries_;                // one batch of query-only paths
-  std::vector<Rgb> queried_;
-  std::vector<uint8_t> found_;
-  VertexBuffer probes_buffer_;          // the previous frame's paths traced again (--temporal hybrid)
 };
 
 }  // namespace pathspace
