@@ -61,9 +61,9 @@ TEST(AccelInstancing, MovingPartsHitExactlyLikeTheFlatStructure) {
   }
 }
 
-// A camera moving through a still scene: frames after the first are built in two levels with all of
-// the scene static, and from the third frame on the previous frame's structure is reused whole.
-TEST(AccelInstancing, StillScenesAreReusedWholeFromTheSecondTwoLevelFrame) {
+// A camera moving through a still scene: frames after the first keep a static part, all of the
+// scene (traced without an instance level), and from the third frame on it is reused whole.
+TEST(AccelInstancing, StillScenesAreReusedWholeFromTheThirdFrame) {
   const Scene scene = make_builtin_scene("cornell-box", 16, 16);  // nothing moves
   const Accel a0(scene);
   const Accel a1(scene, &a0);  // a0 is flat: the static part is built here

@@ -4,7 +4,8 @@
 // A scene with moving parts (Scene::first_moving_triangle / first_moving_sphere), or any frame built
 // after a previous one, is built in two levels: the static part and the moving part are two
 // instanced Embree scenes, and the next frame's Accel reuses the static part when it is unchanged,
-// so a frame rebuilds only the moving part and the two-instance top level (docs/animation.md).
+// so a frame rebuilds only the moving part and the two-instance top level (docs/animation.md). A
+// frame in which nothing moves traces its static part directly, without the instance level.
 // Cutouts (scene/surface_opacity.h) are tested in a context filter function, only in scenes that have
 // them: the filter reads the current frame's materials through the query's context, so a reused
 // static part needs no pointer into a frame that is gone.
@@ -302,6 +303,27 @@ struct Accel::Impl {
     }
     return ctx;
   }
+
+  // The moving part (triangles and spheres from the static counts on) and the top level of two
+  // instances above it and the static part, which must be set.
+  void build_two_levels(RTCDevice device, const Scene& scene, uint32_t static_triangles, uint32_t static_spheres) {
+    const uint32_t triangles = uint32_t(scene.triangles.size()), spheres = uint32_t(scene.spheres.size());
+    RTCScene moving = build_part(device, scene, static_triangles, triangles, scene.spheres.data() + static_spheres,
+                                 spheres - static_spheres, RTC_BUILD_QUALITY_MEDIUM, cutouts);
+    rtc_scene = rtcNewScene(device);
+    if (cutouts) rtcSetSceneFlags(rtc_scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    const float identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};  // 3x4, column major
+    for (const auto& [id, part] : {std::pair{0u, static_part->scene}, std::pair{1u, moving}}) {
+      RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(instance, part);
+      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, identity);
+      rtcCommitGeometry(instance);
+      rtcAttachGeometryByID(rtc_scene, instance, id);
+      rtcReleaseGeometry(instance);
+    }
+    rtcReleaseScene(moving);  // the instance holds it
+    rtcCommitScene(rtc_scene);
+  }
 };
 
 Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique<Impl>()) {
@@ -343,21 +365,14 @@ Accel::Accel(const Scene& scene, const Accel* previous) : impl_(std::make_unique
     impl_->moving_triangle_offset = static_triangles;
     impl_->cutout_view.moving_triangle_offset = static_triangles;
     impl_->moving_sphere_offset = static_spheres;
-    RTCScene moving = build_part(device, scene, static_triangles, triangles, scene.spheres.data() + static_spheres,
-                                 spheres - static_spheres, RTC_BUILD_QUALITY_MEDIUM, cutouts);
-    impl_->rtc_scene = rtcNewScene(device);
-    if (cutouts) rtcSetSceneFlags(impl_->rtc_scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-    const float identity[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};  // 3x4, column major
-    for (const auto& [id, part] : {std::pair{0u, impl_->static_part->scene}, std::pair{1u, moving}}) {
-      RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(instance, part);
-      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, identity);
-      rtcCommitGeometry(instance);
-      rtcAttachGeometryByID(impl_->rtc_scene, instance, id);
-      rtcReleaseGeometry(instance);
+    if (static_triangles == triangles && static_spheres == spheres) {
+      // Nothing moves: the static part is the whole scene and is traced as it is. An instance level
+      // above it would cost every ray a second traversal (its hits would be the same).
+      impl_->rtc_scene = impl_->static_part->scene;
+      rtcRetainScene(impl_->rtc_scene);
+    } else {
+      impl_->build_two_levels(device, scene, static_triangles, static_spheres);
     }
-    rtcReleaseScene(moving);  // the instance holds it
-    rtcCommitScene(impl_->rtc_scene);
   }
   const RTCError err = rtcGetDeviceError(device);
   if (err != RTC_ERROR_NONE) throw Error(fmt::format("Embree failed to build the scene (error {})", int(err)));
