@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pathspace/base/error.h"
+#include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
 
@@ -12,27 +13,36 @@ Film::Film(int width, int height)
     : width_(width), height_(height), sum_(3 * size_t(width) * size_t(height)),
       sum_sq_(3 * size_t(width) * size_t(height)), count_(size_t(width) * size_t(height)) {}
 
+namespace {
+// Pixels per task of the per-pixel loops below (a film is read once per output: its frames' snapshots).
+constexpr size_t kPixelGrain = size_t(1) << 14;
+}  // namespace
+
 Image Film::mean() const {
   Image img(width_, height_);
-  for (size_t i = 0; i < count_.size(); ++i) {
-    if (count_[i] == 0) continue;
-    const double n = count_[i];
-    img.pixels[i] = Rgb(float(sum_[3 * i] / n), float(sum_[3 * i + 1] / n), float(sum_[3 * i + 2] / n));
-  }
+  parallel_for(count_.size(), kPixelGrain, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      if (count_[i] == 0) continue;
+      const double n = count_[i];
+      img.pixels[i] = Rgb(float(sum_[3 * i] / n), float(sum_[3 * i + 1] / n), float(sum_[3 * i + 2] / n));
+    }
+  });
   return img;
 }
 
 Image Film::variance_of_mean() const {
   Image img(width_, height_);
-  for (size_t i = 0; i < count_.size(); ++i) {
-    const double n = count_[i];
-    if (n < 2) continue;
-    for (int c = 0; c < 3; ++c) {
-      const double m = sum_[3 * i + c] / n;
-      const double var = std::max(0.0, (sum_sq_[3 * i + c] - n * m * m) / (n - 1));
-      img.pixels[i][c] = float(var / n);
+  parallel_for(count_.size(), kPixelGrain, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const double n = count_[i];
+      if (n < 2) continue;
+      for (int c = 0; c < 3; ++c) {
+        const double m = sum_[3 * i + c] / n;
+        const double var = std::max(0.0, (sum_sq_[3 * i + c] - n * m * m) / (n - 1));
+        img.pixels[i][c] = float(var / n);
+      }
     }
-  }
+  });
   return img;
 }
 

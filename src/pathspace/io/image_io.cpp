@@ -20,7 +20,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <string_view>
+#include <thread>
 
 #include <OpenEXR/IexBaseExc.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -30,6 +32,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfThreading.h>
 
 // stb is compiled here, with static linkage so another library bundling stb (tinygltf) cannot
 // clash with it. Its own warnings are not ours.
@@ -77,6 +80,7 @@ static unsigned char* pathspace_png_deflate(unsigned char* data, int data_len, i
 #include "pathspace/film/tonemap.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/file_bytes.h"
+#include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
 namespace {
@@ -106,6 +110,13 @@ std::string lower_extension(const std::string& path) {
 // ---- writing ---------------------------------------------------------------------------------
 
 
+// OpenEXR's thread pool, made once with a thread per core; each file uses as many of them as the
+// render may (ThreadLimit::active()).
+void start_exr_threads() {
+  static std::once_flag once;
+  std::call_once(once, [] { Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency()))); });
+}
+
 std::string encode_exr(const Image& image, ImageEncoding encoding) {
   Imf::Header header(image.width, image.height);
   header.compression() = encoding == ImageEncoding::fast ? Imf::NO_COMPRESSION : Imf::ZIP_COMPRESSION;
@@ -120,7 +131,9 @@ std::string encode_exr(const Image& image, ImageEncoding encoding) {
   }
   Imf::StdOSStream out;
   {
-    Imf::OutputFile file(out, header);  // the destructor writes the line offset table
+    // Line blocks are compressed in parallel (the file's bytes do not depend on how many threads).
+    start_exr_threads();
+    Imf::OutputFile file(out, header, ThreadLimit::active());  // the destructor writes the line offset table
     file.setFrameBuffer(frame);
     file.writePixels(image.height);
   }
@@ -157,8 +170,10 @@ std::string encode_pfm(const Image& image) {
 std::string encode_png(const std::string& path, const Image& image, ImageEncoding encoding) {
   pathspace_png_level = encoding == ImageEncoding::fast ? Z_BEST_SPEED : Z_DEFAULT_COMPRESSION;
   std::vector<unsigned char> px(image.size() * 3);
-  for (size_t i = 0; i < image.size(); ++i)
-    for (int c = 0; c < 3; ++c) px[3 * i + size_t(c)] = to_srgb8(image.pixels[i][c]);
+  parallel_for(image.size(), size_t(1) << 14, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      for (int c = 0; c < 3; ++c) px[3 * i + size_t(c)] = to_srgb8(image.pixels[i][c]);
+  });
   std::string out;
   auto sink = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
