@@ -164,7 +164,7 @@ PS_INLINE bool prefer_fine_voxel(const VoxelCell& fine, const VoxelCell& coarse,
   if (coarse.count <= fine.count) return true;  // the coarse cell adds no vertex
   const double nf = double(fine.count), nc = double(coarse.count), unit = 1.0 / double(kFixedPointScale);
   const auto luminance_average = [&](const VoxelCell& c, double n) {
-    return (0.212671 * double(c.sum[0]) + 0.715160 * double(c.sum[1]) + 0.072169 * double(c.sum[2])) * unit / n;
+    return luminance_of(double(c.sum[0]), double(c.sum[1]), double(c.sum[2])) * unit / n;
   };
   const double lf = luminance_average(fine, nf), lc = luminance_average(coarse, nc);
   const double mean_square = double(coarse_squares) * unit / nc;

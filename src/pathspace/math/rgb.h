@@ -31,8 +31,13 @@ PS_INLINE bool operator==(const Rgb& a, const Rgb& b) { return a.r == b.r && a.g
 PS_INLINE bool is_black(const Rgb& c) { return c.r == 0.f && c.g == 0.f && c.b == 0.f; }
 PS_INLINE float max_component(const Rgb& c) { return fmaxf(c.r, fmaxf(c.g, c.b)); }
 PS_INLINE float average(const Rgb& c) { return (c.r + c.g + c.b) * (1.f / 3.f); }
-// Rec. 709 / linear sRGB luminance (the weights of docs/conventions.md and SmallVCM).
-PS_INLINE float luminance(const Rgb& c) { return 0.212671f * c.r + 0.715160f * c.g + 0.072169f * c.b; }
+// Rec. 709 / linear sRGB luminance (the weights of docs/conventions.md and SmallVCM), in float or
+// in double (the hashed filter's fixed-point sums).
+template <typename T>
+PS_INLINE T luminance_of(T r, T g, T b) { return T(0.212671) * r + T(0.715160) * g + T(0.072169) * b; }
+PS_INLINE float luminance(const Rgb& c) { return luminance_of(c.r, c.g, c.b); }
+static_assert(float(0.212671) == 0.212671f && float(0.715160) == 0.715160f && float(0.072169) == 0.072169f,
+              "the float weights are the decimal constants rounded once");
 PS_INLINE bool all_finite(const Rgb& c) { return isfinite(c.r) && isfinite(c.g) && isfinite(c.b); }
 
 }  // namespace pathspace
