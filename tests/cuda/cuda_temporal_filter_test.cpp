@@ -154,9 +154,15 @@ TEST_P(CudaTemporalFilterTest, CaseExercisesItsSteps) {
   }
   const HashedFilterStats& a = cpu.stats();
   EXPECT_GT(a.mean_alpha_last, 0.0) << c.name;
-  if (c.settings.temporal.level_transfer) EXPECT_GT(a.from_finer + a.from_coarser, 0u) << c.name;
-  if (c.settings.table_factor < 1.f || c.settings.temporal.eviction == EvictionPolicy::stale) EXPECT_GT(a.evicted, 0u) << c.name;
-  if (c.settings.table_factor < 0.01f) EXPECT_GT(settled, 0u) << c.name;
+  if (c.settings.temporal.level_transfer) {
+    EXPECT_GT(a.from_finer + a.from_coarser, 0u) << c.name;
+  }
+  if (c.settings.table_factor < 1.f || c.settings.temporal.eviction == EvictionPolicy::stale) {
+    EXPECT_GT(a.evicted, 0u) << c.name;
+  }
+  if (c.settings.table_factor < 0.01f) {
+    EXPECT_GT(settled, 0u) << c.name;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CudaTemporalFilterTest, ::testing::ValuesIn(temporal_cases()),

@@ -103,7 +103,7 @@ void add_mesh(const LocalMesh& mesh, const ShapeTransform& st, bool flip, uint32
 
 // Mitsuba's rectangle: uv = ((x + 1) / 2, (y + 1) / 2).
 LocalMesh rectangle() {
-  LocalMesh m{{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, {0, 1, 2, 2, 3, 0}, {}};
+  LocalMesh m{{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, {0, 1, 2, 2, 3, 0}, {}, {}};
   for (const Vec3& p : m.positions) m.uvs.push_back(from_mitsuba_uv(0.5f * (p.x + 1.f), 0.5f * (p.y + 1.f)));
   return m;
 }
