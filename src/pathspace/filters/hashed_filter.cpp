@@ -267,7 +267,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
   // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most.
-  tbb::enumerable_thread_specific<LocalVoxelCache> caches;
+  tbb::enumerable_thread_specific<LocalVoxelCache>& caches = caches_;
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache& local = caches.local();

@@ -5,6 +5,8 @@
 // unfiltered contribution. Statistics and debug images (AOVs) show what the table did.
 #pragma once
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <memory>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "pathspace/film/image.h"
 #include "pathspace/filters/hashed_filter_settings.h"
 #include "pathspace/filters/hashed_filter_steps.h"
+#include "pathspace/filters/local_voxel_cache.h"
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/filters/temporal_history.h"
 #include "pathspace/hashing/voxel_hash_table.h"
@@ -133,6 +136,10 @@ class HashedFilter final : public PathSpaceFilter {
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;
   std::vector<int32_t> slots_, coarse_slots_;  // table cell per record slot; < 0: not in the table
+  // accumulate()'s combining cache per thread (1 MiB each), kept from pass to pass: made anew,
+  // every pass of an animation paid for allocating, zeroing and faulting them in. Each pass's
+  // flush_all leaves them empty.
+  tbb::enumerable_thread_specific<LocalVoxelCache> caches_;
   std::vector<uint16_t> probes_;
   std::vector<uint32_t> counts_;
   std::vector<uint32_t> first_slot_of_pixel_;
