@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "pathspace/film/image.h"
 #include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/math/rgb.h"
 
 namespace pathspace {
 

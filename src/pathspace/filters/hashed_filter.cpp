@@ -266,11 +266,11 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const bool adaptive = settings_.adaptive;
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
-  // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most.
-  tbb::enumerable_thread_specific<LocalVoxelCache>& caches = caches_;
+  // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most
+  // (caches_, kept from pass to pass).
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
-    LocalVoxelCache& local = caches.local();
+    LocalVoxelCache& local = caches_.local();
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
     // is memory bound; docs/benchmarks.md, "The machine").
@@ -381,7 +381,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     process_batch();
     counters.add(vertices, insertions, failures, not_accumulated, probes, probes_max);
   });
-  tbb::parallel_for_each(caches.begin(), caches.end(), [&](LocalVoxelCache& c) { c.flush_all(view); });
+  tbb::parallel_for_each(caches_.begin(), caches_.end(), [&](LocalVoxelCache& c) { c.flush_all(view); });
   stats_.vertices += counters.vertices;
   stats_.insertions += counters.insertions;
   stats_.probe_failures += counters.failures;
