@@ -15,6 +15,7 @@
 #include "pathspace/filters/hashed_filter_limits.h"
 #include "pathspace/filters/local_voxel_cache.h"
 #include "pathspace/filters/temporal_statistics.h"
+#include "pathspace/filters/voxel_key_blocks.h"
 #include "pathspace/hashing/voxel_key_batch.h"
 #include "pathspace/parallel/parallel_for.h"
 
@@ -307,33 +308,16 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       n = 0;
     };
     // Keys and hashes are computed for a block of vertices first, eight or sixteen at a time
-    // (voxel_key_batch.h), in a loop without table access; the table work follows per vertex.
-    VoxelKeyBatch key_batch;
-    size_t block_slot[kVoxelKeyBatchSize];
+    // (voxel_key_blocks.h), in a loop without table access; the table work follows per vertex.
+    VoxelKeyBlocks blocks(settings_.key, b.view(), begin, end, pass_hash, isa);
+    const VoxelKeyBatch& key_batch = blocks.batch();
     int block_n = 0, block_next = 0;
-    size_t path = begin;
-    int rec = 0;
-    const int records_per_path = b.records_per_path();
-    const VertexBufferView bv = b.view();
     auto fill_block = [&] {
-      block_n = block_next = 0;
-      // Without a branch per slot: every slot is written to the next lane, which only advances
-      // when the slot holds a record (a quarter of second-bounce paths have none, in no
-      // predictable pattern, and a mispredicted branch cost more than the copy).
-      while (block_n < kVoxelKeyBatchSize && path < end) {
-        const size_t i = b.slot(path, rec);
-        key_batch.set_input(block_n, key_input(bv, i), jitter_seed(pass_hash, i));
-        block_slot[block_n] = i;
-        block_n += rec < b.count[path] ? 1 : 0;
-        if (++rec == records_per_path) {
-          rec = 0;
-          ++path;
-        }
-      }
-      compute_voxel_keys(settings_.key, block_n, &key_batch, isa);
+      block_n = blocks.next();
+      block_next = 0;
       for (int j = 0; j < block_n; ++j) {
-        if (keep_keys) keys_[block_slot[j]] = key_batch.keys[j];
-        if (adaptive) fine_voxel_[block_slot[j]] = voxel_identity(key_batch.hashes[j]);
+        if (keep_keys) keys_[blocks.slot(j)] = key_batch.keys[j];
+        if (adaptive) fine_voxel_[blocks.slot(j)] = voxel_identity(key_batch.hashes[j]);
         local.prefetch(key_batch.hashes[j]);  // an L2 miss when vertices are incoherent
       }
     };
@@ -344,7 +328,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
       }
       {
         const int j = block_next++;
-        const size_t i = block_slot[j];
+        const size_t i = blocks.slot(j);
         const VoxelHash h = key_batch.hashes[j];
         ++vertices;
         uint64_t fixed[3];

@@ -3,12 +3,13 @@
 // fig. 7, which the 2021 filter inherits): a pixel then averages several primary hits, so edges and
 // texture detail that one hit per pixel aliases converge, for the price of a primary ray and a
 // lookup instead of a path. Queries add nothing to the table. A query vertex is keyed like a
-// vertex of the pass, with a jitter of its own per round of queries; it finds its voxel or not
-// (not: its path is left out of the pixel, as the consistent filter's empty queries are).
+// vertex of the pass (batched, voxel_key_blocks.h), with a jitter of its own per round of queries;
+// it finds its voxel or not (not: its path is left out of the pixel, as the consistent filter's
+// empty queries are).
 #include <atomic>
 
 #include "pathspace/filters/hashed_filter.h"
-#include "pathspace/filters/hashed_filter_keys.h"
+#include "pathspace/filters/voxel_key_blocks.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -23,16 +24,19 @@ void HashedFilter::query(const VertexBuffer& queries, std::vector<Rgb>* values, 
   const uint64_t pass_hash = hash_combine(pass_hash_, ++query_round_);
   const VertexBufferView qv = queries.view();
   const TemporalHistory* history = history_.get();
+  const VoxelKeyIsa isa = widest_voxel_key_isa();
   std::atomic<uint64_t> records{0}, hits{0};
   parallel_for(queries.paths(), kGrain, [&](size_t begin, size_t end) {
     LookupCounters ignored;  // the pass's own lookups keep the low-count statistics
     uint64_t local_records = 0, local_hits = 0;
-    for (size_t path = begin; path < end; ++path)
-      for (int r = 0; r < queries.count[path]; ++r) {
-        const size_t i = queries.slot(path, r);
+    VoxelKeyBlocks blocks(settings_.key, qv, begin, end, pass_hash, isa);
+    const VoxelKeyBatch& keys = blocks.batch();
+    for (int n = blocks.next(); n > 0; n = blocks.next())
+      for (int j = 0; j < n; ++j) {
+        const size_t i = blocks.slot(j);
         ++local_records;
-        const VoxelKey key = pathspace::key_for_pass(settings_.key, qv, i, pass_hash);
-        const ProbeResult pr = view.find(hash_voxel_key(key, settings_.key.normal));
+        const VoxelKey& key = keys.keys[j];
+        const ProbeResult pr = view.find(keys.hashes[j]);
         if (pr.slot < 0) continue;
         const int32_t s = int32_t(pr.slot);
         const VoxelCell& cell = view.cells[s];
