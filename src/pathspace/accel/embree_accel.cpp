@@ -147,9 +147,17 @@ struct StaticPart {
   }
 };
 
+// Embree picks the widest kernels the CPU has, and its AVX-512 kernels give hit distances that
+// differ from its AVX2 kernels in the last bits: images would then depend on whether the CPU has
+// AVX-512 (and the passes of a distributed render on such mixed machines would not add up to one
+// process's image). Limited to AVX2, hits are the same on every x86-64 CPU with AVX2; on the
+// development machine (AMD Zen 4) they are also faster: 0.967x the render time of a 640x360
+// cornell-box frame (8 interleaved pairs; docs/benchmarks.md). Checked by embree_kernels_test.cpp.
+constexpr const char* kEmbreeDeviceConfig = "max_isa=avx2";
+
 std::shared_ptr<SharedDevice> new_device() {
   auto d = std::make_shared<SharedDevice>();
-  d->device = rtcNewDevice(nullptr);
+  d->device = rtcNewDevice(kEmbreeDeviceConfig);
   if (!d->device) throw Error(fmt::format("cannot create an Embree device (error {})", int(rtcGetDeviceError(nullptr))));
   rtcSetDeviceErrorFunction(d->device, error_callback, nullptr);
   return d;
