@@ -2,7 +2,9 @@
 // hit does not depend on whether the CPU also has AVX-512, whose kernels differ in the last bits.
 // Checked against a plain Embree scene of the same triangles on a device forced to AVX2: every hit
 // distance must be the same bit for bit. On a CPU with AVX-512 this fails if Accel uses Embree's
-// default kernels again; on one without, both are AVX2 anyway.
+// default kernels again; on one without, both are AVX2 anyway. Path tracing traces each chunk's
+// camera rays as one coherent stream (Accel::intersect_batch, Embree's packet kernels), so those
+// must find the hits of single rays bit for bit too.
 #include <embree3/rtcore.h>
 #include <gtest/gtest.h>
 
@@ -10,6 +12,7 @@
 #include <cstring>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/sampling/hash.h"
 #include "pathspace/scene/builtin_scenes.h"
 
@@ -86,6 +89,38 @@ TEST(EmbreeKernels, HitsAreThoseOfTheAvx2Kernels) {
   std::printf("Embree's default kernels on this CPU: %d of 20000 hit distances differ from AVX2's\n", compare(accel, own).differing);
   rtcReleaseScene(own);
   rtcReleaseDevice(widest);
+}
+
+// Camera rays of a 640x360 image of the Cornell box with its mirror and glass spheres (Embree user
+// geometry), in the streams of 64 rays that PtIntegrator traces.
+TEST(EmbreeKernels, CoherentCameraRayStreamsHitLikeSingleRays) {
+  const Scene s = make_builtin_scene("cornell-box", 640, 360);
+  const Accel accel(s);
+  const SceneView view = s.view();
+  constexpr uint32_t kStream = 64;
+  int triangles = 0, spheres = 0;
+  for (uint32_t first = 0; first < 640 * 360; first += kStream) {
+    Ray rays[kStream];
+    SurfaceHit batch[kStream];
+    bool found[kStream];
+    for (uint32_t k = 0; k < kStream; ++k) {
+      const Sampler sampler(3, first + k, 0);
+      rays[k] = sample_camera_ray(view, sampler, first + k, camera_path_time(view, sampler));
+    }
+    accel.intersect_batch(rays, batch, found, kStream, /*coherent=*/true);
+    for (uint32_t k = 0; k < kStream; ++k) {
+      SurfaceHit single;
+      ASSERT_EQ(found[k], accel.intersect(rays[k], &single)) << "pixel " << first + k;
+      if (!found[k]) continue;
+      ASSERT_EQ(std::memcmp(&single.t, &batch[k].t, sizeof(float)), 0) << "pixel " << first + k;
+      ASSERT_EQ(std::memcmp(&single.p, &batch[k].p, sizeof(Vec3)), 0) << "pixel " << first + k;
+      ASSERT_EQ(single.prim, batch[k].prim);
+      ASSERT_EQ(single.kind, batch[k].kind);
+      (single.kind == ShapeKind::sphere ? spheres : triangles)++;
+    }
+  }
+  EXPECT_GT(triangles, 100000);
+  EXPECT_GT(spheres, 10000);
 }
 
 }  // namespace

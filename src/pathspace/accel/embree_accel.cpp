@@ -421,14 +421,18 @@ float Accel::hit_distance(const Ray& ray) const {
 
 void Accel::intersect_batch(const Ray* rays, SurfaceHit* hits, bool* found, uint32_t count, bool coherent) const {
   QueryContext ctx = impl_->context(coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
-  std::vector<RTCRayHit> rh(count);
-  for (uint32_t i = 0; i < count; ++i) {
-    fill_ray(rays[i], &rh[i].ray);
-    rh[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  constexpr uint32_t kStream = 64;  // rays per Embree stream: on the stack, no allocation per call
+  RTCRayHit rh[kStream];
+  for (uint32_t first = 0; first < count; first += kStream) {
+    const uint32_t n = std::min(kStream, count - first);
+    for (uint32_t i = 0; i < n; ++i) {
+      fill_ray(rays[first + i], &rh[i].ray);
+      rh[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect1M(impl_->rtc_scene, &ctx.rtc, rh, n, sizeof(RTCRayHit));
+    for (uint32_t i = 0; i < n; ++i) found[first + i] = impl_->fill_hit(rays[first + i], rh[i], &hits[first + i]);
   }
-  rtcIntersect1M(impl_->rtc_scene, &ctx.rtc, rh.data(), count, sizeof(RTCRayHit));
-  for (uint32_t i = 0; i < count; ++i) found[i] = impl_->fill_hit(rays[i], rh[i], &hits[i]);
 }
 
 void Accel::occluded_batch(const Ray* rays, bool* blocked, uint32_t count) const {

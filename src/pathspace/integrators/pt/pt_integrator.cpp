@@ -34,6 +34,25 @@ struct SharedCounters {
   }
 };
 
+// The camera rays of a chunk of paths are traced together, kCameraBatch at a time, as one coherent
+// Embree stream: they start at one point in nearly one direction, and the stream's packets trace
+// them in about half the time of one ray after another, with the same hits (docs/benchmarks.md).
+// Each path then continues alone (pt_continue_path). ray_of(path) gives a path's camera ray,
+// go_on(path, ray, found, hit) continues it.
+constexpr size_t kCameraBatch = 64;
+template <typename RayOf, typename GoOn>
+void trace_from_camera_batches(const Accel& accel, size_t begin, size_t end, const RayOf& ray_of, const GoOn& go_on) {
+  Ray rays[kCameraBatch];
+  SurfaceHit hits[kCameraBatch];
+  bool found[kCameraBatch];
+  for (size_t first = begin; first < end; first += kCameraBatch) {
+    const uint32_t n = uint32_t(std::min(kCameraBatch, end - first));
+    for (uint32_t k = 0; k < n; ++k) rays[k] = ray_of(first + k);
+    accel.intersect_batch(rays, hits, found, n, /*coherent=*/true);
+    for (uint32_t k = 0; k < n; ++k) go_on(first + k, rays[k], found[k], hits[k]);
+  }
+}
+
 }  // namespace
 
 PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSettings& settings, uint64_t seed,
@@ -96,15 +115,20 @@ void PtIntegrator::render_plain(uint32_t pass, Film& film, PathCounters& counter
   SharedCounters shared;
   parallel_for(n, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
-    for (size_t pixel = begin; pixel < end; ++pixel) {
+    PathSample sample;
+    const auto ray_of = [&](size_t pixel) {
       const Sampler sampler(seed_, pixel, pass);
-      Rgb value = pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local);
+      return sample_camera_ray(view_, sampler, uint32_t(pixel), camera_path_time(view_, sampler));
+    };
+    trace_from_camera_batches(accel_, begin, end, ray_of, [&](size_t pixel, const Ray& ray, bool found, const SurfaceHit& hit) {
+      pt_continue_path(view_, accel_, Sampler(seed_, pixel, pass), ray, found, hit, settings_, &local, &sample);
+      Rgb value = sample.value();
       if (!all_finite(value)) {
         ++local.dropped;
         value = Rgb();
       }
       film.add_sample(uint32_t(pixel), value);
-    }
+    });
     shared.add(local);
   });
   shared.flush(counters, n);
@@ -149,13 +173,16 @@ void PtIntegrator::trace_batch(uint32_t pass, size_t first, size_t paths, int st
   parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
-    for (size_t path = begin; path < end; ++path) {
+    const auto ray_of = [&](size_t path) {
+      const Sampler sampler(seed, first + path, pass);
+      return sample_camera_ray(view_, sampler, uint32_t(first + path), camera_path_time(view_, sampler));
+    };
+    trace_from_camera_batches(accel_, begin, end, ray_of, [&](size_t path, const Ray& ray, bool found, const SurfaceHit& hit) {
       const size_t pixel = first + path;
-      const Sampler sampler(seed, pixel, pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(view_, sampler, uint32_t(pixel), camera_path_time(view_, sampler)), settings_, &local, &sample,
-                    probes_, stream != 0, caustics_ ? &caustics_->view() : nullptr);
+      pt_continue_path(view_, accel_, Sampler(seed, pixel, pass), ray, found, hit, settings_, &local, &sample, probes_, stream != 0,
+                       caustics_ ? &caustics_->view() : nullptr);
       out.store(path, uint32_t(pixel), sample);
-    }
+    });
     shared.add(local);
   });
   shared.flush(counters, stream == 0 ? paths : 0);
@@ -174,13 +201,16 @@ void PtIntegrator::trace_probes(const ProbeRequest& request, VertexBuffer* buffe
   parallel_for(paths, kPixelGrain, [&](size_t begin, size_t end) {
     PathCounters local;
     PathSample sample;
-    for (size_t k = begin; k < end; ++k) {
+    const auto ray_of = [&](size_t k) {
+      const Sampler sampler(request.seed, request.pixels[k], request.pass);
+      return sample_camera_ray(request.camera, sampler, request.pixels[k], camera_path_time(view_, sampler));
+    };
+    trace_from_camera_batches(accel_, begin, end, ray_of, [&](size_t k, const Ray& ray, bool found, const SurfaceHit& hit) {
       const uint32_t pixel = request.pixels[k];
-      const Sampler sampler(request.seed, pixel, request.pass);
-      pt_trace_path(view_, accel_, sampler, sample_camera_ray(request.camera, sampler, pixel, camera_path_time(view_, sampler)), settings_, &local, &sample, probes_,
-                    false, caustics_ ? &caustics_->view() : nullptr);
+      pt_continue_path(view_, accel_, Sampler(request.seed, pixel, request.pass), ray, found, hit, settings_, &local, &sample, probes_,
+                       false, caustics_ ? &caustics_->view() : nullptr);
       out.store(k, pixel, sample);
-    }
+    });
     shared.add(local);
   });
   shared.flush(counters, 0);

@@ -350,6 +350,33 @@ PS_INLINE void pt_finish(PtPathState* s, PathSample* out) {
   pt_detail::close_vertices(s->open, s->selected, out);
 }
 
+// The path whose camera ray `ray` was traced already: `found` says whether it hit, at `first`. The
+// CPU traces a chunk's camera rays together as one coherent stream (PtIntegrator), then continues
+// each path here, one ray at a time, exactly as pt_trace_path would.
+template <typename Tracer>
+PS_HD void pt_continue_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray, bool found,
+                            const SurfaceHit& first, const PtSettings& settings, PathCounters* counters, PathSample* out,
+                            const VisibilityProbes& probes = {}, bool query_only = false,
+                            const CausticMapView* caustics = nullptr) {
+  pt_detail::OpenVertex open[kMaxSelectedVertices];
+  PtPathState s;
+  pt_begin(&s, ray, open);
+  ++counters->rays;
+  SurfaceHit hit = first;
+  for (;;) {
+    if (!found) {
+      pt_on_miss(scene, settings, &s);
+      break;
+    }
+    const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, &s, probes, query_only, caustics);
+    if (s.shadow_pending) pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
+    if (next == PtNext::end) break;
+    ++counters->rays;
+    found = tracer.intersect(s.ray, &hit);
+  }
+  pt_finish(&s, out);
+}
+
 // `probes`: the visibility weight's rays at each selected vertex (none by default). `query_only`: the
 // path ends at its last selectable vertex, whose records then carry no contribution (their
 // contributions come from a filter's query: the anti-aliasing paths of Keller et al. 2014, sec. 3).
@@ -361,21 +388,9 @@ PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
                          const PtSettings& settings, PathCounters* counters, PathSample* out,
                          const VisibilityProbes& probes = {}, bool query_only = false,
                          const CausticMapView* caustics = nullptr) {
-  pt_detail::OpenVertex open[kMaxSelectedVertices];
-  PtPathState s;
-  pt_begin(&s, ray, open);
-  for (;;) {
-    SurfaceHit hit;
-    ++counters->rays;
-    if (!tracer.intersect(s.ray, &hit)) {
-      pt_on_miss(scene, settings, &s);
-      break;
-    }
-    const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, &s, probes, query_only, caustics);
-    if (s.shadow_pending) pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
-    if (next == PtNext::end) break;
-  }
-  pt_finish(&s, out);
+  SurfaceHit first;
+  const bool found = tracer.intersect(ray, &first);
+  pt_continue_path(scene, tracer, sampler, ray, found, first, settings, counters, out, probes, query_only, caustics);
 }
 
 // Plain path tracing: the unfiltered estimate of one path.
