@@ -69,7 +69,7 @@ Differences compare(const Accel& accel, RTCScene scene) {
 }
 
 TEST(EmbreeKernels, HitsAreThoseOfTheAvx2Kernels) {
-  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "the CPU has no AVX2: Embree runs its SSE kernels";
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "the CPU has no AVX2: Embree runs its AVX or SSE kernels";
   const Scene s = make_builtin_scene("cornell-empty-area", 16, 16);
   ASSERT_TRUE(s.spheres.empty());
   const Accel accel(s);
