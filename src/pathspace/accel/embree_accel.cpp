@@ -152,7 +152,7 @@ struct StaticPart {
 // AVX-512 (and the passes of a distributed render on such mixed machines would not add up to one
 // process's image). Limited to AVX2, hits are the same on every x86-64 CPU with AVX2; on the
 // development machine (AMD Zen 4) they are also faster: 0.967x the render time of a 640x360
-// cornell-box frame (8 interleaved pairs; docs/benchmarks.md). Checked by embree_kernels_test.cpp.
+// cornell-box frame (8 interleaved pairs; docs/animation.md). Checked by embree_kernels_test.cpp.
 constexpr const char* kEmbreeDeviceConfig = "max_isa=avx2";
 
 std::shared_ptr<SharedDevice> new_device() {
