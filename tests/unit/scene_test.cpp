@@ -44,6 +44,19 @@ TEST(BuiltinScenes, LightsAndGeometry) {
   EXPECT_NEAR(sun.bounds().radius, 2.21705961f, 1e-6f);
 }
 
+// An area light names its shape by index: one past the scene's triangles or spheres is an error
+// of the scene, not a read past an array in every light sample.
+TEST(BuiltinScenes, AreaLightOfAMissingShapeIsAnError) {
+  Scene box = make_builtin_scene("bs_c", 64, 64);
+  box.lights[1].shape = uint32_t(box.triangles.size());
+  EXPECT_THROW(box.finalize(), Error);
+  box.lights[1].type = LightType::area_sphere;
+  box.lights[1].shape = uint32_t(box.spheres.size());
+  EXPECT_THROW(box.finalize(), Error);
+  box.lights[1].shape = uint32_t(box.spheres.size()) - 1;
+  EXPECT_NO_THROW(box.finalize());
+}
+
 TEST(Accel, HitsBoxWallsAndSpheresFromBothSides) {
   const Scene scene = make_builtin_scene("bs_c", 64, 64);
   Accel accel(scene);

@@ -311,6 +311,10 @@ void Scene::finalize() {
       l.image_max = 0.f;
       for (const Rgb& t : textures[size_t(l.texture)].texels) l.image_max = std::max(l.image_max, max_component(t));
     }
+    const size_t shapes = l.type == LightType::area_triangle ? triangles.size() : spheres.size();
+    if ((l.type == LightType::area_triangle || l.type == LightType::area_sphere) && l.shape >= shapes)
+      throw Error("light " + std::to_string(i) + " is " + (l.type == LightType::area_triangle ? "triangle " : "sphere ") +
+                  std::to_string(l.shape) + " of " + std::to_string(shapes));
   }
   if (uvs.size() > positions.size() || normals.size() > positions.size())
     throw Error("more vertex uvs or normals than vertices");
