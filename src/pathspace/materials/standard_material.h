@@ -59,15 +59,19 @@ PS_INLINE Rgb eval(const Material& m, const Vec3& wo, const Vec3& wi) {
   return f;
 }
 
-PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
+// The pdf of wi given the lobe probabilities p = lobe_probabilities(m, wo): sample has them at hand.
+PS_INLINE float pdf_given(const Material& m, const LobeProbabilities& p, const Vec3& wo, const Vec3& wi) {
   if (!both_above(wo, wi)) return 0.f;
-  const LobeProbabilities p = lobe_probabilities(m, wo);
   float result = p.diffuse * wi.z * kInvPi;
   if (p.glossy > 0.f) {
     const float c = phong_lobe_cosine(wo, wi);
     if (c > kMinPhongCosine) result += p.glossy * (m.exponent + 1.f) * kInvTwoPi * powf(c, m.exponent);
   }
   return result;
+}
+
+PS_INLINE float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
+  return both_above(wo, wi) ? pdf_given(m, lobe_probabilities(m, wo), wo, wi) : 0.f;
 }
 
 PS_INLINE bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u, TransportMode mode, BsdfSample* s) {
@@ -83,7 +87,7 @@ PS_INLINE bool sample(const Material& m, const Vec3& wo, float u_lobe, Point2 u,
     }
     s->delta = false;
     s->eta = 1.f;
-    s->pdf_w = pdf(m, wo, s->wi);
+    s->pdf_w = pdf_given(m, p, wo, s->wi);
     if (s->pdf_w <= 0.f) return false;  // below the horizon: the path ends (no SmallVCM quirk)
     s->weight = eval(m, wo, s->wi) * (fabsf(s->wi.z) / s->pdf_w);
     return true;
