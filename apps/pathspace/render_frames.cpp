@@ -13,6 +13,7 @@
 #include "pathspace/io/camera_path_file.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/options/option_parse.h"
+#include "pathspace/parallel/background_job.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/frame_sequence.h"
 #include "distinct_files.h"
@@ -177,10 +178,15 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
   std::set<std::string> printed(prepared.validation_warnings.begin(), prepared.validation_warnings.end());
   const FrameChunk chunk = group ? FrameChunk{group->rank(), group->size()} : FrameChunk{};
   uint64_t rendered = 0;
+  // Frame N is encoded and written on a thread of its own while frame N+1 renders (writing a
+  // 640x360 EXR and PNG takes about as long as rendering it). One frame is written at a time: the
+  // next frame's hand-off waits for it and rethrows its error, so a failed write stops the sequence
+  // one frame later. The bytes written are the same as writing in turn.
+  BackgroundJob writer;
   try {
     rendered = render_frames(
         animation, config, range, spp,
-        [&](const FrameResult& f) {
+        [&](FrameResult& f) {
           for (const std::string& w : f.scene_warnings)
             if (printed.insert(w).second) fmt::print(stderr, "{}\n", printable(w));  // by the rank rendering the frame
           if (interrupt.signal() != 0 && f.snapshot.stats.spp < spp) return false;  // an unfinished frame is not written
@@ -189,13 +195,14 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
           if (!temporary_pngs.empty()) plan.images.push_back(frame_path(png_pattern, f.frame));
           if (!o.variance_path.empty()) plan.variance = frame_path(o.variance_path, f.frame);
           plan.run = run;
-          write_outputs(plan, f.snapshot, OutputKind::final);
           frames.push_back(frame_entry(f, animation));
           // Every rank's frames are its own: each prints its lines.
           if (!o.quiet) fmt::print("frame {}: {:.3f} s{}\n", f.frame, f.render_seconds, frame_summary(f.snapshot.stats.details));
+          writer.start([plan = std::move(plan), snapshot = std::move(f.snapshot)] { write_outputs(plan, snapshot, OutputKind::final); });
           return interrupt.signal() == 0;
         },
         [&](RenderSession& session) { interrupt.watch(&session); }, chunk);
+    writer.wait();  // the last frame's files, before --stats, --video and the other ranks count on them
   } catch (const std::exception& e) {
     // Rank 0 waits for the others' frames at the end: a failure on one rank ends the job.
     if (group) abort_job(fmt::format("rank {}: {}", group->rank(), e.what()), 1);

@@ -44,6 +44,23 @@ TEST_F(FramesCli, WritesOneFilePerFrameAndOneStatsEntryPerFrame) {
   EXPECT_GT(j["frames"][3]["statistics"]["hashed.temporal.mean_alpha_last"].get<double>(), 0.5);
 }
 
+// Frames are written on a thread of their own while the next renders: a frame that cannot be
+// written still ends the sequence with an error naming its file, the frames before it are on disk,
+// and --stats, which describes a finished sequence, is not written.
+TEST_F(FramesCli, AFrameThatCannotBeWrittenEndsTheSequenceNamingItsFile) {
+  fs::create_directories(path("w-0001.png"));  // a folder where frame 1's file would go
+  for (const char* frames : {"0:5", "0:1"}) {  // frame 1 in the middle, and last (its error comes after the loop)
+    fs::remove(path("w-0000.png"));
+    const auto r = run_pathspace("render cornell-box -r 16x16 --frames " + std::string(frames) + " -q -o " + path("w-%04d.png") +
+                                 " --stats " + path("w.json"));
+    EXPECT_EQ(r.exit_code, 1) << frames << "\n" << r.out;
+    EXPECT_NE(r.out.find(path("w-0001.png")), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(path("w-0000.png"))) << frames;
+    EXPECT_TRUE(fs::is_directory(path("w-0001.png")));
+    EXPECT_FALSE(fs::exists(path("w.json"))) << frames;
+  }
+}
+
 TEST_F(FramesCli, CameraPathAndOrbitMoveTheCamera) {
   std::ofstream(path("cam.json")) << R"({"keyframes": [
     {"time": 0, "position": [0, -4, 0.2], "target": [0, 0, 0], "up": [0, 0, 1], "fov": 40},

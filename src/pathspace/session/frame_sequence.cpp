@@ -26,7 +26,7 @@ bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine) {
 }
 
 uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
-                       const std::function<bool(const FrameResult&)>& on_frame,
+                       const std::function<bool(FrameResult&)>& on_frame,
                        const std::function<void(RenderSession&)>& on_session, FrameChunk chunk) {
   if (range.last < range.first) throw Error("the last frame comes before the first");
   if (passes == 0) throw Error("a frame needs at least one pass");

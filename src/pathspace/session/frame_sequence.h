@@ -36,12 +36,12 @@ struct FrameChunk {
 bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine);
 
 // Renders `range` with `passes` passes (samples per pixel) per frame. on_frame gets each frame as it
-// is done and returns false to stop the sequence; cancel() of the session it gets likewise stops it
+// is done (it may move the snapshot out: the next frame's replaces it) and returns false to stop the sequence; cancel() of the session it gets likewise stops it
 // after the current pass (that frame is then still reported, with fewer passes).
 // With a chunk, only the chunk's frames are reported, after Integrator::frame_warm_up frames before
 // it (within the range), which are rendered and not reported. Returns the number reported.
 uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
-                       const std::function<bool(const FrameResult&)>& on_frame,
+                       const std::function<bool(FrameResult&)>& on_frame,
                        const std::function<void(RenderSession&)>& on_session = {}, FrameChunk chunk = {});
 
 }  // namespace pathspace
