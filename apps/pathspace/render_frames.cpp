@@ -201,7 +201,8 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
           writer.start([plan = std::move(plan), snapshot = std::move(f.snapshot)] { write_outputs(plan, snapshot, OutputKind::final); });
           return interrupt.signal() == 0;
         },
-        [&](RenderSession& session) { interrupt.watch(&session); }, chunk);
+        [&](RenderSession& session) { interrupt.watch(&session); }, chunk,
+        o.variance_path.empty() ? SnapshotImages::mean : SnapshotImages::mean_and_variance);
     writer.wait();  // the last frame's files, before --stats, --video and the other ranks count on them
   } catch (const std::exception& e) {
     // Rank 0 waits for the others' frames at the end: a failure on one rank ends the job.

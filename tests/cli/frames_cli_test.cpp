@@ -61,6 +61,20 @@ TEST_F(FramesCli, AFrameThatCannotBeWrittenEndsTheSequenceNamingItsFile) {
   }
 }
 
+// A sequence computes each frame's variance only for --variance-out, and then writes it per frame.
+TEST_F(FramesCli, VarianceOutWritesEachFramesVariance) {
+  const auto r = run_pathspace("render cornell-box -r 16x16 --frames 0:1 -s 4 -q -o " + path("m-%d.exr") + " --variance-out " +
+                               path("v-%d.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  for (const char* name : {"v-0.exr", "v-1.exr"}) {
+    const pathspace::Image v = pathspace::read_image(path(name));
+    ASSERT_EQ(v.width, 16) << name;
+    double sum = 0.0;
+    for (const pathspace::Rgb& c : v.pixels) sum += double(c.r) + c.g + c.b;
+    EXPECT_GT(sum, 0.0) << name;  // 4 passes a frame: a variance where paths differ
+  }
+}
+
 TEST_F(FramesCli, CameraPathAndOrbitMoveTheCamera) {
   std::ofstream(path("cam.json")) << R"({"keyframes": [
     {"time": 0, "position": [0, -4, 0.2], "target": [0, 0, 0], "up": [0, 0, 1], "fov": 40},

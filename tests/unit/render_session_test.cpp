@@ -169,6 +169,11 @@ TEST_P(SessionContinues, TwoRunsOfFourEqualOneRunOfEight) {
   const RenderSnapshot a = split->snapshot(), b = whole->snapshot();
   EXPECT_EQ(a.stats.spp, 8u);
   EXPECT_GT(image_sum(a.mean), 0.0);
+  // A snapshot of the mean alone (a sequence's frames) has the same mean and no variance image.
+  const RenderSnapshot mean_only = split->snapshot(SnapshotImages::mean);
+  EXPECT_TRUE(same_bits(mean_only.mean, a.mean));
+  EXPECT_EQ(mean_only.variance.size(), 0u);
+  EXPECT_EQ(a.variance.size(), a.mean.size());
   EXPECT_FALSE(same_bits(after4.mean, a.mean)) << "the second run must add to the first";
   expect_same_render(a, b, "run(4) + run(4) vs run(8)");
   // The one-call render() is the same render.

@@ -27,7 +27,7 @@ bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine) {
 
 uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
                        const std::function<bool(FrameResult&)>& on_frame,
-                       const std::function<void(RenderSession&)>& on_session, FrameChunk chunk) {
+                       const std::function<void(RenderSession&)>& on_session, FrameChunk chunk, SnapshotImages images) {
   if (range.last < range.first) throw Error("the last frame comes before the first");
   if (passes == 0) throw Error("a frame needs at least one pass");
   FrameRange mine;
@@ -66,7 +66,7 @@ uint64_t render_frames(const Animation& animation, const RenderConfig& config, F
       if (run.cancelled) break;
       continue;
     }
-    result.snapshot = session->snapshot();
+    result.snapshot = session->snapshot(images);
     ++rendered;
     if (!on_frame(result) || run.cancelled) break;
   }

@@ -40,8 +40,10 @@ bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine);
 // after the current pass (that frame is then still reported, with fewer passes).
 // With a chunk, only the chunk's frames are reported, after Integrator::frame_warm_up frames before
 // it (within the range), which are rendered and not reported. Returns the number reported.
+// `images`: what each frame's snapshot holds (a sequence at 1 spp has no variance to speak of).
 uint64_t render_frames(const Animation& animation, const RenderConfig& config, FrameRange range, uint32_t passes,
                        const std::function<bool(FrameResult&)>& on_frame,
-                       const std::function<void(RenderSession&)>& on_session = {}, FrameChunk chunk = {});
+                       const std::function<void(RenderSession&)>& on_session = {}, FrameChunk chunk = {},
+                       SnapshotImages images = SnapshotImages::mean_and_variance);
 
 }  // namespace pathspace

@@ -254,11 +254,11 @@ void apply_output_color_matrix(const std::array<float, 9>& m, Image* mean, Image
 
 }  // namespace
 
-RenderSnapshot RenderSession::snapshot() const {
+RenderSnapshot RenderSession::snapshot(SnapshotImages images) const {
   const ReaderLock lock(*this);
   RenderSnapshot snap;
   snap.mean = film_.mean();
-  snap.variance = film_.variance_of_mean();
+  if (images == SnapshotImages::mean_and_variance) snap.variance = film_.variance_of_mean();
   apply_output_color_matrix(scene_->output_color_matrix, &snap.mean, &snap.variance);
   snap.stats = stats_locked();
   snap.aovs = integrator_->aovs();

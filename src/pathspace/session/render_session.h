@@ -91,8 +91,11 @@ struct RenderStats {
   double paths_per_s() const { return wall_s > 0 ? double(paths) / wall_s : 0.0; }
 };
 
+// What a snapshot computes of the film: a sequence's frames skip the variance no file asks for.
+enum class SnapshotImages { mean_and_variance, mean };
+
 struct RenderSnapshot {
-  Image mean, variance;          // the film's mean and variance of the mean
+  Image mean, variance;          // the film's mean and variance of the mean (0x0 when not asked for)
   RenderStats stats;
   std::vector<NamedImage> aovs;  // the integrator's debug images, when its options asked for them
 };
@@ -145,7 +148,7 @@ class RenderSession {
   bool distributed() const { return group_ && group_->size() > 1; }
 
   // Thread-safe; during a run it waits for the current pass to end (the run goes on).
-  RenderSnapshot snapshot() const;
+  RenderSnapshot snapshot(SnapshotImages images = SnapshotImages::mean_and_variance) const;
   RenderStats stats() const;
   SessionState save_state() const;
   // Before or between runs. Throws pathspace::Error when the state belongs to another integrator,
