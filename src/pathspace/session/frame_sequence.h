@@ -36,8 +36,9 @@ struct FrameChunk {
 bool frame_chunk(FrameRange range, FrameChunk chunk, FrameRange* mine);
 
 // Renders `range` with `passes` passes (samples per pixel) per frame. on_frame gets each frame as it
-// is done (it may move the snapshot out: the next frame's replaces it) and returns false to stop the sequence; cancel() of the session it gets likewise stops it
-// after the current pass (that frame is then still reported, with fewer passes).
+// is done (it may move the snapshot out: the next frame's replaces it) and returns false to stop the
+// sequence; cancel() of the session it gets likewise stops it after the current pass (that frame is
+// then still reported, with fewer passes).
 // With a chunk, only the chunk's frames are reported, after Integrator::frame_warm_up frames before
 // it (within the range), which are rendered and not reported. Returns the number reported.
 // `images`: what each frame's snapshot holds (a sequence at 1 spp has no variance to speak of).
