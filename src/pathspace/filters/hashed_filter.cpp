@@ -125,36 +125,46 @@ void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) 
 void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
   const size_t cells = size_t(table_.cells());
   if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
+  transfer_candidates_.clear();
+  for (std::vector<size_t>& records : new_cell_records_) {
+    if (!settings_.transfer_scans_all_vertices)
+      transfer_candidates_.insert(transfer_candidates_.end(), records.begin(), records.end());
+    records.clear();
+  }
+  if (settings_.transfer_scans_all_vertices)
+    for (size_t path = 0; path < b.paths(); ++path)
+      for (int r = 0; r < b.count[path]; ++r) transfer_candidates_.push_back(b.slot(path, r));
   std::atomic<uint64_t> finer_total{0}, coarser_total{0};
-  // Phase 1: the first vertex of each new cell computes its transfer from the histories as they were
-  // (every vertex of a cell has the same key, so which one does it does not change the result).
-  parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
+  // Phase 1: the first candidate of each new cell (no history) computes its transfer from the
+  // histories as they were (every vertex of a cell has the same key, so which one does it does not
+  // change the result). A candidate whose cell the overflow settling gave to another key has none.
+  parallel_for(transfer_candidates_.size(), 256, [&](size_t begin, size_t end) {
     uint64_t finer = 0, coarser = 0;
-    for (size_t path = begin; path < end; ++path)
-      for (int r = 0; r < b.count[path]; ++r) {
-        const size_t i = b.slot(path, r);
-        const int32_t s = slots_[i];
-        if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
-        uint8_t unclaimed = 0;
-        if (!std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).compare_exchange_strong(unclaimed, 1)) continue;
-        VoxelHistory out;
-        const LevelTransfer kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
-                                                  key_for_pass(b, i, pass_hash), uint32_t(stats_.steps), &out);
-        if (kind == LevelTransfer::none) continue;  // claimed, nothing to transfer
-        (kind == LevelTransfer::from_finer ? finer : coarser) += 1;
-        transferred_[size_t(s)] = out;
-        std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).store(2);
-      }
+    for (size_t k = begin; k < end; ++k) {
+      const size_t i = transfer_candidates_[k];
+      const int32_t s = slots_[i];
+      if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
+      uint8_t unclaimed = 0;
+      if (!std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).compare_exchange_strong(unclaimed, 1)) continue;
+      VoxelHistory out;
+      const LevelTransfer kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
+                                                key_for_pass(b, i, pass_hash), uint32_t(stats_.steps), &out);
+      if (kind == LevelTransfer::none) continue;  // claimed, nothing to transfer
+      (kind == LevelTransfer::from_finer ? finer : coarser) += 1;
+      transferred_[size_t(s)] = out;
+      std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).store(2);
+    }
     finer_total += finer;
     coarser_total += coarser;
   });
-  // Phase 2: the transfers take effect; the claims are cleared for the next step.
-  parallel_for(cells, 1 << 14, [&](size_t begin, size_t end) {
-    for (size_t s = begin; s < end; ++s) {
-      if (transfer_claimed_[s] == 2) history_->transfer(s, transferred_[s]);
-      transfer_claimed_[s] = 0;
-    }
-  });
+  // Phase 2: the transfers take effect; the claims are cleared for the next step. Every claimed
+  // cell is some candidate's; its first candidate applies the transfer and clears the claim.
+  for (const size_t i : transfer_candidates_) {
+    const int32_t s = slots_[i];
+    if (s < 0) continue;
+    if (transfer_claimed_[size_t(s)] == 2) history_->transfer(uint64_t(s), transferred_[size_t(s)]);
+    transfer_claimed_[size_t(s)] = 0;
+  }
   stats_.from_finer += finer_total;
   stats_.from_coarser += coarser_total;
 }
@@ -220,7 +230,12 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
     settle_overflows(buffer, pass_jitter_hash(seed, pass));
   stats_.accumulate_ms += milliseconds_since(t0);
 
-  if (history_ && settings_.temporal.level_transfer) transfer_levels(buffer, pass_jitter_hash(seed, pass));
+  if (history_ && settings_.temporal.level_transfer) {
+    // Timed with the folding (end_step) as temporal bookkeeping, as the GPU filter times it.
+    t0 = std::chrono::steady_clock::now();
+    transfer_levels(buffer, pass_jitter_hash(seed, pass));
+    stats_.temporal_ms += milliseconds_since(t0);
+  }
   if (history_ && settings_.temporal.mode == TemporalMode::hybrid && pass == 0) {
     if (pending_probes_ && has_probe_request_) {
       apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
@@ -265,6 +280,8 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const VoxelKeyIsa isa = widest_voxel_key_isa();
   const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
   const bool adaptive = settings_.adaptive;
+  const bool track_new_cells = history_ && settings_.temporal.level_transfer;  // for transfer_levels()
+  for (std::vector<size_t>& records : new_cell_records_) records.clear();
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
   // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most
@@ -272,6 +289,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache& local = caches_.local();
+    std::vector<size_t>* new_cells = track_new_cells ? &new_cell_records_.local() : nullptr;
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
     // is memory bound; docs/benchmarks.md, "The machine").
@@ -300,6 +318,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           ++failures;
           continue;
         }
+        // Whether the cell is new is read in transfer_levels(): here, a cache miss per insertion
+        // into the histories made the accumulation 7% slower.
+        if (new_cells) new_cells->push_back(i);
         local.evict(view, e);
         LocalVoxelCache::open(e, hashes[j], uint64_t(pr.slot));
         local.add(view, e, fixed_batch[j]);
@@ -555,7 +576,7 @@ void HashedFilter::statistics(Statistics& out) const {
                              {.steps = s.steps, .evicted = s.evicted, .evicted_last = s.evicted_last, .blended = s.blended,
                               .from_finer = s.from_finer, .from_coarser = s.from_coarser, .alpha_sum = s.alpha_sum,
                               .mean_alpha_last = s.mean_alpha_last, .temporal_ms = s.temporal_ms},
-                             "folding, priorities and eviction", out);
+                             "level transfer, folding, priorities and eviction", out);
   if (settings_.temporal.mode != TemporalMode::hybrid) return;
   out.counter("hashed.temporal.probes", s.probes, "previous-frame paths traced again (hybrid)");
   out.counter("hashed.temporal.probes_in_table", s.probes_found, "of those, in a voxel of the table");

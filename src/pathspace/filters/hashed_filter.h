@@ -157,6 +157,12 @@ class HashedFilter final : public PathSpaceFilter {
   ProbeRequest next_request_;      // recorded in this frame's pass 0 for the next frame
   std::vector<float> next_originals_;
   std::vector<uint8_t> transfer_claimed_;  // sec. 3.4.2: per cell, this step's transfer is decided
+  // Sec. 3.4.2, per thread: the record slots whose vertex reached the table itself in accumulate()
+  // (not combined in the thread's cache) or got a cell in the overflow settling. They include a
+  // vertex of every cell of the step, so transfer_levels() looks for new cells among these (a few
+  // thousand in a 640x360 frame) instead of among all vertices: 0.6 -> 0.2 ms a frame.
+  tbb::enumerable_thread_specific<std::vector<size_t>> new_cell_records_;
+  std::vector<size_t> transfer_candidates_;
   std::vector<VoxelHistory> transferred_;
 };
 
