@@ -363,28 +363,42 @@ TEST(HashedTemporal, LevelTransferHelpsAMovingCamera) {
   }
 }
 
-// Level transfer looks for new cells only among the vertices that reached the table itself (or got
-// a cell in the overflow settling); its reference looks among all vertices. Both must find the same
-// new cells and give the same frames, with the per-thread combining on and off, and when probe
-// windows overflow and are settled.
-TEST(HashedTemporal, LevelTransferFindsTheCellsAScanOfAllVerticesFinds) {
+// The level transfer and the blend visit the cells of a step through the vertices that reached the
+// table itself (or got a cell in the overflow settling); the reference visits them through all
+// vertices. Both must transfer the same cells and give the same frames: with the per-thread
+// combining on and off, for each blending mode, without the transfer, and when probe windows
+// overflow and are settled.
+TEST(HashedTemporal, StepCellsFoundThroughTheTableEqualAScanOfAllVertices) {
   Animation animation;
   animation.scene_at = [](double t) { return make_builtin_scene_at("cornell-moving-sphere", kSize, kSize, t); };
   animation.orbit_degrees_per_frame = 6.f;
-  for (const float table_factor : {2.f, 0.05f})
+  struct Case {
+    TemporalMode mode;
+    float table_factor;
+    bool transfer;
+  };
+  for (const Case c : {Case{TemporalMode::integrate, 2.f, true}, Case{TemporalMode::integrate, 0.05f, true},
+                       Case{TemporalMode::hybrid, 2.f, true}, Case{TemporalMode::ema, 2.f, false}})
     for (const bool combining : {true, false}) {
       HashedFilterSettings s = integrate_settings(2.f);
-      s.table_factor = table_factor;
+      s.temporal.mode = c.mode;
+      s.temporal.level_transfer = c.transfer;
+      s.table_factor = c.table_factor;
       s.local_combining = combining;
       Statistics found_stats, scanned_stats;
       const std::vector<Image> found = frames_of(animation, testing::hashed_config(13, s), 6, 2, &found_stats);
-      s.transfer_scans_all_vertices = true;
+      s.step_cells_from_all_vertices = true;
       const std::vector<Image> scanned = frames_of(animation, testing::hashed_config(13, s), 6, 2, &scanned_stats);
-      const std::string where = "table factor " + std::to_string(table_factor) + (combining ? ", combining" : "");
-      for (const char* name : {"hashed.temporal.from_finer", "hashed.temporal.from_coarser"})
+      const std::string where = "mode " + std::to_string(int(c.mode)) + ", table factor " + std::to_string(c.table_factor) +
+                                (combining ? ", combining" : "");
+      for (const char* name : {"hashed.temporal.from_finer", "hashed.temporal.from_coarser", "hashed.temporal.mean_alpha"})
         EXPECT_EQ(found_stats.number(name), scanned_stats.number(name)) << name << ", " << where;
-      EXPECT_GT(scanned_stats.number("hashed.temporal.from_finer") + scanned_stats.number("hashed.temporal.from_coarser"), 0.0);
-      if (table_factor < 1.f) EXPECT_GT(found_stats.number("hashed.overflow_settled_passes"), 0.0);
+      if (c.transfer) {
+        EXPECT_GT(scanned_stats.number("hashed.temporal.from_finer") + scanned_stats.number("hashed.temporal.from_coarser"), 0.0);
+      }
+      if (c.table_factor < 1.f) {
+        EXPECT_GT(found_stats.number("hashed.overflow_settled_passes"), 0.0);
+      }
       ASSERT_EQ(found.size(), scanned.size());
       for (size_t f = 0; f < found.size(); ++f)
         EXPECT_TRUE(testing::bit_identical(found[f], scanned[f])) << "frame " << f << ", " << where;

@@ -122,26 +122,28 @@ void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) 
   stats_.change_sum += change;
 }
 
+void HashedFilter::gather_step_records(const VertexBuffer& b) {
+  step_records_.clear();
+  for (std::vector<size_t>& records : table_records_) {
+    if (!settings_.step_cells_from_all_vertices) step_records_.insert(step_records_.end(), records.begin(), records.end());
+    records.clear();
+  }
+  if (settings_.step_cells_from_all_vertices)
+    for (size_t path = 0; path < b.paths(); ++path)
+      for (int r = 0; r < b.count[path]; ++r) step_records_.push_back(b.slot(path, r));
+}
+
 void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
   const size_t cells = size_t(table_.cells());
   if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
-  transfer_candidates_.clear();
-  for (std::vector<size_t>& records : new_cell_records_) {
-    if (!settings_.transfer_scans_all_vertices)
-      transfer_candidates_.insert(transfer_candidates_.end(), records.begin(), records.end());
-    records.clear();
-  }
-  if (settings_.transfer_scans_all_vertices)
-    for (size_t path = 0; path < b.paths(); ++path)
-      for (int r = 0; r < b.count[path]; ++r) transfer_candidates_.push_back(b.slot(path, r));
   std::atomic<uint64_t> finer_total{0}, coarser_total{0};
-  // Phase 1: the first candidate of each new cell (no history) computes its transfer from the
+  // Phase 1: the first record of each new cell (no history) computes its transfer from the
   // histories as they were (every vertex of a cell has the same key, so which one does it does not
-  // change the result). A candidate whose cell the overflow settling gave to another key has none.
-  parallel_for(transfer_candidates_.size(), 256, [&](size_t begin, size_t end) {
+  // change the result). A record whose cell the overflow settling gave to another key has none.
+  parallel_for(step_records_.size(), 256, [&](size_t begin, size_t end) {
     uint64_t finer = 0, coarser = 0;
     for (size_t k = begin; k < end; ++k) {
-      const size_t i = transfer_candidates_[k];
+      const size_t i = step_records_[k];
       const int32_t s = slots_[i];
       if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
       uint8_t unclaimed = 0;
@@ -158,8 +160,8 @@ void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
     coarser_total += coarser;
   });
   // Phase 2: the transfers take effect; the claims are cleared for the next step. Every claimed
-  // cell is some candidate's; its first candidate applies the transfer and clears the claim.
-  for (const size_t i : transfer_candidates_) {
+  // cell is some record's; its first record applies the transfer and clears the claim.
+  for (const size_t i : step_records_) {
     const int32_t s = slots_[i];
     if (s < 0) continue;
     if (transfer_claimed_[size_t(s)] == 2) history_->transfer(uint64_t(s), transferred_[size_t(s)]);
@@ -230,6 +232,9 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
     settle_overflows(buffer, pass_jitter_hash(seed, pass));
   stats_.accumulate_ms += milliseconds_since(t0);
 
+  t0 = std::chrono::steady_clock::now();
+  if (history_) gather_step_records(buffer);
+  stats_.temporal_ms += milliseconds_since(t0);
   if (history_ && settings_.temporal.level_transfer) {
     // Timed with the folding (end_step) as temporal bookkeeping, as the GPU filter times it.
     t0 = std::chrono::steady_clock::now();
@@ -280,8 +285,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   const VoxelKeyIsa isa = widest_voxel_key_isa();
   const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
   const bool adaptive = settings_.adaptive;
-  const bool track_new_cells = history_ && settings_.temporal.level_transfer;  // for transfer_levels()
-  for (std::vector<size_t>& records : new_cell_records_) records.clear();
+  for (std::vector<size_t>& records : table_records_) records.clear();
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
   // voxel), so per-chunk caches combined 36% of those vertices and per-thread ones combine most
@@ -289,7 +293,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache& local = caches_.local();
-    std::vector<size_t>* new_cells = track_new_cells ? &new_cell_records_.local() : nullptr;
+    std::vector<size_t>* table_records = history_ ? &table_records_.local() : nullptr;  // sec. 3.4: the step's cells
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
     // is memory bound; docs/benchmarks.md, "The machine").
@@ -318,9 +322,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           ++failures;
           continue;
         }
-        // Whether the cell is new is read in transfer_levels(): here, a cache miss per insertion
-        // into the histories made the accumulation 7% slower.
-        if (new_cells) new_cells->push_back(i);
+        // The cell's history is read in transfer_levels() and blend_cells(): here, a cache miss per
+        // insertion into the histories made the accumulation 7% slower.
+        if (table_records) table_records->push_back(i);
         local.evict(view, e);
         LocalVoxelCache::open(e, hashes[j], uint64_t(pr.slot));
         local.add(view, e, fixed_batch[j]);
@@ -472,7 +476,27 @@ Rgb HashedFilter::level_estimate(int32_t slot, int32_t coarse_slot, const VoxelK
   return low_count_average(steps, view, coarse, cell, average, key, coarse_slot, counters);
 }
 
+void HashedFilter::blend_cells() {
+  const VoxelHashTableView view = table_.view();
+  const size_t cells = size_t(table_.cells());
+  if (cell_blends_.size() != cells) cell_blends_.assign(cells, CellBlend{}), blend_stamps_.assign(cells, 0), blend_round_ = 0;
+  if (++blend_round_ == 0) {  // the stamps wrapped: none may look current
+    std::fill(blend_stamps_.begin(), blend_stamps_.end(), 0u);
+    blend_round_ = 1;
+  }
+  const uint32_t round = blend_round_;
+  parallel_for(step_records_.size(), 256, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const int32_t s = slots_[step_records_[k]];
+      if (s < 0 || std::atomic_ref<uint32_t>(blend_stamps_[size_t(s)]).exchange(round, std::memory_order_relaxed) == round) continue;
+      CellBlend& b = cell_blends_[size_t(s)];
+      b.average = history_->blend(uint64_t(s), view.cells[s], &b.alpha);
+    }
+  });
+}
+
 void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
+  if (history_) blend_cells();
   const VoxelHashTableView view = table_.view();
   const HashedStepSettings steps = step_settings(settings_);
   const bool keep_counts = settings_.debug_images;
@@ -495,10 +519,10 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
         if (keep_counts) counts_[i] = uint32_t(std::min<uint64_t>(cell.count, UINT32_MAX));
         Rgb average;
         if (history) {  // sec. 3.4.1: this step's average blended with what earlier steps left
-          float alpha = 0.f;
-          average = history->blend(uint64_t(s), cell, &alpha);
+          const CellBlend& blend = cell_blends_[size_t(s)];
+          average = blend.average;
           ++blended;
-          alpha_sum += uint64_t(double(alpha) * 4294967296.0);
+          alpha_sum += uint64_t(double(blend.alpha) * 4294967296.0);
         } else {
           average = from_fixed_point(cell.sum, cell.count);
         }

@@ -112,8 +112,12 @@ class HashedFilter final : public PathSpaceFilter {
   // After accumulation, when probe windows overflowed: which keys get the window's new cells is
   // decided by their fingerprints, not by thread timing (hashed_filter_overflow.cpp).
   void settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
+  // Sec. 3.4: the step's table_records_ (or every record, step_cells_from_all_vertices) into step_records_.
+  void gather_step_records(const VertexBuffer& buffer);
   // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
   void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
+  // Sec. 3.4.1: the blend of every cell of step_records_ into cell_blends_, before the lookup.
+  void blend_cells();
 
   HashedFilterSettings settings_;
   int width_, height_;
@@ -157,12 +161,21 @@ class HashedFilter final : public PathSpaceFilter {
   ProbeRequest next_request_;      // recorded in this frame's pass 0 for the next frame
   std::vector<float> next_originals_;
   std::vector<uint8_t> transfer_claimed_;  // sec. 3.4.2: per cell, this step's transfer is decided
-  // Sec. 3.4.2, per thread: the record slots whose vertex reached the table itself in accumulate()
+  // Sec. 3.4, per thread: the record slots whose vertex reached the table itself in accumulate()
   // (not combined in the thread's cache) or got a cell in the overflow settling. They include a
-  // vertex of every cell of the step, so transfer_levels() looks for new cells among these (a few
-  // thousand in a 640x360 frame) instead of among all vertices: 0.6 -> 0.2 ms a frame.
-  tbb::enumerable_thread_specific<std::vector<size_t>> new_cell_records_;
-  std::vector<size_t> transfer_candidates_;
+  // vertex of every cell of the step, so the level transfer looks for new cells and the blend visits
+  // cells among these (a few thousand in a 640x360 frame) instead of among all vertices.
+  tbb::enumerable_thread_specific<std::vector<size_t>> table_records_;
+  std::vector<size_t> step_records_;  // all threads' table_records_ (gather_step_records)
+  // Sec. 3.4.1: each cell's blend of this step's average with its history, computed once per cell
+  // (blend_cells) for the lookup's vertices; a cell's is current when its stamp is blend_round_.
+  struct CellBlend {
+    Rgb average;
+    float alpha = 0.f;
+  };
+  std::vector<CellBlend> cell_blends_;
+  std::vector<uint32_t> blend_stamps_;
+  uint32_t blend_round_ = 0;
   std::vector<VoxelHistory> transferred_;
 };
 

@@ -69,7 +69,7 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
     if (!to_fixed_point(b.contribution[i], fixed)) continue;  // not accumulated (never the case for a failure)
     view.add(it->second, fixed);
     slots_[i] = int32_t(it->second);
-    if (history_ && settings_.temporal.level_transfer) new_cell_records_.local().push_back(i);  // for transfer_levels()
+    if (history_) table_records_.local().push_back(i);  // one of the step's cells (sec. 3.4)
     ++won;
   }
   stats_.probe_failures = stats_.probe_failures + lost.load() - won;

@@ -18,9 +18,9 @@ struct HashedFilterSettings {
   bool adaptive = false;
   int aa_paths = 0;                // extra query-only camera paths per pixel and pass (2014 paper, sec. 3)
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
-  // Sec. 3.4.2: look for the step's new cells among all vertices instead of those that reached the
-  // table (HashedFilter::transfer_levels); the reference the tests hold the default against.
-  bool transfer_scans_all_vertices = false;
+  // Sec. 3.4: find the cells of a step (for the level transfer and the per-cell blend) among all
+  // vertices instead of those that reached the table; the reference the tests hold the default to.
+  bool step_cells_from_all_vertices = false;
   bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
   TemporalSettings temporal;      // sec. 3.4: the table kept across passes and frames
 };
