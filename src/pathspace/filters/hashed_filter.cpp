@@ -133,6 +133,16 @@ void HashedFilter::gather_step_records(const VertexBuffer& b) {
       for (int r = 0; r < b.count[path]; ++r) step_records_.push_back(b.slot(path, r));
 }
 
+void HashedFilter::remember_cells() {
+  // Beyond a sixteenth of the table, clearing it whole (parallel, streaming) is no slower.
+  const size_t limit = size_t(table_.cells()) / 16;
+  last_cells_listed_ = !settings_.step_cells_from_all_vertices && step_records_.size() <= limit;
+  last_cells_.clear();
+  if (!last_cells_listed_) return;
+  for (const size_t i : step_records_)
+    if (slots_[i] >= 0) last_cells_.push_back(uint32_t(slots_[i]));
+}
+
 void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
   const size_t cells = size_t(table_.cells());
   if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
@@ -213,8 +223,11 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   filtered->resize(slots);
 
   auto t0 = std::chrono::steady_clock::now();
-  if (history_) {
-    table_.clear_sums();  // the keys stay: they find their history (sec. 3.4)
+  // The keys stay in a table kept across frames: they find their history (sec. 3.4).
+  if (last_cells_listed_) {
+    table_.clear_listed(last_cells_, /*keys=*/!history_);
+  } else if (history_) {
+    table_.clear_sums();
   } else {
     table_.clear();
   }
@@ -230,11 +243,9 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   // Fallbacks that do not depend on timing (one cache line per window: the default probe limit).
   if (stats_.probe_failures > failures_before && settings_.max_probes <= kFingerprintsPerLine)
     settle_overflows(buffer, pass_jitter_hash(seed, pass));
+  gather_step_records(buffer);
   stats_.accumulate_ms += milliseconds_since(t0);
 
-  t0 = std::chrono::steady_clock::now();
-  if (history_) gather_step_records(buffer);
-  stats_.temporal_ms += milliseconds_since(t0);
   if (history_ && settings_.temporal.level_transfer) {
     // Timed with the folding (end_step) as temporal bookkeeping, as the GPU filter times it.
     t0 = std::chrono::steady_clock::now();
@@ -263,6 +274,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
     stats_.evicted_last = step.evicted;
     stats_.temporal_ms += step.fold_ms;
   }
+  remember_cells();
 
   const VoxelTableOccupancy occ = table_.occupancy();
   stats_.occupied_cells_last = occ.occupied;
@@ -293,7 +305,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
   parallel_for(b.paths(), kGrain, [&](size_t begin, size_t end) {
     uint64_t vertices = 0, insertions = 0, failures = 0, not_accumulated = 0, probes = 0, probes_max = 0;
     LocalVoxelCache& local = caches_.local();
-    std::vector<size_t>* table_records = history_ ? &table_records_.local() : nullptr;  // sec. 3.4: the step's cells
+    std::vector<size_t>& table_records = table_records_.local();  // a vertex of each cell of the step
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
     // is memory bound; docs/benchmarks.md, "The machine").
@@ -322,9 +334,9 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
           ++failures;
           continue;
         }
-        // The cell's history is read in transfer_levels() and blend_cells(): here, a cache miss per
-        // insertion into the histories made the accumulation 7% slower.
-        if (table_records) table_records->push_back(i);
+        // Whether the cell is new is read in transfer_levels(): here, a cache miss per insertion into
+        // the histories made the accumulation 7% slower.
+        table_records.push_back(i);
         local.evict(view, e);
         LocalVoxelCache::open(e, hashes[j], uint64_t(pr.slot));
         local.add(view, e, fixed_batch[j]);

@@ -69,7 +69,7 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
     if (!to_fixed_point(b.contribution[i], fixed)) continue;  // not accumulated (never the case for a failure)
     view.add(it->second, fixed);
     slots_[i] = int32_t(it->second);
-    if (history_) table_records_.local().push_back(i);  // one of the step's cells (sec. 3.4)
+    table_records_.local().push_back(i);  // a vertex of one of the step's cells
     ++won;
   }
   stats_.probe_failures = stats_.probe_failures + lost.load() - won;

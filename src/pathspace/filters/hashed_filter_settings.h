@@ -18,8 +18,9 @@ struct HashedFilterSettings {
   bool adaptive = false;
   int aa_paths = 0;                // extra query-only camera paths per pixel and pass (2014 paper, sec. 3)
   bool local_combining = true;    // combine consecutive vertices of one voxel before the atomics
-  // Sec. 3.4: find the cells of a step (for the level transfer and the per-cell blend) among all
-  // vertices instead of those that reached the table; the reference the tests hold the default to.
+  // Find the cells of a step (for the level transfer, the per-cell blend and the next step's clear)
+  // among all vertices instead of those that reached the table; the reference tests hold the
+  // default to (it clears the whole table every step).
   bool step_cells_from_all_vertices = false;
   bool debug_images = false;      // keep per-vertex keys, probe and voxel counts for aov() (--aov)
   TemporalSettings temporal;      // sec. 3.4: the table kept across passes and frames

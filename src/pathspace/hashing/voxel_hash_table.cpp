@@ -53,6 +53,13 @@ void VoxelHashTable::clear_sums() {
   });
 }
 
+void VoxelHashTable::clear_listed(const std::vector<uint32_t>& slots, bool keys) {
+  for (const uint32_t s : slots) {
+    view_.cells[s] = VoxelCell{};
+    if (keys) view_.fingerprints[s] = kEmptyFingerprint;
+  }
+}
+
 VoxelTableOccupancy VoxelHashTable::occupancy() const {
   VoxelTableOccupancy o;
   o.cells = cells();

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 #include <memory>
 
 #include "pathspace/base/error.h"
@@ -30,6 +31,8 @@ class VoxelHashTable {
   void clear();  // parallel
   // Zeroes the sums and counts only, keeping the keys (a table kept across frames).
   void clear_sums();  // parallel
+  // clear() or clear_sums() where only the listed cells can hold keys or sums (serial).
+  void clear_listed(const std::vector<uint32_t>& slots, bool keys);
   // Fingerprints of kPriorityShift bits, with room for a priority above them (sec. 3.4.3).
   void keep_across_frames() { view_.key_mask = kKeyBitsMask; }
   VoxelTableOccupancy occupancy() const;
