@@ -2,7 +2,8 @@
 // 2021, sec. 3.2), computed here independently from the scalar key (HashedFilter::key_of): with
 // empty record slots between the vertices, several records per path, unrepresentable
 // contributions, and the two low-count fallbacks (26 neighbours, sec. 3.3.1; one level coarser,
-// sec. 3.3.2). Fixed-point sums make the expected values exact, so the comparison is exact.
+// sec. 3.3.2). Fixed-point sums make the expected values exact, so the comparison is exact. And a
+// pass's table holds nothing of the pass before (the clear of only the cells it used).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -156,6 +157,46 @@ TEST(HashedFilterAverages, NeighbourSearchAddsTheTwentySixNeighbours) {
   expect_exact_averages(Fallback::neighbours, 2, 3);
 }
 TEST(HashedFilterAverages, MultiLevelUsesTheCoarserVoxel) { expect_exact_averages(Fallback::coarser, 2, 4); }
+
+// A pass clears only the cells the pass before used when they are few (HashedFilter::remember_cells),
+// found through the vertices that reached the table, including those the overflow settling gave a
+// cell. After every pass the table must hold exactly that pass's accumulated vertices, and without
+// --temporal no key without vertices. One probe per key makes home cells collide, so windows are
+// settled (without --temporal); 3000 records in 65,536 cells are few enough to be cleared one by one.
+TEST(HashedFilterAverages, EachPassFindsATableHoldingNothingOfTheLast) {
+  const Scene scene = make_builtin_scene("cornell-box", 64, 64);
+  for (const TemporalMode mode : {TemporalMode::off, TemporalMode::integrate}) {
+    HashedFilterSettings settings;
+    settings.key.psf_scale = 2.f;
+    settings.max_probes = 1;
+    settings.temporal.mode = mode;
+    HashedFilter filter(settings, scene.camera, size_t(1) << 16);
+    std::vector<Rgb> filtered;
+    for (uint32_t pass = 0; pass < 6; ++pass) {
+      const VertexBuffer b = make_buffer(3000, 1, 100 + pass, 0.f);
+      filter.filter(b, 42, pass, &filtered);
+      uint64_t accumulated = 0;
+      for (size_t path = 0; path < b.paths(); ++path)
+        for (int r = 0; r < b.count[path]; ++r) {
+          uint64_t fixed[3];
+          accumulated += to_fixed_point(b.contribution[b.slot(path, r)], fixed) ? 1 : 0;
+        }
+      const VoxelHashTableView view = filter.table().view();
+      uint64_t counted = 0, keys_without_vertices = 0;
+      for (uint64_t c = 0; c <= view.mask; ++c) {
+        counted += view.cells[c].count;
+        keys_without_vertices += view.fingerprints[c] != kEmptyFingerprint && view.cells[c].count == 0 ? 1 : 0;
+      }
+      EXPECT_EQ(counted, accumulated - filter.stats().probe_failures_last) << "pass " << pass << ", mode " << int(mode);
+      if (mode == TemporalMode::off) {
+        EXPECT_EQ(keys_without_vertices, 0u) << "pass " << pass;
+      }
+    }
+    if (mode == TemporalMode::off) {
+      EXPECT_GT(filter.stats().settled_windows, 0u);  // a settled cell is cleared too
+    }
+  }
+}
 
 }  // namespace
 }  // namespace pathspace
