@@ -158,7 +158,7 @@ TEST(HashedFilterAverages, NeighbourSearchAddsTheTwentySixNeighbours) {
 }
 TEST(HashedFilterAverages, MultiLevelUsesTheCoarserVoxel) { expect_exact_averages(Fallback::coarser, 2, 4); }
 
-// A pass clears only the cells the pass before used when they are few (HashedFilter::remember_cells),
+// A pass clears only the cells the pass before used when they are few (HashedFilter::gather_step_cells),
 // found through the vertices that reached the table, including those the overflow settling gave a
 // cell. After every pass the table must hold exactly that pass's accumulated vertices, and without
 // --temporal no key without vertices. One probe per key makes home cells collide, so windows are

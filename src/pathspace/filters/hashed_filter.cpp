@@ -122,63 +122,49 @@ void HashedFilter::apply_probes(const VertexBuffer& probes, uint64_t pass_hash) 
   stats_.change_sum += change;
 }
 
-void HashedFilter::gather_step_records(const VertexBuffer& b) {
-  step_records_.clear();
+void HashedFilter::gather_step_cells(const VertexBuffer& b) {
+  if (cell_listed_.size() != size_t(table_.cells())) cell_listed_.assign(size_t(table_.cells()), 0);
+  step_cells_.clear();
+  step_cell_records_.clear();
+  const auto add = [&](size_t i) {
+    const int32_t s = slots_[i];  // < 0: no cell, or one the overflow settling gave to another key
+    if (s < 0 || cell_listed_[size_t(s)]) return;
+    cell_listed_[size_t(s)] = 1;
+    step_cells_.push_back(uint32_t(s));
+    step_cell_records_.push_back(i);
+  };
   for (std::vector<size_t>& records : table_records_) {
-    if (!settings_.step_cells_from_all_vertices) step_records_.insert(step_records_.end(), records.begin(), records.end());
+    if (!settings_.step_cells_from_all_vertices)
+      for (const size_t i : records) add(i);
     records.clear();
   }
   if (settings_.step_cells_from_all_vertices)
     for (size_t path = 0; path < b.paths(); ++path)
-      for (int r = 0; r < b.count[path]; ++r) step_records_.push_back(b.slot(path, r));
-}
-
-void HashedFilter::remember_cells() {
+      for (int r = 0; r < b.count[path]; ++r) add(b.slot(path, r));
+  for (const uint32_t c : step_cells_) cell_listed_[c] = 0;
   // Beyond a sixteenth of the table, clearing it whole (parallel, streaming) is no slower.
-  const size_t limit = size_t(table_.cells()) / 16;
-  last_cells_listed_ = !settings_.step_cells_from_all_vertices && step_records_.size() <= limit;
-  last_cells_.clear();
-  if (!last_cells_listed_) return;
-  for (const size_t i : step_records_)
-    if (slots_[i] >= 0) last_cells_.push_back(uint32_t(slots_[i]));
+  step_cells_clear_listed_ = !settings_.step_cells_from_all_vertices && step_cells_.size() <= size_t(table_.cells()) / 16;
 }
 
 void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
-  const size_t cells = size_t(table_.cells());
-  if (transfer_claimed_.size() != cells) transfer_claimed_.assign(cells, 0), transferred_.resize(cells);
-  std::atomic<uint64_t> finer_total{0}, coarser_total{0};
-  // Phase 1: the first record of each new cell (no history) computes its transfer from the
-  // histories as they were (every vertex of a cell has the same key, so which one does it does not
-  // change the result). A record whose cell the overflow settling gave to another key has none.
-  parallel_for(step_records_.size(), 256, [&](size_t begin, size_t end) {
-    uint64_t finer = 0, coarser = 0;
+  transfers_.resize(step_cells_.size());
+  // Phase 1: each new cell (no history) computes its transfer from the histories as they were, from
+  // any of its records (every vertex of a cell has the same key).
+  parallel_for(step_cells_.size(), 256, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const size_t i = step_records_[k];
-      const int32_t s = slots_[i];
-      if (s < 0 || history_->at(uint64_t(s)).weight > 0.f) continue;
-      uint8_t unclaimed = 0;
-      if (!std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).compare_exchange_strong(unclaimed, 1)) continue;
-      VoxelHistory out;
-      const LevelTransfer kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
-                                                key_for_pass(b, i, pass_hash), uint32_t(stats_.steps), &out);
-      if (kind == LevelTransfer::none) continue;  // claimed, nothing to transfer
-      (kind == LevelTransfer::from_finer ? finer : coarser) += 1;
-      transferred_[size_t(s)] = out;
-      std::atomic_ref<uint8_t>(transfer_claimed_[size_t(s)]).store(2);
+      transfers_[k].kind = LevelTransfer::none;
+      if (history_->at(step_cells_[k]).weight > 0.f) continue;
+      transfers_[k].kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
+                                          key_for_pass(b, step_cell_records_[k], pass_hash), uint32_t(stats_.steps),
+                                          &transfers_[k].history);
     }
-    finer_total += finer;
-    coarser_total += coarser;
   });
-  // Phase 2: the transfers take effect; the claims are cleared for the next step. Every claimed
-  // cell is some record's; its first record applies the transfer and clears the claim.
-  for (const size_t i : step_records_) {
-    const int32_t s = slots_[i];
-    if (s < 0) continue;
-    if (transfer_claimed_[size_t(s)] == 2) history_->transfer(uint64_t(s), transferred_[size_t(s)]);
-    transfer_claimed_[size_t(s)] = 0;
+  // Phase 2: the transfers take effect.
+  for (size_t k = 0; k < step_cells_.size(); ++k) {
+    if (transfers_[k].kind == LevelTransfer::none) continue;
+    history_->transfer(step_cells_[k], transfers_[k].history);
+    ++(transfers_[k].kind == LevelTransfer::from_finer ? stats_.from_finer : stats_.from_coarser);
   }
-  stats_.from_finer += finer_total;
-  stats_.from_coarser += coarser_total;
 }
 
 void HashedFilter::record_probe_originals(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
@@ -224,8 +210,8 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
 
   auto t0 = std::chrono::steady_clock::now();
   // The keys stay in a table kept across frames: they find their history (sec. 3.4).
-  if (last_cells_listed_) {
-    table_.clear_listed(last_cells_, /*keys=*/!history_);
+  if (step_cells_clear_listed_) {  // the last step's cells
+    table_.clear_listed(step_cells_, /*keys=*/!history_);
   } else if (history_) {
     table_.clear_sums();
   } else {
@@ -243,7 +229,7 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   // Fallbacks that do not depend on timing (one cache line per window: the default probe limit).
   if (stats_.probe_failures > failures_before && settings_.max_probes <= kFingerprintsPerLine)
     settle_overflows(buffer, pass_jitter_hash(seed, pass));
-  gather_step_records(buffer);
+  gather_step_cells(buffer);
   stats_.accumulate_ms += milliseconds_since(t0);
 
   if (history_ && settings_.temporal.level_transfer) {
@@ -274,7 +260,6 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
     stats_.evicted_last = step.evicted;
     stats_.temporal_ms += step.fold_ms;
   }
-  remember_cells();
 
   const VoxelTableOccupancy occ = table_.occupancy();
   stats_.occupied_cells_last = occ.occupied;
@@ -490,19 +475,11 @@ Rgb HashedFilter::level_estimate(int32_t slot, int32_t coarse_slot, const VoxelK
 
 void HashedFilter::blend_cells() {
   const VoxelHashTableView view = table_.view();
-  const size_t cells = size_t(table_.cells());
-  if (cell_blends_.size() != cells) cell_blends_.assign(cells, CellBlend{}), blend_stamps_.assign(cells, 0), blend_round_ = 0;
-  if (++blend_round_ == 0) {  // the stamps wrapped: none may look current
-    std::fill(blend_stamps_.begin(), blend_stamps_.end(), 0u);
-    blend_round_ = 1;
-  }
-  const uint32_t round = blend_round_;
-  parallel_for(step_records_.size(), 256, [&](size_t begin, size_t end) {
+  if (cell_blends_.size() != size_t(table_.cells())) cell_blends_.resize(size_t(table_.cells()));
+  parallel_for(step_cells_.size(), 256, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const int32_t s = slots_[step_records_[k]];
-      if (s < 0 || std::atomic_ref<uint32_t>(blend_stamps_[size_t(s)]).exchange(round, std::memory_order_relaxed) == round) continue;
-      CellBlend& b = cell_blends_[size_t(s)];
-      b.average = history_->blend(uint64_t(s), view.cells[s], &b.alpha);
+      CellBlend& b = cell_blends_[step_cells_[k]];
+      b.average = history_->blend(step_cells_[k], view.cells[step_cells_[k]], &b.alpha);
     }
   });
 }

@@ -112,13 +112,12 @@ class HashedFilter final : public PathSpaceFilter {
   // After accumulation, when probe windows overflowed: which keys get the window's new cells is
   // decided by their fingerprints, not by thread timing (hashed_filter_overflow.cpp).
   void settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
-  // The step's table_records_ (or every record, step_cells_from_all_vertices) into step_records_.
-  void gather_step_records(const VertexBuffer& buffer);
-  // After a step: its cells into last_cells_ for the next step's clear, if they are few.
-  void remember_cells();
+  // The cells of the step, once each, from table_records_ (or from every record,
+  // step_cells_from_all_vertices) into step_cells_.
+  void gather_step_cells(const VertexBuffer& buffer);
   // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
   void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
-  // Sec. 3.4.1: the blend of every cell of step_records_ into cell_blends_, before the lookup.
+  // Sec. 3.4.1: the blend of every cell of step_cells_ into cell_blends_, before the lookup.
   void blend_cells();
 
   HashedFilterSettings settings_;
@@ -162,27 +161,31 @@ class HashedFilter final : public PathSpaceFilter {
   const VertexBuffer* pending_probes_ = nullptr;
   ProbeRequest next_request_;      // recorded in this frame's pass 0 for the next frame
   std::vector<float> next_originals_;
-  std::vector<uint8_t> transfer_claimed_;  // sec. 3.4.2: per cell, this step's transfer is decided
   // Per thread: the record slots whose vertex reached the table itself in accumulate() (not
   // combined in the thread's cache) or got a cell in the overflow settling. They include a vertex of
-  // every cell of the step, so the level transfer looks for new cells, the blend visits cells and the
-  // next step clears cells among these (a few thousand in a 640x360 frame), not among all vertices.
+  // every cell of the step, so the step's cells are found among these (a few thousand in a 640x360
+  // frame), not among all vertices.
   tbb::enumerable_thread_specific<std::vector<size_t>> table_records_;
-  std::vector<size_t> step_records_;  // all threads' table_records_ (gather_step_records)
-  // The cells the last step used, when few (remember_cells): the next step clears only these, not
-  // the whole table (0.45 ms of a 640x360 frame).
-  std::vector<uint32_t> last_cells_;
-  bool last_cells_listed_ = false;
-  // Sec. 3.4.1: each cell's blend of this step's average with its history, computed once per cell
-  // (blend_cells) for the lookup's vertices; a cell's is current when its stamp is blend_round_.
+  // The cells the step used, each once, with one of its records (gather_step_cells): the level
+  // transfer looks for new cells, the blend visits cells and, when they are few, the next step
+  // clears only these (the whole table took 0.45 ms of a 640x360 frame).
+  std::vector<uint32_t> step_cells_;
+  std::vector<size_t> step_cell_records_;
+  bool step_cells_clear_listed_ = false;
+  std::vector<uint8_t> cell_listed_;  // all zero between steps
+  // Sec. 3.4.2: phase 1 of transfer_levels, per step cell.
+  struct CellTransfer {
+    LevelTransfer kind = LevelTransfer::none;
+    VoxelHistory history;
+  };
+  std::vector<CellTransfer> transfers_;
+  // Sec. 3.4.1: each step cell's blend of this step's average with its history (blend_cells), read
+  // by the lookup's vertices.
   struct CellBlend {
     Rgb average;
     float alpha = 0.f;
   };
   std::vector<CellBlend> cell_blends_;
-  std::vector<uint32_t> blend_stamps_;
-  uint32_t blend_round_ = 0;
-  std::vector<VoxelHistory> transferred_;
 };
 
 }  // namespace pathspace
