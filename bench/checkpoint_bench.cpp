@@ -11,7 +11,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/checkpoint/checkpoint_file.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
 #include "pathspace/scene/builtin_scenes.h"

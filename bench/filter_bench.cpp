@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "pathspace/filters/consistent_filter.h"
-#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/study/vertex_sets.h"
 

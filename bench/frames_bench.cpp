@@ -10,7 +10,7 @@
 
 #include <memory>
 
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render_config.h"

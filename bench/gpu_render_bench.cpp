@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/film.h"
 #include "pathspace/gpu/cuda_pt_integrator.h"
@@ -84,7 +84,7 @@ GpuRun run_gpu(const Scene& scene, BenchFilter bench_filter, gpu::CudaPtPipeline
     extend.push_back(delta("cuda.extend_s_per_pass"));
     shade.push_back(delta("cuda.shade_s_per_pass"));
     shadow.push_back(delta("cuda.shadow_s_per_pass"));
-    temporal.push_back(delta("cuda_hashed.temporal.s_per_step"));
+    temporal.push_back(delta("hashed.temporal.s_per_step"));
     mrays.push_back(double(counters.rays - rays_before) / (trace.back() * 1e3));
     rays_before = counters.rays;
     before = std::move(now);

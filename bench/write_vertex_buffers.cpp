@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pathspace/base/error.h"
-#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/filters/vertex_buffer_file.h"
 #include "pathspace/study/vertex_sets.h"
 

@@ -1,4 +1,4 @@
-# PATHSPACE_FUZZ: libFuzzer targets for the scene parsers (tests/fuzz/, docs/testing.md "Fuzzing").
+# PATHSPACE_FUZZ: libFuzzer targets for the scene parsers (tests/fuzz/, docs/fuzzing.md).
 # Needs clang (CMAKE_CXX_COMPILER=clang++) and its libFuzzer runtime (Debian: libclang-rt-14-dev;
 # scripts/install-deps --fuzz). Everything in the build is compiled with coverage instrumentation
 # and ASan/UBSan, so the parsers under test report memory errors and undefined behaviour at once.

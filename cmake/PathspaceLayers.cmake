@@ -18,7 +18,7 @@ set(PATHSPACE_LAYERS base geometry scene accel io integrators session checkpoint
 
 set(PATHSPACE_LAYER_base_FOLDERS        base math parallel options stats)
 set(PATHSPACE_LAYER_base_BELOW          "")
-set(PATHSPACE_LAYER_geometry_FOLDERS    sampling geometry camera hashing hashgrid)
+set(PATHSPACE_LAYER_geometry_FOLDERS    sampling geometry camera hashgrid)
 set(PATHSPACE_LAYER_geometry_BELOW      base)
 set(PATHSPACE_LAYER_scene_FOLDERS       materials lights scene film)
 set(PATHSPACE_LAYER_scene_BELOW         geometry)

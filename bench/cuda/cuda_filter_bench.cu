@@ -14,8 +14,8 @@
 
 #include "pathspace/filters/vertex_buffer_file.h"
 #include "pathspace/gpu/cuda_event_timer.h"
-#include "pathspace/gpu/cuda_hashed_filter.h"
-#include "pathspace/gpu/cuda_vertex_buffer.h"
+#include "pathspace/filters/hashed/cuda_hashed_filter.h"
+#include "pathspace/filters/cuda_vertex_buffer.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""pathspace against SmallVCM, side by side (issue 19's table; docs/throughput.md).
+"""pathspace against SmallVCM, side by side (docs/results/cpu-throughput.md).
 
 SmallVCM (github.com/SmallVCM/SmallVCM, MIT licence) is not part of this project: build it yourself
 outside the repository with `g++ -o smallvcm src/smallvcm.cxx -O3 -std=c++0x -fopenmp` and give its

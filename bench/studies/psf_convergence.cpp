@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/study/experiment_output.h"
 #include "pathspace/study/experiment_runner.h"

@@ -10,11 +10,19 @@
 //  * command-line options (--name): each must appear in a help text of the pathspace binary
 //    (kHelpCommands) unless it belongs to another tool (kOtherToolsOptions);
 //  * integrators given to -i / --integrator (NAME or a|b|c): each must be listed by
-//    `pathspace info --integrators --json`.
+//    `pathspace info --integrators --json`;
+//  * denials: no line may say that a registered integrator, filter or device does not exist, is not
+//    implemented or not built, or that there is no such thing ("there is no CUDA backend"), while
+//    `pathspace info --json` lists it. A registered thing is named by its name in a code span, its
+//    option (`-i pt`, `--filter hashed`, `--device cuda`), its name and kind ("hashed filter", "cuda
+//    backend") or what the pages call it (kDenialAliases: "path tracer", "GPU path tracer"). A clause
+//    that is conditional or says where something runs ("without nvcc ...", "... on the GPU") is not
+//    a denial. Lines are checked one by one, code blocks not at all.
 // Lines between <!-- docs-test: off --> and <!-- docs-test: on --> (a worked example of code that
 // does not exist) are not checked.
-// A failure names the document, the line and the missing thing. The checker itself is tested on a
-// made-up document (DocsCheck.FindsMissingThings), so it cannot pass by finding nothing.
+// A failure names the document, the line and the missing thing. The checkers themselves are tested
+// on made-up documents (DocsCheck.FindsMissingThings, DocsCheck.FindsDenialsOfRegisteredThings), so
+// they cannot pass by finding nothing.
 #include <fnmatch.h>
 #include <sys/wait.h>
 
@@ -23,10 +31,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -357,6 +367,137 @@ void check_integrators(const std::vector<DocLine>& lines, const std::set<std::st
   }
 }
 
+// ---- denials of registered things ----
+
+// What `pathspace info --json` lists: {"integrators":[{"name":"pt",...}],"filters":[...],"devices":[...]}.
+struct Registered {
+  std::vector<std::string> integrators, filters, devices;
+};
+
+// What the pages call a registered thing besides its name, its option and "NAME KIND"; used only
+// for names the registry lists.
+const std::map<std::string, std::vector<std::string>> kDenialAliases = {
+    {"pt", {"path tracer", "path tracing"}},
+    {"lt", {"light tracer", "light tracing"}},
+    {"bpt", {"bidirectional path tracer", "bidirectional path tracing"}},
+    {"sppm", {"progressive photon mapping"}},
+    {"pclt", {"pixel cache light tracing", "pixel cache light tracer"}},
+    {"cuda", {"cuda backend", "gpu backend", "gpu path tracer", "cuda path tracer", "gpu filter"}},
+};
+
+// A registered thing and the lower-case texts that name it.
+struct Subject {
+  std::string label;  // "the device `cuda`"
+  std::vector<std::string> names;
+};
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::vector<Subject> subjects_of(const Registered& registered) {
+  std::vector<Subject> out;
+  auto add = [&out](const std::string& name, const std::string& kind, const std::vector<std::string>& kind_words,
+                    const std::vector<std::string>& options) {
+    const std::string n = lower(name);
+    Subject s{"the " + kind + " `" + name + "`", {"`" + n + "`"}};
+    for (const std::string& o : options) {
+      s.names.push_back(o + " " + n);
+      s.names.push_back(o + "=" + n);
+    }
+    for (const std::string& w : kind_words) s.names.push_back(n + " " + w);
+    const auto alias = kDenialAliases.find(name);
+    if (alias != kDenialAliases.end())
+      for (const std::string& a : alias->second) s.names.push_back(lower(a));
+    out.push_back(std::move(s));
+  };
+  // Devices first: "the GPU path tracer" is the CUDA backend more than it is `pt`.
+  for (const std::string& d : registered.devices) add(d, "device", {"backend", "device backend"}, {"--device"});
+  for (const std::string& f : registered.filters) add(f, "filter", {"filter"}, {"--filter"});
+  for (const std::string& i : registered.integrators) add(i, "integrator", {"integrator"}, {"-i", "--integrator"});
+  return out;
+}
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The [begin, end) ranges where `word` occurs in `text` as a whole word: a letter or digit at an
+// end of `word` must not continue into the text around it.
+std::vector<std::pair<size_t, size_t>> occurrences(const std::string& text, const std::string& word) {
+  std::vector<std::pair<size_t, size_t>> out;
+  if (word.empty()) return out;
+  for (size_t p = text.find(word); p != std::string::npos; p = text.find(word, p + 1)) {
+    const size_t e = p + word.size();
+    const bool starts = p == 0 || !word_char(text[p - 1]) || !word_char(word.front());
+    const bool ends = e == text.size() || !word_char(text[e]) || !word_char(word.back());
+    if (starts && ends) out.emplace_back(p, e);
+  }
+  return out;
+}
+
+// The clauses of a line: split at a full stop, ';', parentheses and table cells.
+std::vector<std::string> clauses(const std::string& text) {
+  std::vector<std::string> out(1);
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    const bool full_stop = c == '.' && (i + 1 == text.size() || std::isspace(static_cast<unsigned char>(text[i + 1])));
+    if (full_stop || c == ';' || c == '(' || c == ')' || c == '|')
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
+// Phrases that deny what follows them within `reach` characters ("there is no CUDA backend", "not
+// implemented yet: a wavefront GPU path tracer"), and phrases that deny what precedes them within 40
+// characters ("the `consistent` filter does not exist").
+struct DenyingLead {
+  const char* text;
+  size_t reach;
+};
+const DenyingLead kDenyingLeads[] = {{"there is no", 80},     {"there are no", 80},      {"not implemented", 80},
+                                     {"not yet implemented", 80}, {"not built", 80}, {"not yet built", 80},
+                                     {"no", 12}};
+const char* const kDenyingTails[] = {"does not exist",      "doesn't exist",  "do not exist",      "is not implemented",
+                                     "are not implemented", "is not yet implemented", "is not built", "are not built",
+                                     "is not yet built",    "is not registered",      "is not available", "are not available"};
+// A clause with one of these is conditional, or says where something runs, rather than that it does
+// not exist: "without nvcc the CUDA backend is not built", "light tracing is not implemented on the GPU".
+const char* const kQualifiers[] = {"without", "unless", " if ", "when ", "where ", "on the gpu", "on a gpu", "on the cpu",
+                                   "on the device", "on gpus", "on cpus"};
+
+// The label of the first subject a line denies, or "".
+std::string denied_subject(const std::string& line, const std::vector<Subject>& subjects) {
+  for (const std::string& clause : clauses(lower(line))) {
+    const bool qualified = std::any_of(std::begin(kQualifiers), std::end(kQualifiers),
+                                       [&clause](const char* q) { return clause.find(q) != std::string::npos; });
+    if (qualified) continue;
+    for (const Subject& s : subjects)
+      for (const std::string& name : s.names)
+        for (const std::pair<size_t, size_t>& at : occurrences(clause, name)) {
+          for (const DenyingLead& lead : kDenyingLeads)
+            for (const std::pair<size_t, size_t>& lead_at : occurrences(clause, lead.text))
+              if (lead_at.second <= at.first && at.first - lead_at.second <= lead.reach) return s.label;
+          const std::string after = clause.substr(at.second, 40);
+          for (const char* tail : kDenyingTails)
+            if (after.find(tail) != std::string::npos) return s.label;
+        }
+  }
+  return "";
+}
+
+void check_denials(const std::vector<DocLine>& lines, const Registered& registered, std::vector<Finding>* out) {
+  const std::vector<Subject> subjects = subjects_of(registered);
+  for (const DocLine& l : lines) {
+    if (l.fenced) continue;  // code, not a claim
+    const std::string subject = denied_subject(l.text, subjects);
+    if (!subject.empty())
+      out->push_back({l.file + ":" + std::to_string(l.number),
+                      "says that " + subject + " is missing, but `pathspace info --json` lists it"});
+  }
+}
+
 // ---- the pathspace binary ----
 
 std::set<std::string> help_options() {
@@ -380,6 +521,22 @@ std::set<std::string> integrator_names() {
   if (j.is_discarded() || !j.contains("integrators")) return names;
   for (const auto& i : j["integrators"]) names.insert(i.at("name").get<std::string>());
   return names;
+}
+
+// The registered integrators, filters and devices from `pathspace info --json`.
+Registered registered_things() {
+  Registered registered;
+  const Run r = run_pathspace("info --json");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  EXPECT_FALSE(j.is_discarded()) << "not JSON:\n" << r.out;
+  if (j.is_discarded()) return registered;
+  const std::pair<const char*, std::vector<std::string>*> kinds[] = {
+      {"integrators", &registered.integrators}, {"filters", &registered.filters}, {"devices", &registered.devices}};
+  for (const auto& kind : kinds)
+    if (j.contains(kind.first))
+      for (const auto& entry : j.at(kind.first)) kind.second->push_back(entry.at("name").get<std::string>());
+  return registered;
 }
 
 std::vector<DocLine> all_doc_lines() {
@@ -419,6 +576,15 @@ TEST(Docs, NamedIntegratorsExist) {
   EXPECT_TRUE(findings.empty()) << report(findings);
 }
 
+TEST(Docs, RegisteredThingsAreNotDenied) {
+  const Registered registered = registered_things();
+  ASSERT_FALSE(registered.integrators.empty()) << "pathspace info --json lists no integrator";
+  ASSERT_FALSE(registered.devices.empty()) << "pathspace info --json lists no device";
+  std::vector<Finding> findings;
+  check_denials(all_doc_lines(), registered, &findings);
+  EXPECT_TRUE(findings.empty()) << report(findings);
+}
+
 // The checker finds what is missing (and accepts what exists), on a made-up document: three
 // missing paths, a pointer outside the repository, an unknown .md file, an unknown option and two
 // unknown integrators.
@@ -445,6 +611,38 @@ TEST(DocsCheck, FindsMissingThings) {
   ASSERT_EQ(integrators.size(), 2u) << report(integrators);
   EXPECT_NE(integrators[0].what.find("no-such-integrator"), std::string::npos);
   EXPECT_NE(integrators[1].what.find("nope"), std::string::npos);
+}
+
+// The denial checker finds the sentences that deny a registered thing, and leaves alone those that
+// are conditional, about where something runs, about unregistered things, in code or switched off.
+TEST(DocsCheck, FindsDenialsOfRegisteredThings) {
+  const std::vector<DocLine> lines =
+      split_lines("docs/made-up.md",
+                  "There is no CUDA backend yet: the kernels only compile for the device.\n"           // 1: cuda
+                  "Not implemented yet although the design names it: a wavefront GPU path tracer.\n"  // 2: cuda
+                  "The `consistent` filter does not exist in this build.\n"                            // 3: consistent
+                  "`-i bpt` is not implemented; use PT.\n"                                             // 4: bpt
+                  "Without nvcc the CUDA backend is not built.\n"
+                  "There is no toy integrator, and `-i toy` is not implemented.\n"
+                  "Light tracing is not implemented on the GPU.\n"
+                  "The hashed filter exists; no path is lost (`--filter hashed`).\n"
+                  "| CLI no filter | `--filter consistent` |\n"
+                  "```\n"
+                  "there is no CUDA backend\n"
+                  "```\n"
+                  "<!-- docs-test: off -->\nThere is no `pt`.\n<!-- docs-test: on -->\n");
+  const Registered registered{{"pt", "lt", "bpt"}, {"hashed", "consistent"}, {"cpu", "cuda"}};
+  std::vector<Finding> findings;
+  check_denials(lines, registered, &findings);
+  ASSERT_EQ(findings.size(), 4u) << report(findings);
+  const char* const expected[][2] = {{"docs/made-up.md:1", "`cuda`"},
+                                     {"docs/made-up.md:2", "`cuda`"},
+                                     {"docs/made-up.md:3", "`consistent`"},
+                                     {"docs/made-up.md:4", "`bpt`"}};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(findings[i].where, expected[i][0]);
+    EXPECT_NE(findings[i].what.find(expected[i][1]), std::string::npos) << findings[i].what;
+  }
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/filters/consistent_filter_settings.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/builtin_scenes.h"

@@ -15,8 +15,8 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
-#include "pathspace/filters/hashed_filter.h"
-#include "pathspace/gpu/cuda_hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
+#include "pathspace/filters/hashed/cuda_hashed_filter.h"
 #include "pathspace/gpu/cuda_pt_integrator.h"
 #include "pathspace/stats/statistics.h"
 #include "gpu_comparison.h"
@@ -122,7 +122,7 @@ TEST_P(CudaTemporalFilterTest, EqualsTheCpuFilterFrameByFrame) {
     EXPECT_TRUE(testing::same_filtered_bits(frame.buffer, expected, got, &differing))
         << c.name << " frame " << f << ": " << differing << " of " << frame.buffer.total_records() << " vertices differ";
     const HashedFilterStats& a = cpu.stats();
-    const gpu::CudaHashedFilterStats& b = gpu_filter.stats();
+    const HashedFilterStats& b = gpu_filter.stats();
     EXPECT_EQ(b.steps, a.steps) << c.name << " frame " << f;
     EXPECT_EQ(b.blended, a.blended) << c.name << " frame " << f;
     EXPECT_EQ(b.mean_alpha_last, a.mean_alpha_last) << c.name << " frame " << f;
@@ -150,7 +150,7 @@ TEST_P(CudaTemporalFilterTest, CaseExercisesItsSteps) {
     if (f > 0) cpu.begin_frame(frames[size_t(f)].scene->camera);
     std::vector<Rgb> values;
     cpu.filter(frames[size_t(f)].buffer, 100 + uint64_t(f), 0, &values);
-    settled = cpu.stats().settled_windows;
+    settled = cpu.stats().settled_passes;
   }
   const HashedFilterStats& a = cpu.stats();
   EXPECT_GT(a.mean_alpha_last, 0.0) << c.name;
@@ -228,7 +228,7 @@ TEST(CudaTemporalFilter, PathTracerCarriesTheTableToTheNextFrame) {
   EXPECT_GT(gpu_filter->stats().mean_alpha_last, 0.5);
   Statistics stats;
   gpu_filter->statistics(stats);
-  EXPECT_TRUE(stats.find("cuda_hashed.temporal.mean_alpha_last") != nullptr);
+  EXPECT_TRUE(stats.find("hashed.temporal.mean_alpha_last") != nullptr);
 }
 
 }  // namespace

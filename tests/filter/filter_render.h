@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "pathspace/accel/accel.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/scene.h"
 #include "pathspace/session/frame_sequence.h"

@@ -13,7 +13,7 @@
 
 #include "filter_render.h"
 #include "pathspace/film/image_metrics.h"
-#include "pathspace/filters/hashed_filter_steps.h"
+#include "pathspace/filters/hashed/hashed_filter_steps.h"
 #include "pathspace/options/option_values.h"
 #include "pathspace/session/render_config.h"
 #include "pathspace/scene/builtin_scenes.h"

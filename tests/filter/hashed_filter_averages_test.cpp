@@ -13,7 +13,7 @@
 #include <map>
 #include <vector>
 
-#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/sampling/rng.h"
 #include "pathspace/scene/builtin_scenes.h"
@@ -193,7 +193,7 @@ TEST(HashedFilterAverages, EachPassFindsATableHoldingNothingOfTheLast) {
       }
     }
     if (mode == TemporalMode::off) {
-      EXPECT_GT(filter.stats().settled_windows, 0u);  // a settled cell is cleared too
+      EXPECT_GT(filter.stats().settled_passes, 0u);  // a settled cell is cleared too
     }
   }
 }

@@ -12,7 +12,7 @@
 
 #include "filter_render.h"
 #include "pathspace/film/image_metrics.h"
-#include "pathspace/filters/temporal_history.h"
+#include "pathspace/filters/hashed/temporal_history.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/frame_sequence.h"
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "pathspace/hashing/voxel_key_batch.h"
+#include "pathspace/filters/hashed/voxel_key_batch.h"
 #include "pathspace/sampling/rng.h"
 
 namespace pathspace {

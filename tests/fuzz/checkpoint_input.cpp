@@ -5,7 +5,7 @@
 
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/consistent_filter_settings.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render_session.h"

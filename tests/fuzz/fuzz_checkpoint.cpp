@@ -1,5 +1,5 @@
 // libFuzzer target: the checkpoint reader (file container and session state) on bytes.
-// Build and run: scripts/fuzz checkpoint (docs/testing.md, "Fuzzing").
+// Build and run: scripts/fuzz checkpoint (docs/fuzzing.md).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

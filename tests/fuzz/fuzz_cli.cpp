@@ -1,5 +1,5 @@
 // libFuzzer target: the command-line parser (argv from bytes, NUL-separated; fuzz/cli_input.h).
-// Build and run: scripts/fuzz cli (docs/testing.md, "Fuzzing").
+// Build and run: scripts/fuzz cli (docs/fuzzing.md).
 #include <cstdint>
 
 #include "fuzz/cli_input.h"

@@ -1,6 +1,6 @@
 // libFuzzer target: the image readers (EXR through OpenEXR, PFM, and what stb reads: PNG, HDR,
 // TGA, JPG, BMP) on raw bytes; the first byte picks the file name (fuzz_inputs.h).
-// Build and run: scripts/fuzz image (docs/testing.md, "Fuzzing").
+// Build and run: scripts/fuzz image (docs/fuzzing.md).
 #include "fuzz/fuzz_target.h"
 
 #include "pathspace/io/image_io.h"

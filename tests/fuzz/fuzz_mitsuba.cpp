@@ -1,5 +1,5 @@
 // libFuzzer target: the Mitsuba XML loader on a scene given as text.
-// Build and run: scripts/fuzz mitsuba (docs/testing.md, "Fuzzing").
+// Build and run: scripts/fuzz mitsuba (docs/fuzzing.md).
 #include "fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

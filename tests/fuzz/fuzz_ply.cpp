@@ -1,5 +1,5 @@
 // libFuzzer target: the PLY reader (all three encodings) on raw bytes.
-// Build and run: scripts/fuzz ply (docs/testing.md, "Fuzzing").
+// Build and run: scripts/fuzz ply (docs/fuzzing.md).
 #include "fuzz/fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -12,7 +12,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/film.h"
 #include "pathspace/filters/filter_registry.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/integrators/pt/pt_integrator.h"
 #include "pathspace/scene/builtin_scenes.h"

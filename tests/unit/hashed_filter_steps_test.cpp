@@ -1,4 +1,4 @@
-// The hashed filter's per-vertex steps (filters/hashed_filter_steps.h), the code the GPU filter runs,
+// The hashed filter's per-vertex steps (filters/hashed/hashed_filter_steps.h), the code the GPU filter runs,
 // run here on the CPU with parallel_for over real vertex buffers, one vertex at a time with plain
 // atomics (no local combining, no batched keys): the filtered values must equal HashedFilter::filter's
 // bit for bit (memcmp), so the GPU's arithmetic and its overflow settling are checked in CI without
@@ -13,11 +13,11 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/filters/filter_resolve.h"
-#include "pathspace/filters/hashed_filter.h"
-#include "pathspace/filters/hashed_filter_steps.h"
-#include "pathspace/filters/overflow_settling.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter_steps.h"
+#include "pathspace/filters/hashed/overflow_settling.h"
 #include "pathspace/filters/vertex_buffer_file.h"
-#include "pathspace/hashing/voxel_hash_table.h"
+#include "pathspace/filters/hashed/voxel_hash_table.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "support/filter_pass_buffers.h"
 
@@ -29,7 +29,7 @@ using testing::PassBuffer;
 
 constexpr int kWidth = 160, kHeight = 120;
 
-// The GPU filter's algorithm (gpu/cuda_hashed_filter.cu) on the CPU: accumulate, settle, look up.
+// The GPU filter's algorithm (filters/hashed/cuda_hashed_filter.cu) on the CPU: accumulate, settle, look up.
 struct StepsResult {
   std::vector<Rgb> filtered;
   uint64_t failures = 0;
@@ -129,7 +129,7 @@ TEST_P(HashedFilterSteps, EqualTheCpuFilterBitForBit) {
     size_t differing = 0;
     EXPECT_TRUE(testing::same_filtered_bits(pb.buffer, expected, steps.filtered, &differing))
         << c.name << " pass " << pass << ": " << differing << " of " << pb.buffer.total_records() << " vertices differ";
-    EXPECT_EQ(cpu.stats().settled_windows > 0, steps.settled) << c.name;
+    EXPECT_EQ(cpu.stats().settled_passes > 0, steps.settled) << c.name;
     if (c.overflows) {
       EXPECT_TRUE(steps.settled) << c.name << ": the table was meant to overflow";
       EXPECT_GT(cpu.stats().probe_failures, 0u);

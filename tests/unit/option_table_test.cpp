@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "pathspace/filters/filter_registry.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/integrators/lt/lt_settings.h"

@@ -28,7 +28,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
 #include "pathspace/filters/consistent_filter_settings.h"
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/bpt/bpt_settings.h"
 #include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pathspace/hashing/voxel_hash_table.h"
+#include "pathspace/filters/hashed/voxel_hash_table.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {

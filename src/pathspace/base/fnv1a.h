@@ -1,5 +1,5 @@
 // FNV-1a, 64 bit: a cheap, stable fingerprint of bytes (scene contents in render states and
-// checkpoints), not a hash for tables (hashing/ has those).
+// checkpoints), not a hash for tables (filters/hashed/voxel_key.h has those).
 #pragma once
 
 #include <cstddef>

@@ -1,12 +1,12 @@
 // nvcc compile check of the hashed filter's per-vertex steps (filters/, integrators layer): the
 // vertex buffer view's store, the keys and jitter, accumulation, lookup, the temporal steps (level
 // transfer, blend, folding and eviction of a probe window) and the resolve step are
-// called from __global__ code as the GPU filter (gpu/cuda_hashed_filter.cu) calls them, so a
+// called from __global__ code as the GPU filter (filters/hashed/cuda_hashed_filter.cu) calls them, so a
 // host-only call in them fails the build even where the CUDA backend is not built. Nothing here runs.
 #include "pathspace/filters/filter_resolve.h"
-#include "pathspace/filters/hashed_filter_keys.h"
-#include "pathspace/filters/hashed_filter_steps.h"
-#include "pathspace/filters/temporal_steps.h"
+#include "pathspace/filters/hashed/hashed_filter_keys.h"
+#include "pathspace/filters/hashed/hashed_filter_steps.h"
+#include "pathspace/filters/hashed/temporal_steps.h"
 #include "pathspace/filters/vertex_buffer_view.h"
 
 namespace pathspace {

@@ -32,17 +32,13 @@ class VertexBuffer {
   // The record in slot i as the kernel produced it.
   FilterVertex record(size_t i) const;
 
-  // Per path.
-  std::vector<Rgb> prefix;
-  std::vector<uint32_t> pixel;
-  std::vector<uint8_t> count;
-  // Per record slot.
-  std::vector<Vec3> position, geometric_normal, shading_normal, incident, previous_position;
-  std::vector<float> prefix_distance, roughness;
-  std::vector<Rgb> throughput, contribution;
-  std::vector<uint8_t> layer, segments, selected;
-  std::vector<uint32_t> visible_lights;
-  std::vector<float> open_distance;
+  // One vector per field of filters/vertex_fields.h: per path, then per record slot.
+#define PATHSPACE_HOST_PATH_FIELD(T, name, what) std::vector<T> name;
+#define PATHSPACE_HOST_SLOT_FIELD(T, name, member, what) std::vector<T> name;
+  PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_HOST_PATH_FIELD)
+  PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_HOST_SLOT_FIELD)
+#undef PATHSPACE_HOST_PATH_FIELD
+#undef PATHSPACE_HOST_SLOT_FIELD
 
   // Bytes one path and one record slot take (the batch budget of a filter counts them).
   static size_t bytes_per_path();

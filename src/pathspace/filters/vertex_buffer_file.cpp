@@ -78,7 +78,12 @@ class Reader {
   uint64_t size_ = 0;
 };
 
-constexpr int kArrays = 17;  // VertexBuffer's fields, each with its byte count
+// VertexBuffer's fields (filters/vertex_fields.h, in its order), each with its byte count.
+#define PATHSPACE_COUNT_PATH_FIELD(T, name, what) +1
+#define PATHSPACE_COUNT_SLOT_FIELD(T, name, member, what) +1
+constexpr int kArrays = 0 PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_COUNT_PATH_FIELD) PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_COUNT_SLOT_FIELD);
+#undef PATHSPACE_COUNT_PATH_FIELD
+#undef PATHSPACE_COUNT_SLOT_FIELD
 
 }  // namespace
 
@@ -109,23 +114,12 @@ void write_vertex_buffer_file(const std::string& path, const VertexBufferFile& f
   w.put(f.seed);
   w.put(f.pass);
   w.put(uint8_t(!f.filtered.empty()));
-  w.put_array(b.prefix);
-  w.put_array(b.pixel);
-  w.put_array(b.count);
-  w.put_array(b.position);
-  w.put_array(b.geometric_normal);
-  w.put_array(b.shading_normal);
-  w.put_array(b.incident);
-  w.put_array(b.previous_position);
-  w.put_array(b.prefix_distance);
-  w.put_array(b.roughness);
-  w.put_array(b.throughput);
-  w.put_array(b.contribution);
-  w.put_array(b.layer);
-  w.put_array(b.segments);
-  w.put_array(b.selected);
-  w.put_array(b.visible_lights);
-  w.put_array(b.open_distance);
+#define PATHSPACE_PUT_PATH_FIELD(T, name, what) w.put_array(b.name);
+#define PATHSPACE_PUT_SLOT_FIELD(T, name, member, what) w.put_array(b.name);
+  PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_PUT_PATH_FIELD)
+  PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_PUT_SLOT_FIELD)
+#undef PATHSPACE_PUT_PATH_FIELD
+#undef PATHSPACE_PUT_SLOT_FIELD
   if (!f.filtered.empty()) w.put_array(f.filtered);
   w.finish();
 }
@@ -169,25 +163,14 @@ VertexBufferFile read_vertex_buffer_file(const std::string& path) {
     r.fail("it holds " + std::to_string(r.remaining()) + " bytes of arrays, its header says " + std::to_string(expected));
   VertexBuffer& b = f.buffer;
   b.resize(size_t(paths), records);
-  r.get_array(&b.prefix, paths, "prefix");
-  r.get_array(&b.pixel, paths, "pixel");
-  r.get_array(&b.count, paths, "count");
+#define PATHSPACE_GET_PATH_FIELD(T, name, what) r.get_array(&b.name, paths, what);
+#define PATHSPACE_GET_SLOT_FIELD(T, name, member, what) r.get_array(&b.name, slots, what);
+  PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_GET_PATH_FIELD)
+  PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_GET_SLOT_FIELD)
+#undef PATHSPACE_GET_PATH_FIELD
+#undef PATHSPACE_GET_SLOT_FIELD
   for (const uint8_t c : b.count)
     if (c > records) r.fail("a path has more records than its slots");
-  r.get_array(&b.position, slots, "position");
-  r.get_array(&b.geometric_normal, slots, "geometric normal");
-  r.get_array(&b.shading_normal, slots, "shading normal");
-  r.get_array(&b.incident, slots, "incident direction");
-  r.get_array(&b.previous_position, slots, "previous position");
-  r.get_array(&b.prefix_distance, slots, "prefix distance");
-  r.get_array(&b.roughness, slots, "roughness");
-  r.get_array(&b.throughput, slots, "throughput");
-  r.get_array(&b.contribution, slots, "contribution");
-  r.get_array(&b.layer, slots, "layer");
-  r.get_array(&b.segments, slots, "segments");
-  r.get_array(&b.selected, slots, "selected");
-  r.get_array(&b.visible_lights, slots, "visible lights");
-  r.get_array(&b.open_distance, slots, "open distance");
   if (has_filtered) r.get_array(&f.filtered, slots, "filtered");
   r.expect_end();
   return f;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "pathspace/filters/hashed_filter_settings.h"
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/filters/vertex_buffer.h"
 
 namespace pathspace {

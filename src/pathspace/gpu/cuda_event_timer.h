@@ -5,7 +5,7 @@
 
 #include <cuda_runtime_api.h>
 
-#include "pathspace/gpu/cuda_check.h"
+#include "pathspace/parallel/cuda_check.h"
 
 namespace pathspace::gpu {
 

@@ -3,7 +3,7 @@
 #include <cuda_runtime.h>
 
 #include "pathspace/filters/vertex_buffer_view.h"
-#include "pathspace/gpu/cuda_check.h"
+#include "pathspace/parallel/cuda_check.h"
 #include "pathspace/gpu/cuda_event_timer.h"
 #include "pathspace/gpu/wavefront_stages.h"
 

@@ -11,7 +11,7 @@
 #include "pathspace/accel/bvh_tracer.h"
 #include "pathspace/filters/vertex_buffer_view.h"
 #include "pathspace/gpu/device_counters.h"
-#include "pathspace/gpu/device_buffer.h"
+#include "pathspace/parallel/device_buffer.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 
 namespace pathspace::gpu {

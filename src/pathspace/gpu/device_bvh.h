@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "pathspace/accel/bvh_build.h"
-#include "pathspace/gpu/device_buffer.h"
+#include "pathspace/parallel/device_buffer.h"
 #include "pathspace/scene/scene.h"
 
 namespace pathspace::gpu {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "pathspace/gpu/device_buffer.h"
+#include "pathspace/parallel/device_buffer.h"
 #include "pathspace/scene/scene.h"
 #include "pathspace/scene/scene_view.h"
 

@@ -50,7 +50,7 @@
 #define STBIW_ZLIB_COMPRESS pathspace_png_deflate
 // Debian's stb_image.h calls memcpy with a null source and length 0 on some damaged PNGs: undefined
 // but harmless, and third-party. Sanitizer and fuzz builds compile this file without UBSan's
-// nonnull check (src/pathspace/CMakeLists.txt; docs/testing.md, "Fuzzing").
+// nonnull check (src/pathspace/CMakeLists.txt; docs/fuzzing.md).
 // stb reads only the formats docs/cli.md lists (PNG, JPG, TGA, HDR, BMP): its PNM reader overflows
 // an int on a long header number (undefined; found by fuzz_image, tests/fuzz/corpus/image/
 // crash_pnm_header_int_overflow), and PSD, PIC and GIF are formats no scene of ours uses.

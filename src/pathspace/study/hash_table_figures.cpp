@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "pathspace/filters/hashed_filter.h"
+#include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace::study {
