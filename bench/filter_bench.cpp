@@ -23,7 +23,7 @@
 #include "pathspace/filters/consistent_filter.h"
 #include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/parallel/parallel_for.h"
-#include "pathspace/study/vertex_sets.h"
+#include "studies/psf2021/vertex_sets.h"
 
 namespace pathspace {
 namespace {

@@ -11,7 +11,7 @@
 #include "pathspace/base/error.h"
 #include "pathspace/filters/hashed/hashed_filter.h"
 #include "pathspace/filters/vertex_buffer_file.h"
-#include "pathspace/study/vertex_sets.h"
+#include "studies/psf2021/vertex_sets.h"
 
 int main(int argc, char** argv) {
   using namespace pathspace;

@@ -6,7 +6,7 @@
 #     layer on its own path, or an earlier folder of its own layer),
 #   - a file in, or an include of, a folder that is in no layer (place every new folder there),
 #   - a quoted include that climbs out of the file's folder with "../" (write "pathspace/<folder>/..."),
-# and, for every .h/.cpp/.cu/.cuh/.hpp file under ROOT/{src,apps,tests,bench,tools}/, an #include of an
+# and, for every .h/.cpp/.cu/.cuh/.hpp file under ROOT/{src,apps,studies,tests,bench,tools}/, an #include of an
 # absolute path. Fails (exit status 1) when it reports anything. Folders missing from the tree (a
 # layer not written yet) are fine. With -DSTAMP=<file>, touches that file on success (the build runs
 # this check as a custom command; src/pathspace/CMakeLists.txt).
@@ -107,7 +107,7 @@ foreach(rel IN LISTS layered_files)
 endforeach()
 
 # Absolute include paths anywhere else in the repository's code.
-foreach(dir src apps tests bench tools)
+foreach(dir src apps studies tests bench tools)
   if(NOT IS_DIRECTORY "${ROOT}/${dir}")
     continue()
   endif()

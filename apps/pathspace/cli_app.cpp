@@ -8,7 +8,7 @@
 #include "pathspace/base/printable.h"
 #include "pathspace/options/option_spec.h"
 #include "job_group.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

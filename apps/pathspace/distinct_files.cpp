@@ -1,7 +1,7 @@
 #include "distinct_files.h"
 
 #include "pathspace/io/file_identity.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

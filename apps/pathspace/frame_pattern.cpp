@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

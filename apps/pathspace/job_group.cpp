@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/fnv1a.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 #if PATHSPACE_HAVE_MPI
 #include "mpi_process_group.h"

@@ -4,7 +4,6 @@
 
 #include "pathspace/options/option_parse.h"
 #include "pathspace/options/option_spec.h"
-#include "usage_error.h"
 
 namespace pathspace::cli {
 
@@ -39,21 +38,6 @@ CLI::Validator checked_unsigned(const std::string& name, uint64_t max) {
 CLI::Validator checked_real(const std::string& name, double min, double max) {
   return checked("FLOAT in [" + number_text(min) + " - " + number_text(max) + "]",
                  [=](const std::string& t) { parse_double_option(name, t, min, max); });
-}
-
-Resolution parse_resolution_option(const std::string& option, const std::string& text, int max_side) {
-  const size_t x = text.find_first_of("xX");
-  if (x == std::string::npos || x == 0 || x + 1 == text.size())
-    throw UsageError("--" + option + " expects WxH, e.g. 512x512, not '" + text + "'");
-  try {
-    Resolution r;
-    r.width = int(parse_integer_option(option, text.substr(0, x), 1, max_side));
-    r.height = int(parse_integer_option(option, text.substr(x + 1), 1, max_side));
-    return r;
-  } catch (const OptionError&) {
-    throw UsageError("--" + option + " '" + text + "': width and height must be whole numbers between 1 and " +
-                     std::to_string(max_side));
-  }
 }
 
 }  // namespace pathspace::cli

@@ -1,6 +1,6 @@
 // Every number on the command line goes through the checked parsers of options/option_parse.h
 // (whole text, range, overflow, NaN and infinity, naming the option): as CLI11 validators for the
-// typed options, and parse_resolution_option for WxH. CLI11's own conversion would wrap "-1" into a
+// typed options (WxH: options/resolution_option.h). CLI11's own conversion would wrap "-1" into a
 // huge unsigned value and accept "nan" inside a Range, so it only ever sees text checked here.
 #pragma once
 
@@ -8,6 +8,8 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+#include "pathspace/options/resolution_option.h"
 
 namespace pathspace::cli {
 
@@ -17,12 +19,5 @@ namespace pathspace::cli {
 CLI::Validator checked_integer(const std::string& name, double min, double max);
 CLI::Validator checked_unsigned(const std::string& name, uint64_t max);
 CLI::Validator checked_real(const std::string& name, double min, double max);
-
-struct Resolution {
-  int width = 0, height = 0;
-};
-
-// "WxH" (or "WXH"), each side a whole number 1 ... max_side; throws UsageError naming --option.
-Resolution parse_resolution_option(const std::string& option, const std::string& text, int max_side);
 
 }  // namespace pathspace::cli

@@ -35,7 +35,7 @@
 #include "render_resume.h"
 #include "render_scene.h"
 #include "pathspace/session/render_stats_json.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

@@ -23,7 +23,7 @@
 #include "render_outputs.h"
 #include "render_scene.h"
 #include "pathspace/session/render_stats_json.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 #include "video_encoder.h"
 
 namespace pathspace::cli {

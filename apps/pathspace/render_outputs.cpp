@@ -8,7 +8,7 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

@@ -13,7 +13,7 @@
 #include "pathspace/scene/scene_validation.h"
 #include "job_group.h"
 #include "number_options.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
 

@@ -267,7 +267,7 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
     for (const auto& run : figures.at(fig).at("runs"))
       for (const char* key : {"image_png", "error_png"}) EXPECT_TRUE(fs::exists(dir_ / "sp" / run.at(key).get<std::string>())) << run.at(key);
   }
-  // Modes (study_psf_temporal.cpp, orbit_configurations): integrate and off at the defaults and at
+  // Modes (studies/psf2021/temporal_figures.cpp, orbit_configurations): integrate and off at the defaults and at
   // s = 4 px with texture footprints, and integrate with query paths too.
   EXPECT_EQ(figures.at("2021-sec3.4.1").at("runs").size(), 20u);  // 2 scenes x 5 modes x frames 1 and 4
   const auto& orbit = figures.at("2021-sec3.4.1").at("data").at("temporal_orbit").at("rows");

@@ -2,7 +2,7 @@
 
 #include "cli_app.h"
 #include "pathspace/options/option_spec.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
 namespace pathspace::fuzz {
 
@@ -38,7 +38,7 @@ std::string parse_cli_words(const std::vector<std::string>& words) {
     return "help";
   } catch (const CLI::ParseError&) {
     return "usage";
-  } catch (const cli::UsageError&) {
+  } catch (const UsageError&) {
     return "usage";
   } catch (const OptionError&) {
     return "usage";

@@ -1,4 +1,4 @@
-// The edge-avoiding à-trous baseline of `pathspace study psf` (src/pathspace/study/atrous_filter.h):
+// The edge-avoiding à-trous baseline of `pathspace study psf` (studies/psf/atrous_filter.h):
 // a constant image stays constant whatever the guides; an edge in the normal or albedo guide stops
 // blur across it; independent noise on one surface loses most of its variance.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/sampling/rng.h"
-#include "pathspace/study/atrous_filter.h"
+#include "studies/psf/atrous_filter.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // budget (passes, checkpoints of passes, or seconds) and measured against a reference (relMSE, MSE,
 // means), plus the typed statistics each configuration must report and custom image metrics. The
 // runner (experiment_runner.h) renders every cell through a RenderSession; experiment_output.h
-// writes CSV, JSON and a self-contained HTML page. `pathspace study pclt` and bench/studies/ are
+// writes CSV, JSON and a self-contained HTML page. `pathspace study pclt` and the programs of studies/ are
 // defined on it (docs/architecture.md, "Experiments").
 #pragma once
 

@@ -1,6 +1,6 @@
 // Table: rows of Records with chosen columns, written as CSV or JSON. The experiment runner's
 // results become one (results_table in experiment_output.h); a study that measures without the
-// runner (bench/studies/psf_figures.cpp) builds its own and uses the same writers.
+// runner (studies/psf2021/hash_table_csv.cpp) builds its own and uses the same writers.
 #pragma once
 
 #include <string>

@@ -1,8 +1,8 @@
-// The sections of `pathspace study psf` (study_psf_figures.h): what each paper figure shows and how
+// The sections of `pathspace study psf` (studies/psf/psf_figures.h): what each paper figure shows and how
 // the study reproduces it, in page order, and the helpers the figure files share.
-#include "study_psf_figures.h"
+#include "studies/psf/psf_figures.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -76,7 +76,7 @@ std::vector<study::Figure> make_psf_figures() {
                      "reduces the variance of indirect illumination while direct illumination stays sharp.",
                      "PT, PT + hashed filter at the first vertex, and PT + hashed filter at the second (--psf-select nth "
                      "--psf-nth 2), all at 16 paths per pixel."));
-  // 2021 sec. 3.4: the table across frames (study_psf_temporal.cpp), once per study.
+  // 2021 sec. 3.4: the table across frames (studies/psf2021/temporal_figures.cpp), once per study.
   f.push_back(figure("2021-sec3.4.1", "2021 sec. 3.4.1 - temporal integration of a static scene, orbiting camera",
                      "Keeping the hash table across frames and blending each voxel's earlier average with the new one "
                      "(alpha = N_old / (N_old + N_new)) is true temporal integration of static content: the error falls "
@@ -153,4 +153,4 @@ study::PlotSeries rel_mse_series(const std::string& name, const std::vector<stud
   return s;
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -10,7 +10,7 @@
 
 #include "pathspace/study/figure.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 // The figures of both studies are study::Figure (src/pathspace/study/figure.h).
 using StudyFigure = study::Figure;
@@ -30,4 +30,4 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
 // Sets fig. 9's reason from the largest light count of the built-in scenes.
 void describe_fig9(size_t max_builtin_lights, std::vector<StudyFigure>* figures);
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -1,12 +1,12 @@
 // `pathspace study psf`: the figures of the two path space filtering papers as the study reproduces
 // them on built-in scenes, one function per figure, on the study harness (src/pathspace/study/):
 //   Keller, Dahm, Binder 2014 (--filter consistent): fig. 2 iterated averaging, fig. 3 progressive
-//     filtering, fig. 4 the similarity weights, fig. 7 anti-aliasing on filter-fence, sec. 2.3 photon-mapped caustics (study_psf_2014.cpp);
+//     filtering, fig. 4 the similarity weights, fig. 7 anti-aliasing on filter-fence, sec. 2.3 photon-mapped caustics (studies/psf2014/figures_2014.cpp);
 //   Binder, Fricke, Keller 2021 (--filter hashed): fig. 1 one path per pixel, fig. 4 voxel size,
 //     fig. 10 second-bounce filtering, and the 2019 short version's figs. 7 and 8 (hash collisions,
-//     filter time) on fixed vertex sets (study_psf_2021.cpp);
+//     filter time) on fixed vertex sets (studies/psf2021/figures_2021.cpp);
 //   an equal-time comparison neither paper has: PT, PT + hashed, PT + consistent and PT followed by
-//     an edge-avoiding à-trous filter in screen space (study_psf_equal_time.cpp).
+//     an edge-avoiding à-trous filter in screen space (studies/psf/equal_time.cpp).
 #pragma once
 
 #include <cstdint>
@@ -19,9 +19,9 @@
 #include "pathspace/options/option_values.h"
 #include "pathspace/study/figure.h"
 #include "pathspace/study/svg_plot.h"
-#include "study_command.h"
+#include "studies/common/study_options.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 struct PsfStudyParams {
   double time_s = 3.0;   // equal-time budget
@@ -46,7 +46,7 @@ void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params,
 // Once per study: 2019 figs. 7 and 8 on cornell-box vertex sets of width x height.
 void run_hash_table_figures(int width, int height, int threads, bool quiet, std::vector<study::Figure>* figures);
 
-// Once per study: the hashed filter's table across frames (2021 sec. 3.4; study_psf_temporal.cpp):
+// Once per study: the hashed filter's table across frames (2021 sec. 3.4; studies/psf2021/temporal_figures.cpp):
 // the orbit on a static scene (3.4.1), the moving light of fig. 9, the eviction flight (3.4.3).
 // Each adds its figure's runs, plots and tables; the frames' references become scene entries of
 // their own (ids "<scene>-orbit-f<N>", "ml_c-f<N>"), so that the page shows each frame's renders
@@ -75,6 +75,4 @@ std::vector<study::MetricRow> filter_metric_rows(const std::string& filter);
 study::PlotSeries rel_mse_series(const std::string& name, const std::vector<study::Measurement>& runs,
                                  const std::function<double(const study::Measurement&)>& x);
 
-int run_psf_study(const StudyOptions& options, const PsfStudyOptions& psf_options);
-
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

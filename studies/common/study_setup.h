@@ -10,9 +10,9 @@
 
 #include "pathspace/study/experiment_runner.h"
 #include "pathspace/study/figure.h"
-#include "study_command.h"
+#include "studies/common/study_options.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 struct StudySetup {
   int width = 0, height = 0;
@@ -42,4 +42,4 @@ StudyDocument study_document(const StudyOptions& options, const StudySetup& setu
                              std::string title);
 void write_study(const StudyOptions& options, const StudyDocument& document);
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -1,4 +1,4 @@
-#include "pathspace/study/hash_table_figures.h"
+#include "studies/psf2021/hash_table_figures.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
-// The equal-time comparison of `pathspace study psf` (study_psf_figures.h), which neither path space
+// The equal-time comparison of `pathspace study psf` (studies/psf/psf_figures.h), which neither path space
 // filtering paper has: PT, PT + hashed, PT + consistent filter (with and without photon-mapped
 // caustics, one photon per pixel and pass) for the same wall time, and PT
-// followed by the edge-avoiding à-trous filter in screen space (study/atrous_filter.h), whose guide
+// followed by the edge-avoiding à-trous filter in screen space (studies/psf/atrous_filter.h), whose guide
 // buffers and filtering are timed and added to the PT render's time.
 #include <chrono>
 #include <string>
@@ -10,11 +10,11 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
-#include "pathspace/study/atrous_filter.h"
-#include "pathspace/study/guide_buffers.h"
-#include "study_psf_figures.h"
+#include "studies/psf/atrous_filter.h"
+#include "studies/psf/guide_buffers.h"
+#include "studies/psf/psf_figures.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -60,4 +60,4 @@ void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params,
   f.runs.insert(f.runs.end(), runs.begin(), runs.end());
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -1,8 +1,8 @@
-// The runs behind each reproduced PCLT paper figure (study_pclt_figures.h), as experiments on the
+// The runs behind each reproduced PCLT paper figure (studies/pclt/pclt_figures.h), as experiments on the
 // harness (src/pathspace/study/), and the one-line findings computed from their numbers.
 // Equal-iteration figures (5-8) use the iteration count PCLT reached in fig. 1's time budget, so
 // every figure's images are about as converged as fig. 1's.
-#include "study_pclt_figures.h"
+#include "studies/pclt/pclt_figures.h"
 
 #include <algorithm>
 #include <bit>
@@ -15,7 +15,7 @@
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -252,4 +252,4 @@ void run_pclt_figures(const study::ExperimentRunner& runner, const study::Prepar
     for (Measurement& m : f.runs) m.image = Image();
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pathspace/study/table.h"
-#include "pathspace/study/vertex_sets.h"
+#include "studies/psf2021/vertex_sets.h"
 
 namespace pathspace::study {
 

@@ -5,28 +5,12 @@
 // docs/scene-files.md "Gallery").
 #pragma once
 
-#include <cstdint>
-#include <string>
+#include "studies/common/study_options.h"
 
-#include <CLI/CLI.hpp>
+namespace pathspace::studies {
 
-namespace pathspace::cli {
-
-struct GalleryOptions {
-  std::string dir;
-  std::string out = "pathspace-out/gallery";
-  double time_s = 60.0;        // per scene
-  std::string integrator = "bpt";
-  uint64_t seed = 0;
-  int threads = 0;
-  bool substitute_missing_textures = false;
-  bool no_exr = false;
-  bool quiet = false;
-};
-
-void add_gallery_options(CLI::App* gallery, GalleryOptions* o);
 // Renders and compares; a scene that fails to load or render is listed with its error. Throws
 // UsageError for invalid options, pathspace::Error when nothing can be written.
 int run_gallery_study(const GalleryOptions& o);
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -2,12 +2,12 @@
 // filtering paper) as CSV: psf_fig7.csv (hash collisions and occupancy vs table size) and
 // psf_fig8.csv (filter time vs voxel size) on the 1920x1080 cornell-box vertex sets, into the folder
 // given as argument (default docs/figures); scripts/plot-psf-figures plots them. A thin wrapper: the
-// measurements are study/hash_table_figures.h, which `pathspace study psf` also runs for its page.
+// measurements are studies/psf2021/hash_table_figures.h, which `pathspace study psf` also runs for its page.
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
-#include "pathspace/study/hash_table_figures.h"
+#include "studies/psf2021/hash_table_figures.h"
 
 using namespace pathspace;
 

@@ -1,4 +1,4 @@
-// The hashed filter's table across frames in `pathspace study psf` (study_psf_figures.h; Binder,
+// The hashed filter's table across frames in `pathspace study psf` (studies/psf/psf_figures.h; Binder,
 // Fricke, Keller 2021, sec. 3.4; docs/animation.md): the acceptance measurements of the temporal
 // reuse, rendered once per study through render_frames (session/frame_sequence.h):
 //   * sec. 3.4.1: a static scene seen by an orbiting camera, 1 spp per frame, `--temporal integrate`
@@ -28,10 +28,10 @@
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/frame_sequence.h"
 #include "pathspace/study/image_files.h"
-#include "study_psf_figures.h"
-#include "usage_error.h"
+#include "studies/psf/psf_figures.h"
+#include "pathspace/options/usage_error.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -603,4 +603,4 @@ void run_temporal_figures(const study::ExperimentRunner& runner, const TemporalS
     skip(&eviction, "--eviction-frames");
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -1,12 +1,13 @@
-// UsageError: a mistake in how the command was called (bad value, unknown name). main() prints it as
-// one line with a hint (by default: see --help) and exits with status 2; other errors exit with 1.
+// UsageError: a mistake in how a command was called (bad value, unknown name), by the CLI or by a
+// study's options. The CLI's main() prints it as one line with a hint (by default: see --help) and
+// exits with status 2; other errors exit with 1.
 #pragma once
 
 #include <string>
 
 #include "pathspace/base/error.h"
 
-namespace pathspace::cli {
+namespace pathspace {
 
 class UsageError : public Error {
  public:
@@ -18,4 +19,4 @@ class UsageError : public Error {
   std::string hint_;
 };
 
-}  // namespace pathspace::cli
+}  // namespace pathspace

@@ -1,4 +1,4 @@
-#include "pathspace/study/vertex_sets.h"
+#include "studies/psf2021/vertex_sets.h"
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/pt/pt_integrator.h"

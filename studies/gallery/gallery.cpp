@@ -1,4 +1,4 @@
-#include "study_gallery.h"
+#include "studies/gallery/gallery.h"
 
 #include <algorithm>
 #include <array>
@@ -19,10 +19,9 @@
 #include "pathspace/study/error_colormap.h"
 #include "pathspace/study/image_files.h"
 #include "pathspace/study/markup_escape.h"
-#include "number_options.h"
-#include "usage_error.h"
+#include "pathspace/options/usage_error.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -217,19 +216,6 @@ std::string html_page(const GalleryOptions& o, const std::vector<GalleryEntry>& 
 
 }  // namespace
 
-void add_gallery_options(CLI::App* g, GalleryOptions* o) {
-  g->add_option("dir", o->dir, "Folder of scenes: itself and each subfolder holding TungstenRender.exr and a scene file")->required();
-  g->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
-  g->add_option("-t,--time", o->time_s, "Seconds of rendering per scene")->check(checked_real("time", 1e-3, 1e6))->capture_default_str();
-  g->add_option("-i,--integrator", o->integrator, "Integrator of the renders")->capture_default_str();
-  g->add_option("--seed", o->seed, "Random seed")->check(checked_unsigned("seed", UINT64_MAX))->capture_default_str();
-  g->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str();
-  g->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
-              "Render scenes with missing images, replaced by neutral stand-ins (a warning each)");
-  g->add_flag("--no-exr", o->no_exr, "Write PNG only");
-  g->add_flag("-q,--quiet", o->quiet, "No progress lines");
-}
-
 int run_gallery_study(const GalleryOptions& o) {
   if (!fs::is_directory(o.dir)) throw UsageError("'" + o.dir + "' is not a folder", "give the folder of scenes, e.g. ../shared/scenes/bitterli");
   if (!integrator_registry().find(o.integrator))
@@ -270,4 +256,4 @@ int run_gallery_study(const GalleryOptions& o) {
   return 0;
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -1,6 +1,6 @@
 // Binder, Fricke, Keller 2021 (hashed path space filtering, `--filter hashed`) in
 // `pathspace study psf`: figs. 1, 4 and 10 rendered per scene, and the 2019 short version's figs. 7
-// and 8 measured once on fixed vertex sets (study/hash_table_figures.h), one function each.
+// and 8 measured once on fixed vertex sets (studies/psf2021/hash_table_figures.h), one function each.
 #include <cmath>
 #include <map>
 #include <string>
@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "pathspace/study/hash_table_figures.h"
-#include "study_psf_figures.h"
+#include "studies/psf2021/hash_table_figures.h"
+#include "studies/psf/psf_figures.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -168,4 +168,4 @@ void run_hash_table_figures(int width, int height, int threads, bool quiet, std:
   f8.data["psf_fig8"] = std::move(t8);
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "pathspace/film/image.h"
-#include "pathspace/study/guide_buffers.h"
+#include "studies/psf/guide_buffers.h"
 
 namespace pathspace::study {
 

@@ -1,12 +1,13 @@
-// `pathspace study psf` (study_psf_figures.h): checks the options, runs every figure on each scene in
+// `pathspace study psf` (studies/psf/psf_figures.h): checks the options, runs every figure on each scene in
 // page order (each scene's reference first), the hash table figures and the temporal figures once,
 // and writes the page.
 #include <fmt/format.h>
 
-#include "study_psf_figures.h"
-#include "study_setup.h"
+#include "studies/psf/psf_figures.h"
+#include "studies/psf/psf_study.h"
+#include "studies/common/study_setup.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
   int vertex_width = 0, vertex_height = 0;
@@ -55,4 +56,4 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
   return 0;
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

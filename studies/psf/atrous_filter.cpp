@@ -1,7 +1,7 @@
 // The à-trous iterations (atrous_filter.h). Weights are exp(-d^2 / sigma^2) per guide, as in the
 // paper's eqs. for w_rt, w_n and w_x; the normalisation divides by the sum of h * w, so a constant
 // image stays constant whatever the guides.
-#include "pathspace/study/atrous_filter.h"
+#include "studies/psf/atrous_filter.h"
 
 #include <cmath>
 

@@ -1,14 +1,14 @@
 // Keller, Dahm, Binder 2014 (consistent path space filtering, `--filter consistent`) in
-// `pathspace study psf`: figs. 2, 3 and 4 (study_psf_figures.h), one function each.
+// `pathspace study psf`: figs. 2, 3 and 4 (studies/psf/psf_figures.h), one function each.
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "pathspace/options/option_spec.h"
-#include "study_psf_figures.h"
+#include "studies/psf/psf_figures.h"
 
-namespace pathspace::cli {
+namespace pathspace::studies {
 
 namespace {
 
@@ -122,4 +122,4 @@ void run_2014_sec23(const study::FigureRunner& fr, const PsfStudyParams&, std::v
   f.findings[fr.scene().id()] = fmt::format("relMSE at 16 paths per pixel: {}.", rel_mse_list(runs));
 }
 
-}  // namespace pathspace::cli
+}  // namespace pathspace::studies

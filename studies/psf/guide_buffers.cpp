@@ -1,4 +1,4 @@
-#include "pathspace/study/guide_buffers.h"
+#include "studies/psf/guide_buffers.h"
 
 #include <algorithm>
 #include <cmath>
