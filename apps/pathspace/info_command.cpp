@@ -15,15 +15,16 @@
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/render.h"
 #include "pathspace/session/option_catalog.h"
+#include "pathspace/session/run_options.h"
 #include "scene_summary.h"
 
 namespace pathspace::cli {
 
 namespace {
 
-nlohmann::ordered_json options_json(const SettingsSchema& schema) {
+nlohmann::ordered_json options_json(const std::vector<OptionSpec>& options) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const OptionSpec& s : schema.options) list.push_back(option_spec_json(s));
+  for (const OptionSpec& s : options) list.push_back(option_spec_json(s));
   return list;
 }
 
@@ -38,7 +39,7 @@ nlohmann::ordered_json registry_json() {
     i["paper"] = e.paper;
     i["filters"] = e.filter_names();
     i["devices"] = devices_of_integrator(e.name);
-    i["options"] = options_json(e.schema);
+    i["options"] = options_json(e.schema.options);
     j["integrators"].push_back(i);
   }
   j["filters"] = nlohmann::ordered_json::array();
@@ -47,7 +48,7 @@ nlohmann::ordered_json registry_json() {
     f["name"] = e.name;
     f["description"] = e.description;
     f["paper"] = e.paper;
-    f["options"] = options_json(e.schema);
+    f["options"] = options_json(e.schema.options);
     j["filters"].push_back(f);
   }
   j["devices"] = nlohmann::ordered_json::array();
@@ -59,6 +60,7 @@ nlohmann::ordered_json registry_json() {
     d["filters"] = e.filters;
     j["devices"].push_back(d);
   }
+  j["run_options"] = options_json(run_options());  // --spp, --time, --threads
   return j;
 }
 
@@ -79,9 +81,9 @@ void print_options(const SettingsSchema& schema) {
   }
 }
 
-std::string markdown_options(const SettingsSchema& schema) {
+std::string markdown_options(const std::vector<OptionSpec>& options) {
   std::string out = "| option | default | values | meaning | paper |\n|---|---|---|---|---|\n";
-  for (const OptionSpec& s : schema.options)
+  for (const OptionSpec& s : options)
     out += fmt::format("| `--{}` | {} | {} | {} | {} |\n", s.name, s.type == OptionType::flag ? "off" : s.default_text,
                        s.type == OptionType::flag     ? std::string("flag")
                        : s.type == OptionType::choice ? fmt::format("{}", fmt::join(s.choices, ", "))
@@ -99,13 +101,15 @@ std::string registry_markdown() {
     const std::vector<std::string> filters = e.filter_names();
     if (!filters.empty()) out += fmt::format(" Filters: `{}`.", fmt::join(filters, "`, `"));
     out += fmt::format(" Devices: `{}`.", devices_of_integrator(e.name));
-    out += "\n\n" + markdown_options(e.schema);
+    out += "\n\n" + markdown_options(e.schema.options);
   }
   for (const FilterEntry& e : filter_registry().entries()) {
     out += fmt::format("\n### `--filter {}`\n\n{}.", e.name, e.description);
     if (!e.paper.empty()) out += fmt::format(" Paper: {}.", e.paper);
-    out += "\n\n" + (e.schema.options.empty() ? std::string("No options.\n") : markdown_options(e.schema));
+    out += "\n\n" + (e.schema.options.empty() ? std::string("No options.\n") : markdown_options(e.schema.options));
   }
+  out += "\n### Run options\n\nEvery render's, beside its integrator's and filter's (`render`, Python's `render()`).\n\n" +
+         markdown_options(run_options());
   out += "\n### `--device`\n\n";
   for (const DeviceEntry& d : device_registry().entries())
     out += fmt::format("* `{}`: {}; integrators `{}`, filters `{}`.\n", d.name, d.description, fmt::join(d.integrators, "`, `"),

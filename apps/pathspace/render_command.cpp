@@ -36,6 +36,7 @@
 #include "render_scene.h"
 #include "pathspace/session/render_stats_json.h"
 #include "pathspace/options/usage_error.h"
+#include "pathspace/session/run_options.h"
 
 namespace pathspace::cli {
 
@@ -97,14 +98,21 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(CLI::IsMember(light_selection_names()))
       ->capture_default_str();
   // What does not change the image: free to change when a render is resumed (render_resume.h).
-  CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, "Samples per pixel (default 16; with --resume: in total)")
-                         ->check(checked_integer("spp", 1, 1 << 24))
+  // The run options' help and ranges: session/run_options.h.
+  const OptionSpec& spp_spec = run_option(RunOption::spp);
+  const OptionSpec& time_spec = run_option(RunOption::time);
+  const OptionSpec& threads_spec = run_option(RunOption::threads);
+  CLI::Option* spp = cmd->add_option("-s,--spp", o->spp, spp_spec.help)
+                         ->check(checked_integer(spp_spec.name, spp_spec.min, spp_spec.max))
                          ->group(kRunOptionsGroup);
-  cmd->add_option("-t,--time", o->time_s, "Render for this many seconds (whole passes) instead of --spp; with --resume: this many more")
-      ->check(checked_real("time", 1e-3, 1e7))
+  cmd->add_option("-t,--time", o->time_s, time_spec.help)
+      ->check(checked_real(time_spec.name, time_spec.min, time_spec.max))
       ->excludes(spp)
       ->group(kRunOptionsGroup);
-  cmd->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str()->group(kRunOptionsGroup);
+  cmd->add_option("-j,--threads", o->threads, threads_spec.help)
+      ->check(checked_integer(threads_spec.name, threads_spec.min, threads_spec.max))
+      ->capture_default_str()
+      ->group(kRunOptionsGroup);
   cmd->add_option("-o,--out", o->outputs, "Output file(s): .exr, .pfm or .png (default pathspace-out/SCENE.exr and .png)")->group(kRunOptionsGroup);
   cmd->add_option("--stats", o->stats_path, "Write run statistics as JSON to this file")->group(kRunOptionsGroup);
   cmd->add_option("--variance-out", o->variance_path, "Write the per-pixel variance of the mean (.exr/.pfm; .png would clamp it)")
@@ -226,7 +234,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   }
   if (resumed) session.restore_state(resumed->state);
   const uint32_t done = session.passes_done();
-  const uint32_t spp = o.spp > 0 ? o.spp : (file_spp > 0 ? uint32_t(file_spp) : 16);
+  const uint32_t spp = o.spp > 0 ? o.spp : (file_spp > 0 ? uint32_t(file_spp) : kDefaultSpp);
   if (resumed && o.time_s <= 0.0 && spp < done)
     throw UsageError(fmt::format("--spp {}: the checkpoint holds {} samples per pixel already", spp, done),
                      "--spp is the total with --resume; give at least " + std::to_string(done));

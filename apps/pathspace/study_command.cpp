@@ -3,6 +3,7 @@
 #include "study_command.h"
 
 #include "number_options.h"
+#include "pathspace/session/run_options.h"
 #include "studies/gallery/gallery.h"
 #include "studies/pclt/pclt_study.h"
 #include "studies/psf/psf_study.h"
@@ -10,6 +11,12 @@
 namespace pathspace::cli {
 
 namespace {
+
+// --threads as every render takes it (session/run_options.h).
+CLI::Validator threads_check() {
+  const OptionSpec& s = run_option(RunOption::threads);
+  return checked_integer(s.name, s.min, s.max);
+}
 
 void add_common_options(CLI::App* sub, studies::StudyOptions* o, const std::string& time_help) {
   sub->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
@@ -21,7 +28,7 @@ void add_common_options(CLI::App* sub, studies::StudyOptions* o, const std::stri
   sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")
       ->check(checked_unsigned("seed", UINT64_MAX))
       ->capture_default_str();
-  sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str();
+  sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(threads_check())->capture_default_str();
   sub->add_flag("--no-exr", o->no_exr, "Write PNG only (commit-sized output)");
   sub->add_flag("-q,--quiet", o->quiet, "No progress lines");
 }
@@ -32,7 +39,7 @@ void add_gallery_options(CLI::App* g, studies::GalleryOptions* o) {
   g->add_option("-t,--time", o->time_s, "Seconds of rendering per scene")->check(checked_real("time", 1e-3, 1e6))->capture_default_str();
   g->add_option("-i,--integrator", o->integrator, "Integrator of the renders")->capture_default_str();
   g->add_option("--seed", o->seed, "Random seed")->check(checked_unsigned("seed", UINT64_MAX))->capture_default_str();
-  g->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(checked_integer("threads", 0, 4096))->capture_default_str();
+  g->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(threads_check())->capture_default_str();
   g->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
               "Render scenes with missing images, replaced by neutral stand-ins (a warning each)");
   g->add_flag("--no-exr", o->no_exr, "Write PNG only");

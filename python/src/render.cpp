@@ -18,6 +18,7 @@
 #include "pathspace/options/option_parse.h"
 #include "pathspace/session/option_catalog.h"
 #include "pathspace/session/render_config.h"
+#include "pathspace/session/run_options.h"
 #include "pathspace/session/render_session.h"
 #include "pathspace/session/render_stats_json.h"
 
@@ -117,9 +118,9 @@ struct RenderRequest {
 RenderRequest request_of(PyScene& scene, const std::string& integrator, const std::string& filter, const py::dict& options,
                          std::optional<uint32_t> spp, std::optional<double> time, uint64_t seed, int threads, const std::string& device) {
   if (spp && time) throw py::value_error("render: give spp or time, not both");
-  if (spp && (*spp < 1 || *spp > (1u << 24))) throw py::value_error("--spp " + std::to_string(*spp) + ": must be 1 to 16777216");
-  if (time && !(*time >= 1e-3 && *time <= 1e7)) throw py::value_error("--time: must be 0.001 to 1e7 seconds");
-  if (threads < 0 || threads > 4096) throw py::value_error("--threads " + std::to_string(threads) + ": must be 0 to 4096");
+  // Ranges and the default spp of session/run_options.h, as on the command line (OptionError: ValueError).
+  const RunLimit limit = run_limit(spp ? std::optional<double>(*spp) : std::nullopt, time, scene.file_spp());
+  check_threads(threads);
   const OptionValues given = option_values(integrator, filter, options);
   RenderRequest r;
   r.config = configure_render(integrator, filter, given);
@@ -127,8 +128,7 @@ RenderRequest request_of(PyScene& scene, const std::string& integrator, const st
   r.config.threads = threads;
   r.config.device = device;
   check_device(device, integrator, filter);
-  const uint32_t passes = spp ? *spp : (scene.file_spp() > 0 ? uint32_t(scene.file_spp()) : 16u);
-  r.limit = time ? RunLimit::for_seconds(*time) : RunLimit::for_passes(passes);
+  r.limit = limit;
   const std::shared_ptr<const Scene> s = scene.scene();
   r.run = RenderRunInfo{scene.label(), s->camera.width, s->camera.height, max_segments_of(given, *s), ""};
   return r;
