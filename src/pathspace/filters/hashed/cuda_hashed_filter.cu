@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pathspace/filters/hashed/hashed_filter_limits.h"
+#include "pathspace/filters/hashed/hashed_pass.h"
 #include "pathspace/filters/hashed/overflow_settling.h"
 #include "pathspace/filters/hashed/cuda_filter_kernels.h"
 
@@ -185,25 +186,6 @@ __global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table,
 
 
 
-// Events of one pass, released with it.
-struct PassEvents {
-  cudaEvent_t e[7] = {};
-  PassEvents() {
-    for (cudaEvent_t& x : e) PS_CUDA_CHECK(cudaEventCreate(&x));
-  }
-  ~PassEvents() {
-    for (cudaEvent_t x : e)
-      if (x) cudaEventDestroy(x);
-  }
-  PassEvents(const PassEvents&) = delete;
-  PassEvents& operator=(const PassEvents&) = delete;
-  static double ms(cudaEvent_t a, cudaEvent_t b) {
-    float t = 0.f;
-    PS_CUDA_CHECK(cudaEventElapsedTime(&t, a, b));
-    return double(t);
-  }
-};
-
 }  // namespace
 
 CudaHashedFilter::CudaHashedFilter(const HashedFilterSettings& settings, const PerspectiveCamera& camera, size_t pixels)
@@ -278,6 +260,99 @@ std::vector<unsigned long long> CudaHashedFilter::read_counters(cudaStream_t str
   return sums;
 }
 
+// CudaHashedFilter's steps of the pass (hashed_pass.h): kernels on one stream over device memory,
+// timed by events; the counters are read back when the settling needs them and at the end.
+class CudaHashedFilter::PassSteps final : public HashedPassSteps {
+ public:
+  PassSteps(CudaHashedFilter& f, const VertexBufferView& b, Rgb* filtered, cudaStream_t stream)
+      : f_(f), b_(b), filtered_(filtered), stream_(stream), table_(f.table()), coarse_(f.coarse_table()) {
+    for (cudaEvent_t& e : events_) PS_CUDA_CHECK(cudaEventCreate(&e));
+  }
+  ~PassSteps() override {
+    for (cudaEvent_t e : events_)
+      if (e) cudaEventDestroy(e);
+  }
+  PassSteps(const PassSteps&) = delete;
+  PassSteps& operator=(const PassSteps&) = delete;
+
+  void mark(PassMark at) override { PS_CUDA_CHECK(cudaEventRecord(events_[int(at)], stream_)); }
+  // One memset per array; with --temporal the keys stay, so that they find their history.
+  void clear() override {
+    if (!f_.settings_.temporal.enabled()) PS_CUDA_CHECK(cudaMemsetAsync(f_.fingerprints_.data(), 0, f_.fingerprints_.bytes(), stream_));
+    PS_CUDA_CHECK(cudaMemsetAsync(f_.cells_buffer_.data(), 0, f_.cells_buffer_.bytes(), stream_));
+    if (f_.settings_.multi_level) {
+      PS_CUDA_CHECK(cudaMemsetAsync(f_.coarse_fingerprints_.data(), 0, f_.coarse_fingerprints_.bytes(), stream_));
+      PS_CUDA_CHECK(cudaMemsetAsync(f_.coarse_cells_.data(), 0, f_.coarse_cells_.bytes(), stream_));
+    }
+    PS_CUDA_CHECK(cudaMemsetAsync(f_.counters_.data(), 0, f_.counters_.bytes(), stream_));
+  }
+  void accumulate(uint64_t pass_hash) override {
+    if (b_.slots() == 0) return;
+    accumulate_kernel<<<blocks_for(b_.slots()), kBlock, 0, stream_>>>(f_.steps_, b_, pass_hash, table_, coarse_, f_.slots_.data(),
+                                                                      coarse_slots(), f_.counters_.data());
+    PS_CUDA_CHECK_LAUNCH("accumulate_kernel");
+  }
+  uint64_t probe_failures() override { return f_.read_counters(stream_)[kFailures]; }
+  bool settle_overflows(uint64_t pass_hash, uint64_t failures) override {
+    return f_.settle_overflows(b_, pass_hash, failures, stream_);
+  }
+  void list_step_cells() override {}  // the kernels below visit the whole table
+  void transfer_levels(uint64_t pass_hash, uint32_t step) override {
+    if (b_.slots() > 0) f_.transfer_levels(b_, pass_hash, step, stream_);
+  }
+  void exchange_probes(uint64_t, uint32_t) override {
+    throw Error("the GPU hashed filter has no --temporal hybrid (check_hashed_filter_settings refuses it)");
+  }
+  void lookup(uint64_t pass_hash) override {
+    if (b_.slots() == 0) return;
+    const bool temporal = f_.settings_.temporal.enabled();
+    lookup_kernel<<<blocks_for(b_.slots()), kBlock, 0, stream_>>>(f_.steps_, b_, pass_hash, table_, coarse_, f_.slots_.data(),
+                                                                  coarse_slots(), f_.settings_.temporal,
+                                                                  temporal ? f_.history_.data() : nullptr, filtered_,
+                                                                  f_.counters_.data());
+    PS_CUDA_CHECK_LAUNCH("lookup_kernel");
+  }
+  void end_step(uint32_t step) override { f_.end_step(step, stream_); }
+  HashedPassCounts finish() override {
+    occupancy_kernel<<<blocks_for(f_.cells_), kBlock, 0, stream_>>>(f_.fingerprints_.data(), f_.cells_, f_.counters_.data());
+    PS_CUDA_CHECK_LAUNCH("occupancy_kernel");
+    const std::vector<unsigned long long> c = f_.read_counters(stream_);
+    HashedPassCounts n;
+    n.vertices = c[kVertices];
+    n.not_accumulated = c[kNotAccumulated];
+    n.insertions = c[kInsertions];
+    n.probes = c[kProbes];
+    n.probes_max = c[kProbesMax];
+    n.failures = c[kFailures] + c[kLost] - c[kWon];
+    n.low_count = c[kLowCount];
+    n.neighbour_lookups = c[kNeighbourLookups];
+    n.multi_level_used = c[kMultiLevelUsed];
+    n.occupied_cells = c[kOccupied];
+    n.blended = c[kBlended];
+    n.alpha_fixed = c[kAlphaSum];
+    n.from_finer = c[kFromFiner];
+    n.from_coarser = c[kFromCoarser];
+    n.folded = c[kFolded];
+    n.evicted = c[kEvicted];
+    return n;
+  }
+  double milliseconds(PassMark from, PassMark to) const override {
+    float t = 0.f;
+    PS_CUDA_CHECK(cudaEventElapsedTime(&t, events_[int(from)], events_[int(to)]));
+    return double(t);
+  }
+
+ private:
+  int32_t* coarse_slots() const { return f_.settings_.multi_level ? f_.coarse_slots_.data() : nullptr; }
+
+  CudaHashedFilter& f_;
+  const VertexBufferView b_;
+  Rgb* filtered_;
+  cudaStream_t stream_;
+  const VoxelHashTableView table_, coarse_;
+  cudaEvent_t events_[int(PassMark::count)] = {};
+};
+
 void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t pass, Rgb* device_filtered,
                               cudaStream_t stream) {
   if (b.records_per_path < 1 && b.paths > 0) throw Error("CudaHashedFilter::filter: a vertex buffer without record slots");
@@ -285,88 +360,8 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   if (slots > size_t(INT32_MAX)) throw Error("CudaHashedFilter::filter: more than 2^31 record slots in one batch");
   if (slots_.size() < slots) slots_.resize(slots);
   if (settings_.multi_level && coarse_slots_.size() < slots) coarse_slots_.resize(slots);
-  const uint64_t pass_hash = pass_jitter_hash(seed, pass);
-  const VoxelHashTableView table = this->table(), coarse = coarse_table();
-  unsigned long long* counters = counters_.data();
-  PassEvents ev;
-
-  const bool temporal = settings_.temporal.enabled();
-  // Clear (one memset per array: the table is rebuilt every pass; with --temporal the keys stay, so
-  // that they find their history).
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[0], stream));
-  if (!temporal) PS_CUDA_CHECK(cudaMemsetAsync(fingerprints_.data(), 0, fingerprints_.bytes(), stream));
-  PS_CUDA_CHECK(cudaMemsetAsync(cells_buffer_.data(), 0, cells_buffer_.bytes(), stream));
-  if (settings_.multi_level) {
-    PS_CUDA_CHECK(cudaMemsetAsync(coarse_fingerprints_.data(), 0, coarse_fingerprints_.bytes(), stream));
-    PS_CUDA_CHECK(cudaMemsetAsync(coarse_cells_.data(), 0, coarse_cells_.bytes(), stream));
-  }
-  PS_CUDA_CHECK(cudaMemsetAsync(counters, 0, counters_.bytes(), stream));
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[1], stream));
-
-  // Keys and accumulation.
-  if (slots > 0) {
-    accumulate_kernel<<<blocks_for(slots), kBlock, 0, stream>>>(steps_, b, pass_hash, table, coarse, slots_.data(),
-                                                                settings_.multi_level ? coarse_slots_.data() : nullptr, counters);
-    PS_CUDA_CHECK_LAUNCH("accumulate_kernel");
-  }
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[2], stream));
-  const unsigned long long failures = read_counters(stream)[kFailures];
-  // As HashedFilter: fallbacks that do not depend on timing when a window is one cache line.
-  const bool settle = failures > 0 && settings_.max_probes <= kFingerprintsPerLine;
-  if (settle) settle_overflows(b, pass_hash, stream);
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[3], stream));
-  if (temporal && settings_.temporal.level_transfer && slots > 0) transfer_levels(b, pass_hash, stream);
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[4], stream));
-
-  // Lookup.
-  if (slots > 0) {
-    lookup_kernel<<<blocks_for(slots), kBlock, 0, stream>>>(steps_, b, pass_hash, table, coarse, slots_.data(),
-                                                            settings_.multi_level ? coarse_slots_.data() : nullptr,
-                                                            settings_.temporal, temporal ? history_.data() : nullptr,
-                                                            device_filtered, counters);
-    PS_CUDA_CHECK_LAUNCH("lookup_kernel");
-  }
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[5], stream));
-  if (temporal) end_step(stream);
-  PS_CUDA_CHECK(cudaEventRecord(ev.e[6], stream));
-  occupancy_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(fingerprints_.data(), cells_, counters);
-  PS_CUDA_CHECK_LAUNCH("occupancy_kernel");
-  const std::vector<unsigned long long> c = read_counters(stream);
-
-  stats_.passes += 1;
-  stats_.vertices += c[kVertices];
-  stats_.not_accumulated += c[kNotAccumulated];
-  stats_.insertions += c[kInsertions];
-  stats_.probes_total += c[kProbes];
-  stats_.probes_max = std::max<uint64_t>(stats_.probes_max, c[kProbesMax]);
-  stats_.probe_failures_last = c[kFailures] + c[kLost] - c[kWon];
-  stats_.probe_failures += stats_.probe_failures_last;
-  stats_.low_count += c[kLowCount];
-  stats_.neighbour_lookups += c[kNeighbourLookups];
-  stats_.multi_level_used += c[kMultiLevelUsed];
-  stats_.occupied_cells_last = c[kOccupied];
-  stats_.clear_ms_last = PassEvents::ms(ev.e[0], ev.e[1]);
-  // Without settling, the accumulation ends at its kernel (e[2]); e[3] then follows a host wait.
-  stats_.settle_ms_last = settle ? PassEvents::ms(ev.e[2], ev.e[3]) : 0.0;
-  stats_.accumulate_ms_last = PassEvents::ms(ev.e[1], ev.e[2]) + stats_.settle_ms_last;
-  stats_.lookup_ms_last = PassEvents::ms(ev.e[4], ev.e[5]);
-  stats_.clear_ms += stats_.clear_ms_last;
-  stats_.accumulate_ms += stats_.accumulate_ms_last;
-  stats_.settle_ms += stats_.settle_ms_last;
-  stats_.lookup_ms += stats_.lookup_ms_last;
-  if (!temporal) return;
-  stats_.steps += 1;
-  stats_.blended += c[kBlended];
-  const double alpha = double(c[kAlphaSum]) / 4294967296.0;
-  stats_.alpha_sum += alpha;
-  stats_.mean_alpha_last = c[kBlended] ? alpha / double(c[kBlended]) : 0.0;
-  stats_.from_finer += c[kFromFiner];
-  stats_.from_coarser += c[kFromCoarser];
-  stats_.folded_last = c[kFolded];
-  stats_.evicted += c[kEvicted];
-  stats_.evicted_last = c[kEvicted];
-  stats_.temporal_ms_last = PassEvents::ms(ev.e[3], ev.e[4]) + PassEvents::ms(ev.e[5], ev.e[6]);
-  stats_.temporal_ms += stats_.temporal_ms_last;
+  PassSteps steps(*this, b, device_filtered, stream);
+  run_hashed_pass(steps, settings_, seed, pass, &stats_);
 }
 
 void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
@@ -381,10 +376,9 @@ void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_
 // hashed_filter_overflow.cpp on the GPU's table: the failed vertices are listed on the device, the
 // decision is the CPU's own code (overflow_settling.cpp) on the downloaded fingerprints, and its
 // result is applied by kernels. Rare (a table too small for the pass), so plain copies are fine.
-void CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream) {
+bool CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass_hash, uint64_t failures, cudaStream_t stream) {
   const VoxelHashTableView table = this->table();
   unsigned long long* counters = counters_.data();
-  const unsigned long long failures = read_counters(stream)[kFailures];
   DeviceBuffer<FailedVertex> failed_device{size_t(failures)};
   list_failed_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(steps_, b, pass_hash, table, slots_.data(),
                                                                     failed_device.data(), failures, counters);
@@ -401,7 +395,7 @@ void CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass
   const OverflowDecision d = decide_overflows(
       std::move(failed_keys), table.key_mask, [&](uint64_t c) { return fingerprints[c]; },
       [&](uint64_t c) { return history.empty() || !(history[c].weight > 0.f); });
-  if (d.assigned.empty()) return;  // as the CPU: nothing changes hands, the pass is not counted as settled
+  if (d.assigned.empty()) return false;  // as the CPU: nothing changes hands, the pass is not counted as settled
 
   std::vector<unsigned long long> assigned_cells;
   std::vector<uint32_t> assigned_keys;
@@ -425,7 +419,7 @@ void CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass
   PS_CUDA_CHECK_LAUNCH("add_winners_kernel");
   // The device buffers above are freed on return: wait for the kernels that read them.
   PS_CUDA_CHECK(cudaStreamSynchronize(stream));
-  ++stats_.settled_passes;
+  return true;
 }
 
 }  // namespace pathspace::gpu

@@ -1,6 +1,7 @@
 // CudaHashedFilter: hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1-3.4 and 4)
 // on an NVIDIA GPU, over a vertex buffer in device memory (DeviceVertexBuffer::view(), or a CUDA
-// path tracer's). Per pass: clear the table, keys + accumulation with warp aggregation, settling of
+// path tracer's). The pass is run_hashed_pass (hashed_pass.h), shared with the CPU filter; its steps
+// here are kernels: clear the table, keys + accumulation with warp aggregation, settling of
 // overflowing probe windows when any overflowed, lookup. With --temporal integrate or ema (sec. 3.4)
 // the keys stay from pass to pass and frame to frame: new cells take their finer or coarser voxels'
 // history (3.4.2), lookups blend with the history (3.4.1), and after each pass every probe window
@@ -69,10 +70,12 @@ class CudaHashedFilter final : public PathSpaceFilter {
   const HashedStepSettings& step_settings() const { return steps_; }
 
  private:
-  void settle_overflows(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream);
+  class PassSteps;  // the steps of run_hashed_pass, over this object (cuda_hashed_filter.cu)
+  // True when cells changed hands.
+  bool settle_overflows(const VertexBufferView& b, uint64_t pass_hash, uint64_t failures, cudaStream_t stream);
   // Sec. 3.4.2 and 3.4.3 on the device (--temporal).
-  void transfer_levels(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream);
-  void end_step(cudaStream_t stream);
+  void transfer_levels(const VertexBufferView& b, uint64_t pass_hash, uint32_t step, cudaStream_t stream);
+  void end_step(uint32_t step, cudaStream_t stream);
   VoxelHashTableView coarse_table() const;
   std::vector<unsigned long long> read_counters(cudaStream_t stream) const;
 

@@ -75,9 +75,9 @@ __global__ void end_step_kernel(TemporalSettings temporal, uint32_t keep, VoxelH
 
 // Sec. 3.4.2: new cells take the history of their finer or coarser voxels (two kernels: every claim
 // reads the histories as they were before any transfer is written).
-void CudaHashedFilter::transfer_levels(const VertexBufferView& b, uint64_t pass_hash, cudaStream_t stream) {
+void CudaHashedFilter::transfer_levels(const VertexBufferView& b, uint64_t pass_hash, uint32_t step, cudaStream_t stream) {
   transfer_claim_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(steps_, settings_.temporal, b, pass_hash, table(), slots_.data(),
-                                                                       history_.data(), uint32_t(stats_.steps),
+                                                                       history_.data(), step,
                                                                        transfer_claimed_.data(), transferred_.data(), counters_.data());
   PS_CUDA_CHECK_LAUNCH("transfer_claim_kernel");
   transfer_apply_kernel<<<blocks_for(cells_), kBlock, 0, stream>>>(cells_, transfer_claimed_.data(), transferred_.data(), history_.data());
@@ -85,10 +85,10 @@ void CudaHashedFilter::transfer_levels(const VertexBufferView& b, uint64_t pass_
 }
 
 // Sec. 3.4.3: folding, priorities and eviction, one probe window per thread; the step counts from 1.
-void CudaHashedFilter::end_step(cudaStream_t stream) {
+void CudaHashedFilter::end_step(uint32_t step, cudaStream_t stream) {
   const uint64_t windows = cells_ / kFingerprintsPerLine;
   end_step_kernel<<<blocks_for(windows), kBlock, 0, stream>>>(settings_.temporal, temporal_window_keep(settings_.temporal), table(),
-                                                              history_.data(), windows, uint32_t(stats_.steps + 1), counters_.data());
+                                                              history_.data(), windows, step, counters_.data());
   PS_CUDA_CHECK_LAUNCH("end_step_kernel");
 }
 

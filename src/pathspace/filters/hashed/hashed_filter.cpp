@@ -24,10 +24,6 @@ namespace {
 
 constexpr int32_t kNotAccumulated = kSlotNotAccumulated;  // contribution not representable (NaN, negative, huge)
 
-double milliseconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Counters gathered per parallel_for chunk and summed once per chunk.
 struct AccumulateCounters {
   std::atomic<uint64_t> vertices{0}, insertions{0}, failures{0}, not_accumulated{0}, probes{0}, probes_max{0};
@@ -146,7 +142,7 @@ void HashedFilter::gather_step_cells(const VertexBuffer& b) {
   step_cells_clear_listed_ = !settings_.step_cells_from_all_vertices && step_cells_.size() <= size_t(table_.cells()) / 16;
 }
 
-void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
+void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash, uint32_t step) {
   transfers_.resize(step_cells_.size());
   // Phase 1: each new cell (no history) computes its transfer from the histories as they were, from
   // any of its records (every vertex of a cell has the same key).
@@ -155,7 +151,7 @@ void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
       transfers_[k].kind = LevelTransfer::none;
       if (history_->at(step_cells_[k]).weight > 0.f) continue;
       transfers_[k].kind = level_transfer(settings_.temporal, table_.view(), history_->cells().data(), settings_.key.normal,
-                                          key_for_pass(b, step_cell_records_[k], pass_hash), uint32_t(stats_.steps),
+                                          key_for_pass(b, step_cell_records_[k], pass_hash), step,
                                           &transfers_[k].history);
     }
   });
@@ -163,7 +159,7 @@ void HashedFilter::transfer_levels(const VertexBuffer& b, uint64_t pass_hash) {
   for (size_t k = 0; k < step_cells_.size(); ++k) {
     if (transfers_[k].kind == LevelTransfer::none) continue;
     history_->transfer(step_cells_[k], transfers_[k].history);
-    ++(transfers_[k].kind == LevelTransfer::from_finer ? stats_.from_finer : stats_.from_coarser);
+    ++(transfers_[k].kind == LevelTransfer::from_finer ? pass_counts_.from_finer : pass_counts_.from_coarser);
   }
 }
 
@@ -192,6 +188,46 @@ VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pa
   return pathspace::key_for_pass(settings_.key, b.view(), i, pass_hash);
 }
 
+// HashedFilter's steps of the pass (hashed_pass.h): TBB over host memory.
+class HashedFilter::PassSteps final : public HashedPassSteps {
+ public:
+  PassSteps(HashedFilter& f, const VertexBuffer& b, std::vector<Rgb>* filtered) : f_(f), b_(b), filtered_(filtered) {}
+  void mark(PassMark at) override { times_[int(at)] = std::chrono::steady_clock::now(); }
+  void clear() override { f_.clear_table(); }
+  void accumulate(uint64_t pass_hash) override { f_.accumulate(b_, pass_hash); }
+  uint64_t probe_failures() override { return f_.pass_counts_.failures; }
+  bool settle_overflows(uint64_t pass_hash, uint64_t) override { return f_.settle_overflows(b_, pass_hash); }
+  void list_step_cells() override { f_.gather_step_cells(b_); }
+  void transfer_levels(uint64_t pass_hash, uint32_t step) override { f_.transfer_levels(b_, pass_hash, step); }
+  void exchange_probes(uint64_t seed, uint32_t pass) override { f_.exchange_probes(b_, seed, pass); }
+  void lookup(uint64_t) override {
+    if (f_.settings_.adaptive) f_.map_cells(b_);
+    f_.lookup(b_, filtered_);
+    if (f_.settings_.adaptive) f_.choose_levels();
+    if (f_.settings_.debug_images) f_.record_first_slots(b_);
+  }
+  void end_step(uint32_t step) override {
+    const TemporalStepStats s = f_.history_->end_step(f_.table_.view(), step);
+    f_.pass_counts_.folded = s.folded;
+    f_.pass_counts_.evicted = s.evicted;
+  }
+  HashedPassCounts finish() override {
+    const VoxelTableOccupancy occ = f_.table_.occupancy();
+    f_.pass_counts_.occupied_cells = occ.occupied;
+    f_.pass_counts_.expected_fingerprint_collisions = occ.expected_fingerprint_collisions;
+    return f_.pass_counts_;
+  }
+  double milliseconds(PassMark from, PassMark to) const override {
+    return std::chrono::duration<double, std::milli>(times_[int(to)] - times_[int(from)]).count();
+  }
+
+ private:
+  HashedFilter& f_;
+  const VertexBuffer& b_;
+  std::vector<Rgb>* filtered_;
+  std::chrono::steady_clock::time_point times_[int(PassMark::count)];
+};
+
 void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
   const size_t slots = buffer.paths() * size_t(buffer.records_per_path());
   // Per-slot keys, probe counts and voxel counts are kept only when something reads them after
@@ -203,8 +239,14 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   slots_.resize(slots);
   coarse_slots_.resize(coarse_table_ ? slots : 0);
   filtered->resize(slots);
+  pass_hash_ = pass_jitter_hash(seed, pass);
+  query_round_ = 0;
+  pass_counts_ = HashedPassCounts{};
+  PassSteps steps(*this, buffer, filtered);
+  run_hashed_pass(steps, settings_, seed, pass, &stats_);
+}
 
-  auto t0 = std::chrono::steady_clock::now();
+void HashedFilter::clear_table() {
   // The keys stay in a table kept across frames: they find their history (sec. 3.4).
   if (step_cells_clear_listed_) {  // the last step's cells
     table_.clear_listed(step_cells_, /*keys=*/!history_);
@@ -215,77 +257,30 @@ void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pa
   }
   if (coarse_table_) coarse_table_->clear();
   std::fill(coarse_squares_.begin(), coarse_squares_.end(), uint64_t(0));
-  stats_.clear_ms_last = milliseconds_since(t0);
-  const uint64_t failures_before = stats_.probe_failures;
+}
 
-  pass_hash_ = pass_jitter_hash(seed, pass);
-  query_round_ = 0;
-  t0 = std::chrono::steady_clock::now();
-  accumulate(buffer, seed, pass);
-  // Fallbacks that do not depend on timing (one cache line per window: the default probe limit).
-  stats_.settle_ms_last = 0.0;
-  if (stats_.probe_failures > failures_before && settings_.max_probes <= kFingerprintsPerLine) {
-    const auto settle_start = std::chrono::steady_clock::now();
-    settle_overflows(buffer, pass_jitter_hash(seed, pass));
-    stats_.settle_ms_last = milliseconds_since(settle_start);
+void HashedFilter::exchange_probes(const VertexBuffer& buffer, uint64_t seed, uint32_t pass) {
+  if (pending_probes_ && has_probe_request_) {
+    apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
+    if (settings_.temporal.rectify) history_->rectify();
   }
-  gather_step_cells(buffer);
-  stats_.accumulate_ms_last = milliseconds_since(t0);
+  pending_probes_ = nullptr;
+  has_probe_request_ = false;
+  record_probe_originals(buffer, seed, pass);
+}
 
-  stats_.temporal_ms_last = 0.0;
-  if (history_ && settings_.temporal.level_transfer) {
-    // Timed with the folding (end_step) as temporal bookkeeping, as the GPU filter times it.
-    t0 = std::chrono::steady_clock::now();
-    transfer_levels(buffer, pass_jitter_hash(seed, pass));
-    stats_.temporal_ms_last = milliseconds_since(t0);
-  }
-  if (history_ && settings_.temporal.mode == TemporalMode::hybrid && pass == 0) {
-    if (pending_probes_ && has_probe_request_) {
-      apply_probes(*pending_probes_, pass_jitter_hash(seed, pass));
-      if (settings_.temporal.rectify) history_->rectify();
-    }
-    pending_probes_ = nullptr;
-    has_probe_request_ = false;
-    record_probe_originals(buffer, seed, pass);
-  }
-
-  t0 = std::chrono::steady_clock::now();
-  if (settings_.adaptive) map_cells(buffer);
-  lookup(buffer, filtered);
-  if (settings_.adaptive) choose_levels();
-  stats_.lookup_ms_last = milliseconds_since(t0);
-  stats_.probe_failures_last = stats_.probe_failures - failures_before;
-  if (history_) {
-    const TemporalStepStats step = history_->end_step(table_.view(), uint32_t(++stats_.steps));
-    stats_.evicted += step.evicted;
-    stats_.evicted_last = step.evicted;
-    stats_.folded_last = step.folded;
-    stats_.temporal_ms_last += step.fold_ms;
-    stats_.temporal_ms += stats_.temporal_ms_last;
-  }
-  stats_.clear_ms += stats_.clear_ms_last;
-  stats_.accumulate_ms += stats_.accumulate_ms_last;
-  stats_.settle_ms += stats_.settle_ms_last;
-  stats_.lookup_ms += stats_.lookup_ms_last;
-
-  const VoxelTableOccupancy occ = table_.occupancy();
-  stats_.occupied_cells_last = occ.occupied;
-  stats_.expected_fingerprint_collisions_last = occ.expected_fingerprint_collisions;
-  ++stats_.passes;
-
-  if (!settings_.debug_images) return;
+void HashedFilter::record_first_slots(const VertexBuffer& buffer) {
   first_slot_of_pixel_.assign(size_t(width_) * size_t(height_), UINT32_MAX);
   for (size_t path = 0; path < buffer.paths(); ++path)
     if (buffer.count[path] > 0 && buffer.pixel[path] < first_slot_of_pixel_.size())
       first_slot_of_pixel_[buffer.pixel[path]] = uint32_t(buffer.slot(path, 0));
 }
 
-void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pass) {
+void HashedFilter::accumulate(const VertexBuffer& b, uint64_t pass_hash) {
   const VoxelHashTableView view = table_.view();
   const VoxelHashTableView coarse = coarse_table_ ? coarse_table_->view() : VoxelHashTableView{};
   AccumulateCounters counters;
   const bool combine = settings_.local_combining;
-  const uint64_t pass_hash = pass_jitter_hash(seed, pass);
   const VoxelKeyIsa isa = widest_voxel_key_isa();
   const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
   const bool adaptive = settings_.adaptive;
@@ -300,7 +295,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     std::vector<size_t>& table_records = table_records_.local();  // a vertex of each cell of the step
     // Vertices that miss the local cache are queued in a batch whose home cells are prefetched, so
     // that their cache misses overlap instead of being paid one after another (sec. 4: filtering
-    // is memory bound; docs/benchmarks.md, "The machine").
+    // is memory bound; docs/results/cpu-throughput.md, "Machine facts").
     constexpr int kBatch = 16;
     size_t batch[kBatch];
     VoxelHash hashes[kBatch];
@@ -395,12 +390,12 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t seed, uint32_t pas
     counters.add(vertices, insertions, failures, not_accumulated, probes, probes_max);
   });
   tbb::parallel_for_each(caches_.begin(), caches_.end(), [&](LocalVoxelCache& c) { c.flush_all(view); });
-  stats_.vertices += counters.vertices;
-  stats_.insertions += counters.insertions;
-  stats_.probe_failures += counters.failures;
-  stats_.not_accumulated += counters.not_accumulated;
-  stats_.probes_total += counters.probes;
-  stats_.probes_max = std::max(stats_.probes_max, counters.probes_max.load());
+  pass_counts_.vertices = counters.vertices;
+  pass_counts_.insertions = counters.insertions;
+  pass_counts_.failures = counters.failures;
+  pass_counts_.not_accumulated = counters.not_accumulated;
+  pass_counts_.probes = counters.probes;
+  pass_counts_.probes_max = counters.probes_max.load();
 }
 
 // Sec. 3.1.3, before the lookup: each fine cell's voxel, coarse cell and level for this pass. Two
@@ -532,15 +527,11 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
     blended_total += blended;
     alpha_total += alpha_sum;
   });
-  if (history) {
-    const double alpha = double(alpha_total.load()) / 4294967296.0;
-    stats_.blended += blended_total;
-    stats_.alpha_sum += alpha;
-    stats_.mean_alpha_last = blended_total ? alpha / double(blended_total.load()) : 0.0;
-  }
-  stats_.low_count += low_total;
-  stats_.neighbour_lookups += neighbour_total;
-  stats_.multi_level_used += multi_total;
+  pass_counts_.blended = blended_total;
+  pass_counts_.alpha_fixed = alpha_total;
+  pass_counts_.low_count = low_total;
+  pass_counts_.neighbour_lookups = neighbour_total;
+  pass_counts_.multi_level_used = multi_total;
 }
 
 Image HashedFilter::aov(FilterAov which) const {

@@ -1,8 +1,10 @@
-// Hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1-3.3): per pass, every selected
-// vertex is quantised to a jittered voxel key (algorithm 1), accumulated into a hash table by atomic
-// adds (sec. 3.2), and then looks up its voxel's average; low-count voxels optionally use a
+// Hashed path space filtering (Binder, Fricke, Keller 2021, sec. 3.1-3.3) on the CPU: per pass, every
+// selected vertex is quantised to a jittered voxel key (algorithm 1), accumulated into a hash table by
+// atomic adds (sec. 3.2), and then looks up its voxel's average; low-count voxels optionally use a
 // neighbourhood search (3.3.1) or a coarser level (3.3.2); vertices that cannot be inserted keep their
-// unfiltered contribution. Statistics and debug images (AOVs) show what the table did.
+// unfiltered contribution. Statistics and debug images (AOVs) show what the table did. The pass's
+// sequence is run_hashed_pass (hashed_pass.h), shared with the GPU filter; this class holds the
+// steps' TBB implementations.
 #pragma once
 
 #include <tbb/enumerable_thread_specific.h>
@@ -15,6 +17,7 @@
 #include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/filters/hashed/hashed_filter_stats.h"
 #include "pathspace/filters/hashed/hashed_filter_steps.h"
+#include "pathspace/filters/hashed/hashed_pass.h"
 #include "pathspace/filters/hashed/local_voxel_cache.h"
 #include "pathspace/filters/path_space_filter.h"
 #include "pathspace/filters/hashed/temporal_history.h"
@@ -70,9 +73,11 @@ class HashedFilter final : public PathSpaceFilter {
 
  private:
   static constexpr size_t kGrain = 2048;  // paths per parallel_for chunk of the per-vertex steps
+  class PassSteps;  // the steps of run_hashed_pass, over this object (hashed_filter.cpp)
   VoxelKey key_for_pass(const VertexBuffer& buffer, size_t slot, uint64_t pass_hash) const;
   bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
-  void accumulate(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
+  void clear_table();
+  void accumulate(const VertexBuffer& buffer, uint64_t pass_hash);
   void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
   // A vertex's estimate in fine cell `slot` from the cell's `average` (this pass's, or blended with
   // its history): the coarse cell where sec. 3.1.3 chose it, else the low-count steps of sec. 3.3.
@@ -81,16 +86,20 @@ class HashedFilter final : public PathSpaceFilter {
                      LookupCounters* counters) const;
   // Hybrid (sec. 3.4.1): the re-traced paths' changes into their cells, and this frame's values of
   // the paths the next frame re-traces.
+  void exchange_probes(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
   void apply_probes(const VertexBuffer& probes, uint64_t pass_hash);
   void record_probe_originals(const VertexBuffer& buffer, uint64_t seed, uint32_t pass);
+  // The debug images' record of each pixel (its first path's first record).
+  void record_first_slots(const VertexBuffer& buffer);
   // After accumulation, when probe windows overflowed: which keys get the window's new cells is
-  // decided by their fingerprints, not by thread timing (hashed_filter_overflow.cpp).
-  void settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
+  // decided by their fingerprints, not by thread timing (hashed_filter_overflow.cpp). True when cells
+  // changed hands.
+  bool settle_overflows(const VertexBuffer& buffer, uint64_t pass_hash);
   // The cells of the step, once each, from table_records_ (or from every record,
   // step_cells_from_all_vertices) into step_cells_.
   void gather_step_cells(const VertexBuffer& buffer);
   // Sec. 3.4.2: new cells take the history of the same point at the next finer or coarser level.
-  void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash);
+  void transfer_levels(const VertexBuffer& buffer, uint64_t pass_hash, uint32_t step);
   // Sec. 3.4.1: the blend of every cell of step_cells_ into cell_blends_, before the lookup.
   void blend_cells();
 
@@ -123,6 +132,7 @@ class HashedFilter final : public PathSpaceFilter {
   std::vector<uint32_t> counts_;
   std::vector<uint32_t> first_slot_of_pixel_;
   HashedFilterStats stats_;
+  HashedPassCounts pass_counts_;  // the current pass's, filled by its steps
   uint64_t pass_hash_ = 0;      // the last filtered pass's jitter hash, which its queries mix with
   uint32_t query_round_ = 0;    // query paths of that pass so far (each round has its own jitter)
   // Frames and temporal finite differences (--temporal hybrid).

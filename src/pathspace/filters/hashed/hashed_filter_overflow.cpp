@@ -21,7 +21,7 @@ constexpr uint64_t kWindow = kFingerprintsPerLine;
 }  // namespace
 // The decision itself is filters/hashed/overflow_settling.cpp, shared with the GPU filter.
 
-void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
+bool HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
   const VoxelHashTableView view = table_.view();
   // Per window: the stored fingerprints of the keys that failed, and of each one's vertices.
   std::map<uint64_t, std::vector<uint32_t>> failed_keys;  // window -> keys (sorted, unique below)
@@ -35,14 +35,14 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
       failed_keys[(h.index & view.mask) / kWindow].push_back(key);
       failed.push_back({i, key});
     }
-  if (failed.empty()) return;
+  if (failed.empty()) return false;
   // A cell is new this pass when the table is cleared every pass, or when it has no history yet.
   const auto is_new = [&](uint64_t c) { return !history_ || !(history_->at(c).weight > 0.f); };
   const OverflowDecision d = decide_overflows(std::move(failed_keys), view.key_mask,
                                               [&](uint64_t c) { return view.fingerprints[c]; }, is_new);
   const auto& assigned = d.assigned;
   const auto& cell_of_key = d.cell_of_key;
-  if (assigned.empty()) return;
+  if (assigned.empty()) return false;
   for (const auto& [cell, key] : assigned) {
     view.fingerprints[cell] = key;
     view.cells[cell] = VoxelCell{};
@@ -72,8 +72,8 @@ void HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
     table_records_.local().push_back(i);  // a vertex of one of the step's cells
     ++won;
   }
-  stats_.probe_failures = stats_.probe_failures + lost.load() - won;
-  ++stats_.settled_passes;
+  pass_counts_.failures = pass_counts_.failures + lost.load() - won;
+  return true;
 }
 
 }  // namespace pathspace
