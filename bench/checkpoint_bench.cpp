@@ -1,4 +1,4 @@
-// What a checkpoint costs at 1920x1080 (docs/benchmarks.md, "Checkpoints"): save_state() (the copy
+// What a checkpoint costs at 1920x1080 (docs/results/io-and-overheads.md, "Checkpoints and periodic outputs"): save_state() (the copy
 // taken on the render thread between passes: the only part a periodic checkpoint stalls the render
 // for), encode_checkpoint() (header, CRC-32) and write_checkpoint() (encode, write, fsync, rename),
 // for pt + hashed filter and for sppm, after one pass. Counter `MiB`: the file's size.

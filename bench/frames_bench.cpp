@@ -1,5 +1,5 @@
 // Frames of an animation at 640x360, one sample per pixel each, on 2 threads: what issue 16's "10
-// frames per second" measures (docs/animation.md, "Frames per second"). One session
+// frames per second" measures (docs/results/frames-per-second.md). One session
 // renders the still cornell-box frame after frame as `pathspace render --frames` does
 // (session/frame_sequence.h: a new scene and its acceleration structure per frame, then one pass),
 // without writing files. One benchmark iteration = one frame; the first frames of the sequence,

@@ -1,4 +1,4 @@
-// Scene loading (docs/benchmarks.md "Scene loading"): read_ply throughput on a generated
+// Scene loading (docs/results/io-and-overheads.md "Scene loading"): read_ply throughput on a generated
 // 1M-triangle binary little-endian PLY, plain and gzip-compressed ("MB/s" counts the uncompressed
 // PLY bytes), and the time to first pixel: load_scene + Embree build + one 1-spp PT pass at 64x64,
 // the steps `pathspace render FILE` runs (render_command.cpp), with each step's share as counters.

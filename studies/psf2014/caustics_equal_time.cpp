@@ -1,4 +1,4 @@
-// Equal-time caustics (docs/benchmarks.md "Equal-time caustics"): on cornell-box (bs_c) at 128x128, a
+// Equal-time caustics (docs/results/integrators.md "Equal-time caustics"): on cornell-box (bs_c) at 128x128, a
 // long BPT reference, then PT, LT, BPT, SPPM and PCLT for the same wall time each (several seeds), with the
 // relMSE against the reference over the whole image and over the caustic under the glass sphere,
 // where PT must hit the small light through the glass by BSDF sampling and the others trace from it.

@@ -18,6 +18,9 @@
 //    backend") or what the pages call it (kDenialAliases: "path tracer", "GPU path tracer"). A clause
 //    that is conditional or says where something runs ("without nvcc ...", "... on the GPU") is not
 //    a denial. Lines are checked one by one, code blocks not at all.
+// And the other way round, the sections the code cites: a comment that points at
+// docs/<page>.md, "<title>" (or docs/<page>.md "<title>") names a page that exists and a heading or a
+// bullet of it that begins with the title.
 // Lines between <!-- docs-test: off --> and <!-- docs-test: on --> (a worked example of code that
 // does not exist) are not checked.
 // A failure names the document, the line and the missing thing. The checkers themselves are tested
@@ -539,6 +542,65 @@ Registered registered_things() {
   return registered;
 }
 
+// ---- sections that the code cites ----
+
+// Whether the page has a heading, or a bullet ("* **Determinism.** ...", "* Shading frame: ..."),
+// that begins with the title.
+bool page_has_section(const std::string& page, const std::string& title) {
+  std::istringstream in(page);
+  std::string line;
+  while (std::getline(in, line)) {
+    const size_t i = line.find_first_not_of(' ');
+    if (i == std::string::npos) continue;
+    std::string rest;
+    if (line[i] == '#') {
+      const size_t text = line.find_first_not_of("# ", i);
+      if (text == std::string::npos) continue;
+      rest = line.substr(text);
+    } else if (line.compare(i, 2, "* ") == 0) {
+      rest = line.substr(i + 2);
+      if (rest.rfind("**", 0) == 0) rest = rest.substr(2);
+    } else {
+      continue;
+    }
+    if (rest.rfind(title, 0) == 0) return true;
+  }
+  return false;
+}
+
+void check_cited_sections(const std::vector<DocLine>& lines, std::vector<Finding>* out) {
+  static const std::regex cite(R"re((docs/[A-Za-z0-9_/.-]+\.md)[,:]? ?\(?"([^"]+)")re");
+  for (const DocLine& l : lines)
+    for (std::sregex_iterator m(l.text.begin(), l.text.end(), cite), end; m != end; ++m) {
+      const std::string page = (*m)[1], title = (*m)[2];
+      const std::string where = l.file + ":" + std::to_string(l.number);
+      if (!fs::is_regular_file(kRoot / page)) {
+        out->push_back({where, "cites " + page + ", which does not exist"});
+      } else if (!page_has_section(read_all(kRoot / page), title)) {
+        out->push_back({where, "cites \"" + title + "\", which " + page + " has no heading or bullet for"});
+      }
+    }
+}
+
+// The lines of the sources, build files and scripts that may cite the docs.
+std::vector<DocLine> all_code_lines() {
+  static const std::set<std::string> kExtensions = {".h", ".cpp", ".cu", ".py", ".cmake", ".txt", ".sh"};
+  std::vector<DocLine> lines;
+  for (const char* folder : {"src", "apps", "studies", "bench", "tests", "python", "scripts", ".ci"}) {
+    if (!fs::is_directory(kRoot / folder)) continue;
+    for (const auto& e : fs::recursive_directory_iterator(kRoot / folder)) {
+      if (!e.is_regular_file()) continue;
+      const std::string ext = e.path().extension().string();
+      const bool script = std::string(folder) == "scripts" || std::string(folder) == ".ci";
+      if (!(script && ext.empty()) && !kExtensions.count(ext)) continue;
+      if (ext == ".txt" && e.path().filename() != "CMakeLists.txt") continue;
+      const std::vector<DocLine> l = split_lines(fs::relative(e.path(), kRoot).string(), read_all(e.path()));
+      lines.insert(lines.end(), l.begin(), l.end());
+    }
+  }
+  return lines;
+}
+
 std::vector<DocLine> all_doc_lines() {
   std::vector<DocLine> lines;
   for (const std::string& f : doc_files()) {
@@ -583,6 +645,31 @@ TEST(Docs, RegisteredThingsAreNotDenied) {
   std::vector<Finding> findings;
   check_denials(all_doc_lines(), registered, &findings);
   EXPECT_TRUE(findings.empty()) << report(findings);
+}
+
+TEST(Docs, CitedSectionsExist) {
+  const std::vector<DocLine> lines = all_code_lines();
+  ASSERT_GT(lines.size(), 10000u) << "the sources were not found under " << kRoot;
+  std::vector<Finding> findings;
+  check_cited_sections(lines, &findings);
+  EXPECT_TRUE(findings.empty()) << report(findings);
+}
+
+// The section checker accepts headings and bullets that exist, and finds a missing page and a
+// missing section, on made-up source lines.
+TEST(DocsCheck, FindsCitedSectionsThatAreMissing) {
+  // Built from pieces, so that the real check does not find these citations in this file.
+  const std::string q = "\"", d = "docs/";
+  const std::vector<DocLine> lines = split_lines(
+      "src/made_up.h", "// " + d + "cli.md, " + q + "Checkpoints" + q + " and " + d + "hashed-filter.md " + q + "Determinism" + q +
+                           "\n// (" + d + "conventions.md, " + q + "Shading frame" + q + ")\n" +
+                           "// " + d + "no-such-page.md, " + q + "Anything" + q + "\n" +
+                           "// " + d + "cli.md, " + q + "No such section" + q + "\n");
+  std::vector<Finding> findings;
+  check_cited_sections(lines, &findings);
+  ASSERT_EQ(findings.size(), 2u) << report(findings);
+  EXPECT_EQ(findings[0].where, "src/made_up.h:3");
+  EXPECT_EQ(findings[1].where, "src/made_up.h:4");
 }
 
 // The checker finds what is missing (and accepts what exists), on a made-up document: three

@@ -5,7 +5,7 @@
 // vectorised loop over 16-byte points (this file is compiled with -fopenmp-simd and
 // -ffp-contract=off); only the records in the ball read their weights' data and value, in index
 // order, the order of a plain walk over the cells' lists, so the filtered values are bit-identical
-// to that walk's (docs/benchmarks.md, "Consistent filter against the hashed filter").
+// to that walk's (docs/results/filter-speed.md, "Consistent filter against the hashed filter").
 #pragma once
 
 #include <cstdint>

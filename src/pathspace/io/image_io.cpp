@@ -46,7 +46,7 @@
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 // PNG's deflate through zlib (stb's own hook): 2-3x faster than stb's compressor at the same size,
-// which matters for --write-every (docs/benchmarks.md, "Checkpoints and periodic outputs").
+// which matters for --write-every (docs/results/io-and-overheads.md, "Checkpoints and periodic outputs").
 #define STBIW_ZLIB_COMPRESS pathspace_png_deflate
 // Debian's stb_image.h calls memcpy with a null source and length 0 on some damaged PNGs: undefined
 // but harmless, and third-party. Sanitizer and fuzz builds compile this file without UBSan's

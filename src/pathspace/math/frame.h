@@ -1,4 +1,4 @@
-// Orthonormal shading frame with z = normal (docs/conventions.md: "Shading frame: z = normal").
+// Orthonormal shading frame with z = normal (docs/conventions.md, "Shading frame").
 // Basis construction: Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017).
 #pragma once
 

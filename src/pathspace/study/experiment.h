@@ -3,7 +3,7 @@
 // means), plus the typed statistics each configuration must report and custom image metrics. The
 // runner (experiment_runner.h) renders every cell through a RenderSession; experiment_output.h
 // writes CSV, JSON and a self-contained HTML page. `pathspace study pclt` and the programs of studies/ are
-// defined on it (docs/architecture.md, "Experiments").
+// defined on it (docs/architecture.md, "8. Experiments").
 #pragma once
 
 #include <cstdint>
