@@ -60,15 +60,20 @@ nlohmann::ordered_json registry_json() {
     d["filters"] = e.filters;
     j["devices"].push_back(d);
   }
-  j["run_options"] = options_json(run_options());  // --spp, --time, --threads
+  j["run_options"] = options_json(run_options());  // --spp, --time, --threads, --resolution, --seed
   return j;
 }
 
+// A whole number; the double nearest 2^64 - 1 (--seed's max, run_options.h) is the largest
+// 64-bit value, which a double cannot hold exactly.
+std::string integer_text(double v) { return v >= double(UINT64_MAX) ? std::to_string(UINT64_MAX) : number_text(v); }
+
 std::string range_text(const OptionSpec& s) {
   switch (s.type) {
-    case OptionType::integer:
+    case OptionType::integer: return fmt::format("{} to {}", integer_text(s.min), integer_text(s.max));
     case OptionType::real: return fmt::format("{} to {}", number_text(s.min), number_text(s.max));
     case OptionType::choice: return fmt::format("{}", fmt::join(s.choices, " | "));
+    case OptionType::size: return fmt::format("WxH, each {} to {}", number_text(s.min), number_text(s.max));
     case OptionType::flag: return "flag";
   }
   return "";
@@ -108,7 +113,7 @@ std::string registry_markdown() {
     if (!e.paper.empty()) out += fmt::format(" Paper: {}.", e.paper);
     out += "\n\n" + (e.schema.options.empty() ? std::string("No options.\n") : markdown_options(e.schema.options));
   }
-  out += "\n### Run options\n\nEvery render's, beside its integrator's and filter's (`render`, Python's `render()`).\n\n" +
+  out += "\n### Run options\n\nEvery render's, beside its integrator's and filter's (`render`; in Python `render()`, and `Scene.load()` for the resolution).\n\n" +
          markdown_options(run_options());
   out += "\n### `--device`\n\n";
   for (const DeviceEntry& d : device_registry().entries())

@@ -4,6 +4,7 @@
 
 #include "pathspace/options/option_parse.h"
 #include "pathspace/options/option_spec.h"
+#include "pathspace/session/run_options.h"
 
 namespace pathspace::cli {
 
@@ -39,5 +40,12 @@ CLI::Validator checked_real(const std::string& name, double min, double max) {
   return checked("FLOAT in [" + number_text(min) + " - " + number_text(max) + "]",
                  [=](const std::string& t) { parse_double_option(name, t, min, max); });
 }
+
+CLI::Validator threads_check() {
+  const OptionSpec& s = run_option(RunOption::threads);
+  return checked_integer(s.name, s.min, s.max);
+}
+
+CLI::Validator seed_check() { return checked_unsigned(run_option(RunOption::seed).name, kMaxSeed); }
 
 }  // namespace pathspace::cli

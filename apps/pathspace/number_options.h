@@ -19,5 +19,9 @@ namespace pathspace::cli {
 CLI::Validator checked_integer(const std::string& name, double min, double max);
 CLI::Validator checked_unsigned(const std::string& name, uint64_t max);
 CLI::Validator checked_real(const std::string& name, double min, double max);
+// The run options that every render and study command takes, with their ranges from
+// session/run_options.h.
+CLI::Validator threads_check();
+CLI::Validator seed_check();
 
 }  // namespace pathspace::cli

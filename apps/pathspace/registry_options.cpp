@@ -16,6 +16,7 @@ std::string value_hint(const OptionSpec& spec) {
     case OptionType::integer: return "INT";
     case OptionType::real: return "REAL";
     case OptionType::choice: return join(spec.choices);
+    case OptionType::size: return "WxH";
     case OptionType::flag: return "";
   }
   return "";

@@ -63,7 +63,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
   cmd->add_option("--filter", o->filter, "Path space filter of the selected vertices (with an integrator that composes with it)")
       ->check(CLI::IsMember(filter_choices()))
       ->capture_default_str();
-  cmd->add_option("-r,--resolution", o->resolution, "Image size WxH (default 512x512, or the scene file's)");
+  cmd->add_option("-r,--resolution", o->resolution, run_option(RunOption::resolution).help)->type_name("WxH");
   cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
   cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
   cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
@@ -90,8 +90,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
                               device_registry().joined_names()))
       ->check(CLI::IsMember(device_registry().names()))
       ->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Random seed (renders are a pure function of the seed)")
-      ->check(checked_unsigned("seed", UINT64_MAX))
+  cmd->add_option("--seed", o->seed, run_option(RunOption::seed).help)
+      ->check(seed_check())
       ->capture_default_str();
   cmd->add_option("--light-selection", o->light_selection,
                   "How lights are picked: uniform, power, or bvh (light paths by power, next event estimation by the light tree)")

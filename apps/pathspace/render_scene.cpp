@@ -11,17 +11,12 @@
 #include "pathspace/options/option_parse.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene_validation.h"
+#include "pathspace/session/run_options.h"
 #include "job_group.h"
 #include "number_options.h"
 #include "pathspace/options/usage_error.h"
 
 namespace pathspace::cli {
-
-// 512x512 when -r is not given.
-Resolution parse_resolution(const std::string& text) {
-  if (text.empty()) return Resolution{512, 512};
-  return parse_resolution_option("resolution", text, kMaxImageSide);
-}
 
 // "x,y,z", each a finite number within the scene coordinate range (scene/scene_validation.h).
 std::optional<Vec3> parse_vec3(const std::string& text, const char* option) {
@@ -71,7 +66,7 @@ PreparedScene prepare_scene(const RenderOptions& o) {
                      o.substitute_missing_textures || !o.defines.empty() || !o.animation.empty()))
     throw UsageError(
         "--camera-pos, --camera-target, --camera-up, --fov, --substitute-missing-textures, -D and --animation apply to scene files only");
-  const Resolution res = parse_resolution(o.resolution);
+  const Resolution res = image_size(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   if (from_file) {
     p.label = p.id = p.file = scene_name;

@@ -26,8 +26,6 @@ struct PreparedScene {
   std::vector<std::string> validation_warnings;  // printed by prepare_scene
 };
 
-// -r as given, 512x512 when it is empty.
-Resolution parse_resolution(const std::string& text);
 // "x,y,z" of --camera-pos and its kind; nullopt for an empty text.
 std::optional<Vec3> parse_vec3(const std::string& text, const char* option);
 void print_warnings(const std::vector<std::string>& warnings);

@@ -12,12 +12,6 @@ namespace pathspace::cli {
 
 namespace {
 
-// --threads as every render takes it (session/run_options.h).
-CLI::Validator threads_check() {
-  const OptionSpec& s = run_option(RunOption::threads);
-  return checked_integer(s.name, s.min, s.max);
-}
-
 void add_common_options(CLI::App* sub, studies::StudyOptions* o, const std::string& time_help) {
   sub->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
   sub->add_option("-r,--resolution", o->resolution, "Image size WxH")->capture_default_str();
@@ -26,7 +20,7 @@ void add_common_options(CLI::App* sub, studies::StudyOptions* o, const std::stri
       ->check(checked_real("reference-time", 1e-3, 1e7));
   sub->add_option("--scenes", o->scenes, "Built-in scenes, comma-separated names or ids")->delimiter(',')->capture_default_str();
   sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")
-      ->check(checked_unsigned("seed", UINT64_MAX))
+      ->check(seed_check())
       ->capture_default_str();
   sub->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(threads_check())->capture_default_str();
   sub->add_flag("--no-exr", o->no_exr, "Write PNG only (commit-sized output)");
@@ -38,7 +32,7 @@ void add_gallery_options(CLI::App* g, studies::GalleryOptions* o) {
   g->add_option("-o,--out", o->out, "Output folder (created)")->capture_default_str();
   g->add_option("-t,--time", o->time_s, "Seconds of rendering per scene")->check(checked_real("time", 1e-3, 1e6))->capture_default_str();
   g->add_option("-i,--integrator", o->integrator, "Integrator of the renders")->capture_default_str();
-  g->add_option("--seed", o->seed, "Random seed")->check(checked_unsigned("seed", UINT64_MAX))->capture_default_str();
+  g->add_option("--seed", o->seed, "Random seed")->check(seed_check())->capture_default_str();
   g->add_option("-j,--threads", o->threads, "Worker threads (0: all cores)")->check(threads_check())->capture_default_str();
   g->add_flag("--substitute-missing-textures", o->substitute_missing_textures,
               "Render scenes with missing images, replaced by neutral stand-ins (a warning each)");

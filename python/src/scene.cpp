@@ -13,6 +13,7 @@
 #include "pathspace/options/option_spec.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene_validation.h"
+#include "pathspace/session/run_options.h"
 
 namespace pathspace::python {
 
@@ -57,8 +58,7 @@ PerspectiveCamera camera_of(const CameraValues& v, const PerspectiveCamera& curr
   check_point(v.target, "target");
   check_point(v.up, "up");
   if (!(v.fov >= 0.01f && v.fov <= 179.f)) throw py::value_error("Camera.fov must be between 0.01 and 179 degrees");
-  if (v.width < 1 || v.height < 1 || v.width > kMaxImageSide || v.height > kMaxImageSide)
-    throw py::value_error("Camera.resolution: each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels");
+  check_image_size(v.width, v.height);  // OptionError: ValueError
   const Vec3 forward = v.target - v.position;
   if (!(length(forward) > 0.f)) throw py::value_error("Camera: position and target coincide");
   if (!(length(v.up) > 0.f)) throw py::value_error("Camera.up must not be zero");
@@ -80,11 +80,9 @@ Vec3 vec3_of(const std::array<float, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 std::shared_ptr<PyScene> load(const std::string& name, std::optional<std::pair<int, int>> resolution, bool substitute_missing_textures,
                               std::optional<std::map<std::string, std::string>> defines, std::optional<std::string> animation) {
   if (name.empty()) throw py::value_error("Scene.load: the scene name is empty (see pathspace.builtin_scenes())");
-  if (resolution && (resolution->first < 1 || resolution->second < 1 || resolution->first > kMaxImageSide ||
-                     resolution->second > kMaxImageSide))
-    throw py::value_error("resolution: each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels");
+  if (resolution) check_image_size(resolution->first, resolution->second);  // OptionError: ValueError
   std::vector<std::string> warnings;
-  const int width = resolution ? resolution->first : 512, height = resolution ? resolution->second : 512;
+  const int width = resolution ? resolution->first : kDefaultImageSide, height = resolution ? resolution->second : kDefaultImageSide;
   try {
     if (!names_scene_file(name)) {
       const BuiltinSceneInfo* info = find_builtin_scene(name);

@@ -10,6 +10,7 @@ const char* option_type_name(OptionType type) {
     case OptionType::integer: return "integer";
     case OptionType::real: return "real";
     case OptionType::choice: return "choice";
+    case OptionType::size: return "size";
   }
   return "?";
 }

@@ -16,6 +16,7 @@ enum class OptionType : uint8_t {
   integer,  // whole number within [min, max]
   real,     // finite number within [min, max]
   choice,   // one of `choices`
+  size,     // "WxH": two whole numbers, each within [min, max] (an image size)
 };
 
 const char* option_type_name(OptionType type);

@@ -52,7 +52,7 @@ nlohmann::ordered_json option_spec_json(const OptionSpec& s) {
   j["name"] = s.name;
   j["type"] = option_type_name(s.type);
   j["default"] = s.default_text;
-  if (s.type == OptionType::integer || s.type == OptionType::real) {
+  if (s.type == OptionType::integer || s.type == OptionType::real || s.type == OptionType::size) {
     j["min"] = s.min;
     j["max"] = s.max;
   }

@@ -1,12 +1,14 @@
 #include "pathspace/session/run_options.h"
 
 #include "pathspace/options/option_parse.h"
+#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace {
 
 namespace {
 
-OptionSpec number_option(const char* name, OptionType type, const char* default_text, double min, double max, const char* help) {
+OptionSpec number_option(const char* name, OptionType type, const std::string& default_text, double min, double max,
+                         const std::string& help) {
   OptionSpec s;
   s.name = name;
   s.type = type;
@@ -28,12 +30,16 @@ void check_range(const OptionSpec& s, double value) {
 }  // namespace
 
 const std::vector<OptionSpec>& run_options() {
+  static const std::string default_size = std::to_string(kDefaultImageSide) + "x" + std::to_string(kDefaultImageSide);
   static const std::vector<OptionSpec> options = {
-      number_option("spp", OptionType::integer, "16", 1, double(1 << 24),
-                    "Samples per pixel (default 16, or the scene file's; with --resume: in total)"),
+      number_option("spp", OptionType::integer, std::to_string(kDefaultSpp), 1, double(1 << 24),
+                    "Samples per pixel (default " + std::to_string(kDefaultSpp) + ", or the scene file's; with --resume: in total)"),
       number_option("time", OptionType::real, "", 1e-3, 1e7,
                     "Render for this many seconds (whole passes) instead of --spp; with --resume: this many more"),
       number_option("threads", OptionType::integer, "0", 0, 4096, "Worker threads (0: all cores)"),
+      number_option("resolution", OptionType::size, default_size, 1, kMaxImageSide,
+                    "Image size WxH (default " + default_size + ", or the scene file's)"),
+      number_option("seed", OptionType::integer, "0", 0, double(kMaxSeed), "Random seed (renders are a pure function of the seed)"),
   };
   return options;
 }
@@ -54,5 +60,16 @@ RunLimit run_limit(std::optional<double> spp, std::optional<double> time, int sc
 }
 
 void check_threads(double threads) { check_range(run_option(RunOption::threads), threads); }
+
+Resolution image_size(const std::string& text) {
+  if (text.empty()) return Resolution{kDefaultImageSide, kDefaultImageSide};
+  const OptionSpec& s = run_option(RunOption::resolution);
+  return parse_resolution_option(s.name, text, int(s.max));
+}
+
+void check_image_size(int width, int height) {
+  const OptionSpec& s = run_option(RunOption::resolution);
+  for (const int side : {width, height}) parse_integer_option(s.name, std::to_string(side), s.min, s.max);
+}
 
 }  // namespace pathspace
