@@ -50,7 +50,11 @@ def test_compare_equals_the_cli(cli, tmp_path, small_scene):
     ours = pathspace.compare(test.image, reference.image, reference.variance)
     from_files = pathspace.compare(paths["test"], str(paths["reference"]), reference_variance=paths["variance"])
     expected = json.loads(cli("compare", paths["test"], paths["reference"], "--reference-variance", paths["variance"], "--json").stdout)
-    for key in ("mse", "rel_mse", "mean_image", "mean_reference"):
+    for key in ("mse", "rel_mse", "mean_image", "mean_reference", "block", "block_rel_mse", "blotched_share", "flip"):
         assert ours[key] == expected[key], key
         assert from_files[key] == expected[key], key
     assert pathspace.compare(test.image, test.image)["rel_mse"] == 0.0
+    blocks = json.loads(cli("compare", paths["test"], paths["reference"], "--block", "4", "--flip-ppd", "30", "--json").stdout)
+    ours = pathspace.compare(test.image, reference.image, block=4, flip_ppd=30)
+    for key in ("block", "block_rel_mse", "blotched_share", "flip"):
+        assert ours[key] == blocks[key], key
