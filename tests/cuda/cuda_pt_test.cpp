@@ -17,7 +17,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 4;
+constexpr int kComparisons = 5;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 // The shared scenes' folder: PATHSPACE_SHARED_SCENES_DIR in the environment (a GPU machine with a
@@ -64,11 +64,24 @@ TEST(CudaPt, FilteredCornellBoxMatchesCpu) {
   expect_gpu_matches_cpu(make_builtin_scene("cornell-box", 64, 64), config, 256, "cornell-box pt + hashed cuda vs cpu");
 }
 
+// Caustic photons traced on the device, indexed by the CPU's grid build (gpu/cuda_caustic_map.h).
+TEST(CudaPt, FilteredCornellBoxWithCausticPhotonsMatchesCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  HashedFilterSettings s;
+  s.caustics.photons_per_pixel = 1.0;
+  RenderConfig config = with_filter(testing::default_config("pt", testing::test_seed(5)), "hashed", s);
+  expect_gpu_matches_cpu(make_builtin_scene("cornell-box", 64, 64), config, 256, "cornell-box pt + hashed + caustic photons cuda vs cpu");
+}
+
 TEST(CudaPt, WavefrontEqualsMegakernelBitForBit) {
   PATHSPACE_REQUIRE_GPU();
   testing::expect_pipelines_agree(make_builtin_scene("cornell-glossy", 64, 64), FilterChoice{});
   FilterChoice hashed;
   hashed.name = "hashed";
+  testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
+  HashedFilterSettings with_photons;
+  with_photons.caustics.photons_per_pixel = 1.0;
+  hashed.settings = with_photons;
   testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
 }
 

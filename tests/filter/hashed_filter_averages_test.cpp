@@ -66,13 +66,21 @@ VertexBuffer make_buffer(size_t paths, int records_per_path, uint64_t seed, floa
 
 enum class Fallback { none, neighbours, coarser };
 
-void expect_exact_averages(Fallback fallback, int records_per_path, int threads_seed, float psf_scale = 3.f) {
+// What a vertex adds to its voxel under --psf-clamp (max_luminance > 0): the colour scaled to that luminance.
+Rgb clamped(const Rgb& c, float max_luminance) {
+  const float y = 0.212671f * c.r + 0.715160f * c.g + 0.072169f * c.b;  // Rgb luminance()
+  return max_luminance > 0.f && y > max_luminance ? c * (max_luminance / y) : c;
+}
+
+void expect_exact_averages(Fallback fallback, int records_per_path, int threads_seed, float psf_scale = 3.f,
+                           float max_luminance = 0.f) {
   const Scene scene = make_builtin_scene("cornell-box", 64, 64);
   HashedFilterSettings settings;
   settings.key.psf_scale = psf_scale;
   settings.min_count = 6;
   settings.neighbour_search = fallback == Fallback::neighbours;
   settings.multi_level = fallback == Fallback::coarser;
+  settings.max_luminance = max_luminance;
   HashedFilter filter(settings, scene.camera, size_t(1) << 16);  // large enough: no probe-limit fallbacks
   const VertexBuffer b = make_buffer(20000, records_per_path, uint64_t(threads_seed), psf_scale > 10.f ? 0.5f : 0.f);
   const uint64_t seed = 42;
@@ -88,7 +96,7 @@ void expect_exact_averages(Fallback fallback, int records_per_path, int threads_
     for (int r = 0; r < b.count[path]; ++r) {
       const size_t i = b.slot(path, r);
       uint64_t fixed[3];
-      if (!to_fixed_point(b.contribution[i], fixed)) continue;
+      if (!to_fixed_point(clamped(b.contribution[i], max_luminance), fixed)) continue;
       accumulated[i] = true;
       keys[i] = filter.key_of(b, i, seed, pass);
       for (Sum* s : {&voxels[tuple_of(keys[i])], &coarse_voxels[tuple_of(coarser_key(keys[i]))]}) {
@@ -157,6 +165,9 @@ TEST(HashedFilterAverages, NeighbourSearchAddsTheTwentySixNeighbours) {
   expect_exact_averages(Fallback::neighbours, 2, 3);
 }
 TEST(HashedFilterAverages, MultiLevelUsesTheCoarserVoxel) { expect_exact_averages(Fallback::coarser, 2, 4); }
+// --psf-clamp: every vertex adds its contribution with the luminance clamped (about half of them
+// here are above the limit), and the average is that of the clamped values.
+TEST(HashedFilterAverages, ClampedContributionsAreAveraged) { expect_exact_averages(Fallback::none, 1, 5, 3.f, 0.8f); }
 
 // A pass clears only the cells the pass before used when they are few (HashedFilter::gather_step_cells),
 // found through the vertices that reached the table, including those the overflow settling gave a

@@ -72,6 +72,10 @@ inline std::vector<FilterCase> filter_cases() {
   FilterCase tiny{"cornell_overflowing_table", "cornell-box", 2, {}, true};
   tiny.settings.table_factor = 0.001f;
   cases.push_back(tiny);
+  FilterCase clamped{"cornell_clamped_overflowing", "cornell-box", 2, {}, true};  // --psf-clamp, settling included
+  clamped.settings.table_factor = 0.001f;
+  clamped.settings.max_luminance = 0.5f;
+  cases.push_back(clamped);
   FilterCase tiny_primary{"cornell_overflowing_table_primary", "cornell-box", 0, {}, true};
   tiny_primary.settings.table_factor = 0.001f;
   cases.push_back(tiny_primary);

@@ -90,7 +90,7 @@ StepsResult filter_with_steps(const HashedFilterSettings& settings, const PassBu
         const auto it = d.cell_of_key.find(key);
         if (it == d.cell_of_key.end()) continue;
         uint64_t fixed[3];
-        if (!to_fixed_point(b.contribution[i], fixed)) continue;
+        if (!accumulated_fixed_point(s, b.contribution[i], fixed)) continue;
         add_to_cell(view, it->second, fixed, 1);
         slot_of[i] = int32_t(it->second);
       }

@@ -17,6 +17,7 @@
 #include "pathspace/integrators/pclt/pclt_kernel.h"
 #include "pathspace/integrators/pclt/pclt_settings.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
+#include "pathspace/integrators/pt/selectable_vertex.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/gpu/wavefront_stages.h"
 #include "pathspace/integrators/pt/pt_settings.h"
@@ -52,7 +53,10 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Visibilit
   out[i] = sample.value() + pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters);
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample, probes, i % 2 == 0, &caustics);
   out[i] += sample.value();
-  trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, &counters, &photons[i]);
+  trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, caustics.receivers, &counters, &photons[i]);
+  BsdfLayers layers;  // the receivers' test of the camera paths and the photons (selectable_vertex.h)
+  merge_layers(&layers);
+  if (is_selectable(layers, caustics.receivers)) out[i] = Rgb();
 }
 
 // Path tracing through the BVH tracer, as a CUDA backend calls it.

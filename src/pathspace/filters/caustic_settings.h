@@ -8,10 +8,15 @@
 namespace pathspace {
 
 struct CausticSettings {
-  double photons_per_pixel = 0.0;  // photons traced per pass and pixel; 0: no photon-mapped caustics
+  // Photons traced per pass and pixel; 0: no photon-mapped caustics. On by default for both filters:
+  // without them a filter turns caustics into blotches (docs/hashed-filter.md, "Caustic photons").
+  double photons_per_pixel = 0.5;
   float initial_radius = 0.f;  // of the first pass in scene units; <= 0: radius_fraction * bounding radius
   float radius_fraction = 0.01f;
   float alpha = 2.f / 3.f;     // Knaus-Zwicker: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1)
+  // Vertices with a layer smoother than this (or than the vertex selection allows) are links of
+  // caustic chains: photons pass them, and only rougher vertices gather (caustic_photons.h).
+  float min_roughness = 0.3f;
   bool enabled() const { return photons_per_pixel > 0.0; }
 };
 

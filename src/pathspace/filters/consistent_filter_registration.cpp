@@ -33,14 +33,7 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
            "Visibility weight: largest relative difference of the lengths of the vertices' rays along the normal", "sec. 2.1");
   add_aa_paths_option(t, &S::aa_paths);
   t.number("psf-iterations", &S::iterations, 1, 64, "Iterated averaging: average the averages this many times", "sec. 2, fig. 2");
-  t.number("psf-caustic-photons", [](S& s) -> double& { return s.caustics.photons_per_pixel; }, 0.0, 1e4,
-           "Caustic photons per pixel and pass: light -> specular -> diffuse paths come from a photon map gathered at diffuse vertices, "
-           "not from path tracing, and the first selected vertex's gather is not filtered (0: off)",
-           "sec. 2.3, fig. 1");
-  t.number("psf-caustic-radius", [](S& s) -> float& { return s.caustics.initial_radius; }, 0.0, 1e30,
-           "Caustic photon radius of the first pass in scene units (0: 1% of the scene's bounding radius)", "sec. 2.3");
-  t.number("psf-caustic-alpha", [](S& s) -> float& { return s.caustics.alpha; }, 1e-3, 1.0,
-           "Caustic radius shrinking: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) (Knaus-Zwicker)", "sec. 2.3");
+  add_caustic_options(t, &S::caustics);
   t.number("psf-batch-memory", &S::batch_memory_mb, 0.0, 1e9,
            "MiB for filtering one batch of paths; a pass is filtered in as many batches as needed (0: an eighth of the RAM)", "sec. 2");
   return t;

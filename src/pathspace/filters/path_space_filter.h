@@ -25,7 +25,7 @@ namespace pathspace {
 struct FilterNeeds {
   bool visibility = false;  // record VisibilityProbes data at each selected vertex
   int query_paths = 0;      // extra camera paths per pixel per pass that only query (query())
-  CausticSettings caustics; // photon-mapped caustics at the first selected vertex, not filtered
+  CausticSettings caustics{.photons_per_pixel = 0.0};  // photon-mapped caustics (none unless the filter asks)
 };
 
 // Temporal finite differences (the hashed filter's --temporal hybrid, 2021 paper sec. 3.4.1): paths

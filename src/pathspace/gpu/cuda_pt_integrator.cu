@@ -12,6 +12,7 @@
 #include "pathspace/filters/filter_resolve.h"
 #include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/gpu/cuda_caustic_map.h"
 #include "pathspace/gpu/cuda_event_timer.h"
 #include "pathspace/filters/hashed/cuda_hashed_filter.h"
 #include "pathspace/filters/cuda_vertex_buffer.h"
@@ -39,6 +40,8 @@ struct PassParams {
   uint64_t seed;
   uint32_t pass;
   uint32_t pixels;
+  bool has_caustics = false;
+  CausticMapView caustics;  // the pass's caustic photon map in device memory (has_caustics)
 };
 
 // Plain path tracing: one path per pixel, its value into the pass image (non-finite values dropped,
@@ -65,7 +68,8 @@ __global__ void __launch_bounds__(kThreadsPerBlock) trace_recording(PassParams p
   PathCounters c;
   PathSample sample;
   const Sampler sampler(p.seed, pixel, p.pass);
-  pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c, &sample);
+  pt_trace_path(p.scene, p.tracer, sampler, sample_camera_ray(p.scene, sampler, pixel, camera_path_time(p.scene, sampler)), p.settings, &c, &sample,
+                {}, false, p.has_caustics ? &p.caustics : nullptr);
   buffer.store(pixel, pixel, sample);
   add_counters(counters, uint32_t(c.rays), uint32_t(c.shadow_rays), 1u, 0u);
 }
@@ -99,6 +103,12 @@ class CudaPtIntegrator final : public Integrator {
       }
       buffer_.resize(pixels_, records_per_path(settings_.selection));
       filtered_.resize(size_t(pixels_) * size_t(records_per_path(settings_.selection)));
+      // Photon-mapped caustics beside the filter (2014 paper, sec. 2.3), as PtIntegrator.
+      if (fs.caustics.enabled()) {
+        const SceneView host = ctx.scene.view();
+        caustics_.emplace(host, fs.caustics, settings_.max_segments > 0 ? settings_.max_segments : host.max_path_segments,
+                          settings_.selection);
+      }
     } else {
       settings_.selection.mode = VertexSelectionMode::none;  // nothing to split a path for (as on the CPU)
     }
@@ -115,18 +125,27 @@ class CudaPtIntegrator final : public Integrator {
   // What the next pass needs (--temporal: the filter's keys and histories), as PtIntegrator.
   void save_state(StateWriter& out) const override {
     if (filter_) filter_->save_state(out);
+    if (caustics_) caustics_->save_state(out);
   }
   void load_state(StateReader& in) override {
     if (filter_) filter_->load_state(in);
+    if (caustics_) caustics_->load_state(in);
   }
 
   void render_pass(uint32_t pass, Film& film, PathCounters& counters) override {
     PassParams p{scene_.view(), BvhTracer{scene_.view(), bvh_.view()}, settings_, seed_, pass, pixels_};
     counters_.fill_bytes(0);
     timer_.start();
+    if (caustics_) {
+      caustics_->build(p.scene, p.tracer, seed_, pass, counters_.data());
+      p.has_caustics = true;
+      p.caustics = caustics_->view();
+      timer_.lap(&caustics_ms_);
+    }
     if (wavefront_) {
       const VertexBufferView view = filter_ ? buffer_.view() : VertexBufferView{};
-      wavefront_->trace(p.scene, p.tracer, settings_, seed_, pass, filter_ ? &view : nullptr, image_.data(), counters_.data(), &stages_);
+      wavefront_->trace(p.scene, p.tracer, settings_, seed_, pass, filter_ ? &view : nullptr, image_.data(), counters_.data(), &stages_,
+                        p.has_caustics ? &p.caustics : nullptr);
       timer_.start();  // the wavefront timed its own stages; the trace time is their sum
       trace_ms_ = stages_.camera_ms + stages_.extend_ms + stages_.shade_ms + stages_.shadow_ms;
     } else if (filter_) {
@@ -174,6 +193,8 @@ class CudaPtIntegrator final : public Integrator {
     out.bytes("cuda.bvh_bytes", bvh_.bytes(), "BVH nodes and primitive references in device memory");
     out.counter("cuda.bvh_nodes", bvh_.nodes());
     out.seconds("cuda.bvh_build_s", bvh_.build_seconds(), "on the host, Embree's SAH builder, then flattened");
+    if (caustics_)
+      out.seconds("cuda.caustics_s_per_pass", caustics_ms_ * 1e-3 / passes, "caustic photons: traced, indexed on the host, uploaded");
     out.seconds("cuda.trace_s_per_pass", trace_ms_ * 1e-3 / passes, "camera rays to the paths' values or vertices (device time)");
     out.seconds("cuda.filter_s_per_pass", filter_ms_ * 1e-3 / passes, "the hashed filter: clear, accumulate, lookup (device time)");
     out.seconds("cuda.resolve_s_per_pass", resolve_ms_ * 1e-3 / passes, "filtered vertices into pixels (device time)");
@@ -182,6 +203,7 @@ class CudaPtIntegrator final : public Integrator {
                 "camera rays to the filtered image in device memory");
     out.value("cuda.mrays_per_s", trace_ms_ > 0.0 ? double(rays_) / (trace_ms_ * 1e3) : 0.0, "rays over the tracing time");
     if (filter_) filter_->statistics(out);
+    if (caustics_) caustics_->statistics(out);
   }
 
  private:
@@ -193,6 +215,7 @@ class CudaPtIntegrator final : public Integrator {
   DeviceScene scene_;
   DeviceBvh bvh_;
   std::shared_ptr<CudaHashedFilter> filter_;
+  std::optional<DeviceCausticMap> caustics_;  // --psf-caustic-photons
   std::optional<WavefrontPathTracer> wavefront_;
   WavefrontStageTimes stages_;
   DeviceVertexBuffer buffer_;
@@ -200,7 +223,7 @@ class CudaPtIntegrator final : public Integrator {
   DeviceBuffer<DeviceCounters> counters_;
   std::vector<Rgb> host_image_;
   CudaEventTimer timer_;
-  double trace_ms_ = 0, filter_ms_ = 0, resolve_ms_ = 0, download_ms_ = 0;
+  double caustics_ms_ = 0, trace_ms_ = 0, filter_ms_ = 0, resolve_ms_ = 0, download_ms_ = 0;
   uint64_t rays_ = 0, passes_ = 0;
 };
 

@@ -40,6 +40,8 @@ struct StageParams {
   VertexBufferView buffer;
   bool filtered;
   Rgb* image;
+  bool has_caustics;
+  CausticMapView caustics;  // device pointers
 };
 
 __global__ void camera_kernel(StageParams p, uint32_t n, PtPathState* states, pt_detail::OpenVertex* open, uint32_t* queue) {
@@ -69,7 +71,8 @@ __global__ void shade_kernel(StageParams p, const uint32_t* queue, const uint32_
   PtPathState local = states[path];  // the per-bounce part in registers; the open vertices stay in memory
   PtPathState* s = &local;
   const WavefrontAfterShade after =
-      wavefront_shade(p.scene, p.tracer, p.settings, p.seed, p.pass, path, hits[path], found[path] != 0, s, &c);
+      wavefront_shade(p.scene, p.tracer, p.settings, p.seed, p.pass, path, hits[path], found[path] != 0, s, &c,
+                      p.has_caustics ? &p.caustics : nullptr);
   uint32_t ended = 0, dropped = 0;
   switch (after) {
     case WavefrontAfterShade::extend: next.push(path); break;
@@ -119,8 +122,9 @@ size_t WavefrontPathTracer::bytes() const {
 
 void WavefrontPathTracer::trace(const SceneView& scene, const BvhTracer& tracer, const PtSettings& settings, uint64_t seed,
                                 uint32_t pass, const VertexBufferView* buffer, Rgb* image, PathCountersDevice* counters,
-                                WavefrontStageTimes* times) {
-  const StageParams p{scene, tracer, settings, seed, pass, buffer ? *buffer : VertexBufferView{}, buffer != nullptr, image};
+                                WavefrontStageTimes* times, const CausticMapView* caustics) {
+  const StageParams p{scene, tracer, settings, seed, pass, buffer ? *buffer : VertexBufferView{}, buffer != nullptr, image,
+                      caustics != nullptr, caustics ? *caustics : CausticMapView{}};
   uint32_t* current = queue_a_.data();
   uint32_t* next = queue_b_.data();
   uint32_t* counts = counts_.data();  // [0] current, [1] next, [2] shadow

@@ -25,9 +25,11 @@ class WavefrontPathTracer {
  public:
   explicit WavefrontPathTracer(uint32_t paths);
   // One pass: every pixel's path, traced stage by stage. `buffer` non-null: ended paths are stored
-  // there (filtering); else their values go to image[pixel]. Adds the stage times to *times.
+  // there (filtering); else their values go to image[pixel]. `caustics` non-null: the pass's caustic
+  // photon map, in device memory (pt_trace_path). Adds the stage times to *times.
   void trace(const SceneView& scene, const BvhTracer& tracer, const PtSettings& settings, uint64_t seed, uint32_t pass,
-             const VertexBufferView* buffer, Rgb* image, PathCountersDevice* counters, WavefrontStageTimes* times);
+             const VertexBufferView* buffer, Rgb* image, PathCountersDevice* counters, WavefrontStageTimes* times,
+             const CausticMapView* caustics = nullptr);
   size_t bytes() const;
 
  private:

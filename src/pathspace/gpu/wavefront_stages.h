@@ -47,14 +47,14 @@ PS_HD bool wavefront_extend(const Tracer& tracer, const PtPathState& s, SurfaceH
 template <typename Tracer>
 PS_HD WavefrontAfterShade wavefront_shade(const SceneView& scene, const Tracer& tracer, const PtSettings& settings, uint64_t seed,
                                           uint32_t pass, uint32_t pixel, const SurfaceHit& hit, bool found, PtPathState* s,
-                                          PathCounters* counters) {
+                                          PathCounters* counters, const CausticMapView* caustics = nullptr) {
   ++counters->rays;
   if (!found) {
     pt_on_miss(scene, settings, s);
     return WavefrontAfterShade::ended;
   }
   const Sampler sampler(seed, pixel, pass);
-  const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, s);
+  const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, s, {}, false, caustics);
   if (s->shadow_pending) return next == PtNext::extend ? WavefrontAfterShade::shadow_then_extend : WavefrontAfterShade::shadow_then_end;
   return next == PtNext::extend ? WavefrontAfterShade::extend : WavefrontAfterShade::ended;
 }

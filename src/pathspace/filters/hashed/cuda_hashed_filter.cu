@@ -165,9 +165,9 @@ __global__ void drop_losers_kernel(VertexBufferView b, int32_t* slots, const uin
 }
 
 // ... and the winners' vertices fill their cells (keys sorted: binary search).
-__global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table, const FailedVertex* failed, size_t n,
-                                   const uint32_t* keys, const unsigned long long* cells, size_t winners, int32_t* slots,
-                                   unsigned long long* counters) {
+__global__ void add_winners_kernel(HashedStepSettings s, VertexBufferView b, VoxelHashTableView table, const FailedVertex* failed,
+                                   size_t n, const uint32_t* keys, const unsigned long long* cells, size_t winners,
+                                   int32_t* slots, unsigned long long* counters) {
   const size_t k = thread_index();
   if (k >= n) return;
   const FailedVertex f = failed[k];
@@ -178,7 +178,7 @@ __global__ void add_winners_kernel(VertexBufferView b, VoxelHashTableView table,
   }
   if (lo == winners || keys[lo] != f.key) return;
   uint64_t fixed[3];
-  if (!to_fixed_point(b.contribution[f.slot], fixed)) return;  // never the case for a failure
+  if (!accumulated_fixed_point(s, b.contribution[f.slot], fixed)) return;  // never the case for a failure
   add_to_cell(table, cells[lo], fixed, 1);
   slots[f.slot] = int32_t(cells[lo]);
   atomicAdd(&counters[kWon], 1ull);
@@ -414,7 +414,7 @@ bool CudaHashedFilter::settle_overflows(const VertexBufferView& b, uint64_t pass
   drop_losers_kernel<<<blocks_for(b.slots()), kBlock, 0, stream>>>(b, slots_.data(), reassigned_.data(), counters);
   PS_CUDA_CHECK_LAUNCH("drop_losers_kernel");
   add_winners_kernel<<<blocks_for(failed.size()), kBlock, 0, stream>>>(
-      b, table, failed_device.data(), failed.size(), winner_keys_device.data(), winner_cells_device.data(),
+      steps_, b, table, failed_device.data(), failed.size(), winner_keys_device.data(), winner_cells_device.data(),
       winner_keys.size(), slots_.data(), counters);
   PS_CUDA_CHECK_LAUNCH("add_winners_kernel");
   // The device buffers above are freed on return: wait for the kernels that read them.

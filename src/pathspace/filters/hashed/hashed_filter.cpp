@@ -284,6 +284,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t pass_hash) {
   const VoxelKeyIsa isa = widest_voxel_key_isa();
   const bool keep_keys = keeps_keys(), keep_probes = settings_.debug_images;
   const bool adaptive = settings_.adaptive;
+  const HashedStepSettings steps = step_settings(settings_);
   for (std::vector<size_t>& records : table_records_) records.clear();
   // One combining cache per thread for the whole pass, not per chunk: a chunk of incoherent
   // (second-bounce) vertices rarely revisits its voxels, the whole pass does (tens of vertices per
@@ -356,7 +357,8 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t pass_hash) {
         const VoxelHash h = key_batch.hashes[j];
         ++vertices;
         uint64_t fixed[3];
-        if (!to_fixed_point(b.contribution[i], fixed)) {
+        const Rgb value = accumulated_value(steps, b.contribution[i]);
+        if (!to_fixed_point(value, fixed)) {
           slots_[i] = kNotAccumulated;
           if (keep_probes) probes_[i] = 0;
           ++not_accumulated;
@@ -367,7 +369,7 @@ void HashedFilter::accumulate(const VertexBuffer& b, uint64_t pass_hash) {
           coarse_slots_[i] = int32_t(cr.slot);
           if (cr.slot >= 0) {
             coarse.add(uint64_t(cr.slot), fixed);
-            if (adaptive) atomic_fetch_add(&coarse_squares_[size_t(cr.slot)], luminance_square_fixed(b.contribution[i]));
+            if (adaptive) atomic_fetch_add(&coarse_squares_[size_t(cr.slot)], luminance_square_fixed(value));
           }
         }
         LocalVoxelCache::Entry& e = local.entry_for(h);

@@ -43,10 +43,12 @@ class HashedFilter final : public PathSpaceFilter {
     if (history_) return kTemporalWarmUpFrames;
     return settings_.adaptive ? 1 : 0;
   }
-  // --psf-aa-paths: query-only camera paths (2014 paper, sec. 3) read the table the pass left.
+  // --psf-aa-paths: query-only camera paths (2014 paper, sec. 3) read the table the pass left;
+  // --psf-caustic-photons: caustic paths come from a photon map, not from the voxel averages.
   FilterNeeds needs() const override {
     FilterNeeds n;
     n.query_paths = settings_.aa_paths;
+    n.caustics = settings_.caustics;
     return n;
   }
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;

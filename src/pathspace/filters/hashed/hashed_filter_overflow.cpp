@@ -62,11 +62,12 @@ bool HashedFilter::settle_overflows(const VertexBuffer& b, uint64_t pass_hash) {
   });
   // ... and the winners' vertices fill their cells.
   uint64_t won = 0;
+  const HashedStepSettings steps = step_settings(settings_);
   for (const auto& [i, key] : failed) {
     const auto it = cell_of_key.find(key);
     if (it == cell_of_key.end()) continue;
     uint64_t fixed[3];
-    if (!to_fixed_point(b.contribution[i], fixed)) continue;  // not accumulated (never the case for a failure)
+    if (!accumulated_fixed_point(steps, b.contribution[i], fixed)) continue;  // not accumulated (never the case for a failure)
     view.add(it->second, fixed);
     slots_[i] = int32_t(it->second);
     table_records_.local().push_back(i);  // a vertex of one of the step's cells

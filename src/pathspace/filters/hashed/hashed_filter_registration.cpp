@@ -23,6 +23,9 @@ OptionTable<HashedFilterSettings> hashed_options() {
            "sec. 4");
   t.number("psf-probes", &S::max_probes, 1, 4096, "Linear probing limit (<= 16 stays in one cache line)", "sec. 3.2.2; 2019 paper sec. 3.1");
   t.number("psf-min-count", &S::min_count, 0, 1 << 20, "Voxels with fewer vertices are low-count", "sec. 3.3");
+  t.number("psf-clamp", &S::max_luminance, 0.0, 1e30,
+           "Largest luminance a vertex adds to its voxel's average: an anti-firefly clamp as SHaRC's, beyond the paper, "
+           "biased low (0: no clamp)");
   t.flag("psf-neighbours", &S::neighbour_search, true, "Low-count voxels add their 26 neighbours", "sec. 3.3.1");
   t.flag("psf-multi-level", &S::multi_level, true, "Low-count voxels use a voxel one level coarser", "sec. 3.3.2");
   t.flag("psf-adaptive", &S::adaptive, true,
@@ -30,6 +33,7 @@ OptionTable<HashedFilterSettings> hashed_options() {
          "squared error (finite difference across the levels against the extra variance)",
          "sec. 3.1.3");
   add_aa_paths_option(t, &S::aa_paths);
+  add_caustic_options(t, &S::caustics);
   t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
   t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
            std::vector<std::pair<std::string, TemporalMode>>{

@@ -28,6 +28,7 @@ struct HashedStepSettings {
   uint64_t min_count = 4;         // sec. 3.3
   bool neighbour_search = false;  // sec. 3.3.1
   bool multi_level = false;       // sec. 3.3.2
+  float max_luminance = 0.f;      // --psf-clamp: largest luminance a vertex adds to a voxel (0: no clamp)
 };
 
 // From the filter's settings, whose key.pixel_angle the filter has set from its camera.
@@ -37,7 +38,23 @@ inline HashedStepSettings step_settings(const HashedFilterSettings& f) {
   s.min_count = uint64_t(f.min_count > 0 ? f.min_count : 0);
   s.neighbour_search = f.neighbour_search;
   s.multi_level = f.multi_level;
+  s.max_luminance = f.max_luminance;
   return s;
+}
+
+// What a vertex adds to its voxel: its contribution, scaled down (hue kept) to a luminance of at
+// most max_luminance when that is set. An anti-firefly clamp as SHaRC's: one rare bright path (a
+// caustic found by BSDF sampling) no longer sets a whole voxel's average, at the price of a bias
+// towards darker voxels (docs/hashed-filter.md, "Robust averages").
+PS_INLINE Rgb accumulated_value(const HashedStepSettings& s, const Rgb& c) {
+  if (!(s.max_luminance > 0.f)) return c;
+  const float y = luminance(c);
+  return y > s.max_luminance ? c * (s.max_luminance / y) : c;
+}
+
+// The fixed-point value a vertex adds to its voxel (false: not representable, it is not accumulated).
+PS_INLINE bool accumulated_fixed_point(const HashedStepSettings& s, const Rgb& c, uint64_t out[3]) {
+  return to_fixed_point(accumulated_value(s, c), out);
 }
 
 // Adds `count` vertices whose fixed-point values sum to `sum` into the cell of h (sec. 3.2).
@@ -64,7 +81,7 @@ struct PreparedVertex {
 
 PS_INLINE PreparedVertex prepare_vertex(const HashedStepSettings& s, const VertexBufferView& b, size_t i, uint64_t pass_hash) {
   PreparedVertex v;
-  v.accumulated = to_fixed_point(b.contribution[i], v.fixed);
+  v.accumulated = accumulated_fixed_point(s, b.contribution[i], v.fixed);
   v.key = key_for_pass(s.key, b, i, pass_hash);
   v.hash = hash_voxel_key(v.key, s.key.normal);
   return v;

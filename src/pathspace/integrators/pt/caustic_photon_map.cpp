@@ -1,5 +1,6 @@
 #include "pathspace/integrators/pt/caustic_photon_map.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,19 +13,17 @@
 
 namespace pathspace {
 
-namespace {
-// Separates the photons' random stream from the camera paths' (both are indexed from 0).
-constexpr uint64_t kCausticStream = 0x636175737469637aull;
-}  // namespace
-
-CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments)
+CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments,
+                                   const VertexSelection& selection)
     : scene_(scene),
       max_segments_(max_segments),
+      receivers_(selection),
       photons_per_pass_(uint64_t(std::llround(settings.photons_per_pixel * double(scene.camera.width) * double(scene.camera.height)))) {
   const float r0 = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
   if (!(r0 > 0.f && std::isfinite(r0))) throw Error(fmt::format("caustic photon radius must be positive, not {}", r0));
   if (!(settings.alpha > 0.f && settings.alpha <= 1.f)) throw Error(fmt::format("caustic photon alpha must be in (0, 1], not {}", settings.alpha));
   radius_ = ProgressiveRadius(r0, settings.alpha);
+  receivers_.min_roughness = std::max(selection.min_roughness, settings.min_roughness);
 }
 
 void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
@@ -32,34 +31,45 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
   const size_t n = size_t(photons_per_pass_);
   traced_.resize(n);
   std::atomic<uint64_t> rays{0};
-  const uint64_t photon_seed = seed ^ kCausticStream;
+  const uint64_t photon_seed = caustic_photon_seed(seed);
   parallel_for(n, 256, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t i = begin; i < end; ++i) {
       const Sampler sampler(photon_seed, i, pass);
-      trace_caustic_photon(scene_, accel, sampler, max_segments_, &local, &traced_[i]);
+      trace_caustic_photon(scene_, accel, sampler, max_segments_, receivers_, &local, &traced_[i]);
     }
     rays += local.rays;
   });
   counters.rays += rays.load();
+  index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+void CausticPhotonMap::index(uint32_t pass, double trace_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  const size_t n = traced_.size();
   const float r = radius_.at(pass);
-  const Vec3 nowhere(NAN, NAN, NAN);
-  grid_.build(n, r, [&](size_t i) { return traced_[i].stored ? traced_[i].p : nowhere; });
+  // The grid holds the stored photons only (a few in ten of the traced ones): its table, sized by
+  // its points, then stays small enough for the caches that every gather's probes go through.
+  stored_index_.clear();
+  for (size_t i = 0; i < n; ++i)
+    if (traced_[i].stored) stored_index_.push_back(uint32_t(i));
+  grid_.build(stored_index_.size(), r, [&](size_t i) { return traced_[stored_index_[i]].p; });
   // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
   const size_t linked = grid_.compacted_records();
   in_cells_.resize(linked);
   parallel_for(linked, 4096, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) in_cells_[i] = traced_[grid_.record(i).payload];
+    for (size_t i = begin; i < end; ++i) in_cells_[i] = traced_[stored_index_[grid_.record(i).payload]];
   });
   view_.grid = grid_.view();
   view_.photons = in_cells_.data();
   view_.radius = linked ? r : 0.f;
   view_.inv_area_count = n ? float(1.0 / (double(kPi) * double(r) * double(r) * double(n))) : 0.f;
   view_.max_segments = max_segments_;
+  view_.receivers = receivers_;
   last_radius_ = r;
   photons_ += n;
   stored_ += linked;
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds_ += trace_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void CausticPhotonMap::statistics(Statistics& out) const {

@@ -22,11 +22,24 @@ class Accel;
 
 class CausticPhotonMap {
  public:
-  CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments);
+  // selection: the camera paths' vertex selection (where photons are stored: caustic_photons.h).
+  CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments, const VertexSelection& selection);
+  // The vertices that gather and store photons (CausticMapView::receivers).
+  const VertexSelection& receivers() const { return receivers_; }
 
   // Traces the pass's photons and builds the map; the view stays valid until the next build.
   void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
+  // The two halves of build() for a caller that traces the photons elsewhere (the GPU path tracer,
+  // gpu/cuda_caustic_map.h): photon i of the pass from Sampler(caustic_photon_seed(seed), i, pass)
+  // into traced_photons()[i], then index() builds the same map as build() would.
+  uint64_t photons_per_pass() const { return photons_per_pass_; }
+  std::vector<CausticPhoton>& traced_photons() {
+    traced_.resize(size_t(photons_per_pass_));
+    return traced_;
+  }
+  void index(uint32_t pass, double trace_seconds);
   const CausticMapView& view() const { return view_; }
+  const HashGrid& grid() const { return grid_; }
   void statistics(Statistics& out) const;
   // The totals behind the statistics (the radius follows from the pass index).
   void save_state(StateWriter& out) const;
@@ -35,10 +48,12 @@ class CausticPhotonMap {
  private:
   SceneView scene_;
   int max_segments_;
+  VertexSelection receivers_;
   uint64_t photons_per_pass_;
   ProgressiveRadius radius_;
   HashGrid grid_;
   std::vector<CausticPhoton> traced_, in_cells_;
+  std::vector<uint32_t> stored_index_;  // of traced_, in order
   CausticMapView view_;
   uint64_t photons_ = 0, stored_ = 0;
   float last_radius_ = 0.f;

@@ -1,18 +1,24 @@
 // Caustic photons for the path tracer (Keller, Dahm, Binder 2014, sec. 2.3; device-safe, templated
-// on the ray caster like pt_trace_path). A photon path leaves a light and is stored once, at the
-// first non-delta vertex after one or more delta bounces (a light -> specular+ -> diffuse path), then
-// ends; a photon whose first bounce is not delta ends at once. The path tracer gathers these
-// photons at every sufficiently diffuse vertex of a camera path and leaves out exactly the paths
-// they stand for (emission reached from such a vertex through delta bounces only), so no path is
-// counted twice and none is lost. At the first selected vertex the gathered radiance goes into the
-// path's prefix: it is not averaged again by the filter ("the contribution to vertices obtained by
-// photon mapping should not be included in path space filtering"); at later vertices it is light
-// arriving at the selected vertex from elsewhere, averaged with the rest of its contribution.
+// on the ray caster like pt_trace_path). A photon path leaves a light, passes every vertex that a
+// path space filter could not take (selectable_vertex.h: delta surfaces, and glossy ones smoother
+// than the selection's roughness limit) by sampling its BSDF, and is stored once, at the first
+// selectable vertex after at least one such bounce (a light -> specular+ -> diffuse path), then ends;
+// a photon whose first hit is selectable ends at once. The path tracer gathers these photons at every
+// selectable vertex of a camera path and leaves out exactly the paths they stand for (emission
+// reached from such a vertex through vertices that are not selectable only, and the next event
+// estimates made there), so no path is counted twice and none is lost. The 2014 paper names
+// specular chains; near-specular glossy ones are the same problem for a filter (a voxel averages
+// their rare bright paths into blotches) and the same cure. At the first selected vertex the
+// gathered radiance goes into the path's prefix: it is not averaged again by the filter ("the
+// contribution to vertices obtained by photon mapping should not be included in path space
+// filtering"); at later vertices it is light arriving at the selected vertex from elsewhere,
+// averaged with the rest of its contribution.
 #pragma once
 
 #include "pathspace/hashgrid/hash_grid_view.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
+#include "pathspace/integrators/pt/selectable_vertex.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/sampling/sampler.h"
 #include "pathspace/scene/shading_material.h"
@@ -36,12 +42,20 @@ struct CausticMapView {
   float radius = 0.f;
   float inv_area_count = 0.f;
   int max_segments = 0;
+  // Which vertices gather (and store) photons: the camera paths' selection with its roughness limit
+  // raised to CausticSettings::min_roughness; the others are links of caustic chains.
+  VertexSelection receivers;
 };
 
+// The sampler seed of a pass's photon paths: a stream apart from the camera paths' (both are indexed
+// from 0), the same on both devices.
+PS_INLINE uint64_t caustic_photon_seed(uint64_t seed) { return seed ^ 0x636175737469637aull; }
+
 // Traces one photon path; *out receives the stored photon (out->stored false when there is none).
+// `receivers`: CausticMapView::receivers, whose roughness test decides where photons stop.
 template <typename Tracer>
 PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, int max_segments,
-                                PathCounters* counters, CausticPhoton* out) {
+                                const VertexSelection& receivers, PathCounters* counters, CausticPhoton* out) {
   out->stored = false;
   LightPathStart start;
   if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
@@ -56,8 +70,8 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
     Material textured;
     const Material& mat = shading_material(scene, hit, &textured);
     const Vec3 wi_world = -ray.d;
-    if (segments > 1 && bsdf_has_non_delta(mat)) {
-      *out = {hit.p, wi_world, beta, uint8_t(segments), true};
+    if (is_selectable_material(mat, receivers)) {
+      if (segments > 1) *out = {hit.p, wi_world, beta, uint8_t(segments), true};
       return;
     }
     const Frame frame(hit.ns);
@@ -67,7 +81,6 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
     if (!bsdf_sample(mat, frame.to_local(wi_world), sampler.at(light_dims::vertex(v, light_dims::kLobe)), ub,
                      TransportMode::importance, &bs))
       return;
-    if (!bs.delta) return;  // not a caustic path (any more)
     beta *= bs.weight;
     if (is_black(beta) || !all_finite(beta)) return;
     ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);

@@ -85,7 +85,8 @@ PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSetti
   }
   if (needs_.caustics.enabled())
     caustics_ = std::make_unique<CausticPhotonMap>(view_, needs_.caustics,
-                                                   settings_.max_segments > 0 ? settings_.max_segments : view_.max_path_segments);
+                                                   settings_.max_segments > 0 ? settings_.max_segments : view_.max_path_segments,
+                                                   settings_.selection);
 }
 
 PtIntegrator::~PtIntegrator() = default;

@@ -11,6 +11,7 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
+#include "pathspace/integrators/pt/selectable_vertex.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/scene/light_sampling.h"
@@ -37,22 +38,6 @@ struct OpenVertex {
   Rgb continuation[kMaxBsdfLayers];    // f_l |cos| / pdf of the sampled direction per layer
   Rgb after;                           // radiance gathered after the vertex, relative to it
 };
-
-// Merges all layers into one when layers are not filtered separately.
-PS_INLINE void merge_layers(BsdfLayers* l) {
-  if (l->count < 2) return;
-  l->albedo[0] += l->albedo[1];
-  l->roughness[0] = fminf(l->roughness[0], l->roughness[1]);
-  l->id[0] = kLayerGlossy;
-  l->count = 1;
-}
-
-PS_INLINE bool is_selectable(const BsdfLayers& l, const VertexSelection& s) {
-  if (l.count == 0) return false;
-  for (int i = 0; i < l.count; ++i)
-    if (l.roughness[i] < s.min_roughness) return false;
-  return true;
-}
 
 PS_INLINE bool wants_vertex(const VertexSelection& s, int diffuse_index, int selected) {
   switch (s.mode) {
@@ -144,8 +129,8 @@ struct PtPathState {
   Vec3 prev_p;
   Vec3 prev_ns;              // the previous vertex's shading normal (zero at the camera): light selection there
   float path_distance = 0.f, prev_distance = 0.f;
-  // With caustics: 1 after a gathering vertex's non-delta bounce, 2 once delta bounces alone
-  // followed it (emission found then belongs to the photon map), 0 otherwise.
+  // With caustics: 1 after a gathering (selectable) vertex's bounce, 2 once vertices that are not
+  // selectable alone followed it (emission found then belongs to the photon map), 0 otherwise.
   int caustic_chain = 0;
   int selected = 0, diffuse_index = 0;
   int segments = 1;          // of the ray being traced (camera ray = segment 1)
@@ -242,11 +227,14 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     if (!selection.split_layers) merge_layers(&layers);
     selectable = is_selectable(layers, selection);
   }
+  // Caustic photons gather at selectable vertices rough enough (CausticMapView::receivers); the
+  // others are links of caustic chains.
+  const bool gathers = caustics && selectable && is_selectable(layers, caustics->receivers);
   if (selectable) {
     // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
     // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
     // selected vertex's contribution (light arriving there from elsewhere, filtered with it).
-    if (caustics) s->radiance() += s->beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
+    if (gathers) s->radiance() += s->beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
     ++s->diffuse_index;
     if (wants_vertex(selection, s->diffuse_index, s->selected)) {
       sel = &s->open[s->selected];
@@ -270,7 +258,10 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   }
 
   // Next event estimation: one light, one point on it; its contribution waits for the shadow ray.
-  if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat)) {
+  // Not at a vertex that is not selectable reached from a gathering vertex through such vertices
+  // only: light -> it -> ... -> that vertex is a caustic path, which the photon map carries.
+  const bool in_caustic_chain = caustics && s->caustic_chain != 0 && !gathers;
+  if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat) && !in_caustic_chain) {
     float select_prob;
     const uint32_t li = select_light_at(scene, hit.p, hit.ns, sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
     LightSample ls;
@@ -305,7 +296,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
   if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) return PtNext::end;
   s->abs_beta *= bs.weight;
-  if (caustics) s->caustic_chain = selectable ? (bs.delta ? 0 : 1) : (s->caustic_chain != 0 && bs.delta ? 2 : 0);
+  if (caustics) s->caustic_chain = gathers ? 1 : (s->caustic_chain != 0 ? 2 : 0);
   if (sel) {
     Rgb fl[kMaxBsdfLayers];
     eval_layers(mat, layers, selection.split_layers, wo, bs.wi, fl);
@@ -383,8 +374,9 @@ PS_HD void pt_continue_path(const SceneView& scene, const Tracer& tracer, const 
 // path ends at its last selectable vertex, whose records then carry no contribution (their
 // contributions come from a filter's query: the anti-aliasing paths of Keller et al. 2014, sec. 3).
 // `caustics`: a caustic photon map gathered at every sufficiently diffuse vertex (the selection's
-// roughness test); the path then leaves out the emission it reaches from such a vertex through
-// delta bounces only (those paths are the photons'; caustic_photons.h).
+// roughness test); the path then leaves out the emission it reaches, and the next event estimates it
+// makes, from such a vertex through vertices that are not selectable only (those paths are the
+// photons'; caustic_photons.h).
 template <typename Tracer>
 PS_HD void pt_trace_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray,
                          const PtSettings& settings, PathCounters* counters, PathSample* out,
