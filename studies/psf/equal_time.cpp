@@ -48,7 +48,11 @@ void run_equal_time(const study::FigureRunner& fr, const PsfStudyParams& params,
   atrous.metrics.set("guide_s", guide_s);
   atrous.metrics.set("atrous_s", filter_s);
   runs.push_back(std::move(atrous));
-  f.metric_rows = {{"guide_s", "guide buffers", study::MetricFormat::seconds}, {"atrous_s", "à-trous filter", study::MetricFormat::seconds}};
+  f.metric_rows = {{"block_rel_mse", "block relMSE (8×8)", study::MetricFormat::number},
+                   {"blotched_share", "blotched blocks (share)", study::MetricFormat::number},
+                   {"flip", "FLIP", study::MetricFormat::number},
+                   {"guide_s", "guide buffers", study::MetricFormat::seconds},
+                   {"atrous_s", "à-trous filter", study::MetricFormat::seconds}};
 
   const study::Measurement* best = &runs.front();
   std::string list;

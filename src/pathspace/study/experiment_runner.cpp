@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/error.h"
+#include "pathspace/film/block_metrics.h"
+#include "pathspace/film/flip.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/session/render_session.h"
@@ -122,6 +124,11 @@ void ExperimentRunner::finish_measurement(const PreparedScene& scene, const std:
       scene.reference_variance.size() > 0 ? image_error(image, scene.reference, &scene.reference_variance) : m->error;
   m->rel_mse_debiased = debiased.rel_mse;
   m->mse_debiased = debiased.mse;
+  // What a viewer sees besides the per-pixel noise (pathspace compare's metrics, docs/cli.md).
+  const BlockError blocks = block_error(image, scene.reference);
+  m->metrics.set("block_rel_mse", blocks.block_rel_mse);
+  m->metrics.set("blotched_share", blocks.blotched_share);
+  m->metrics.set("flip", flip(image, scene.reference).mean);
   if (!options_.out_dir.empty()) {
     const ImageFiles files = write_images(options_.out_dir, image_base, image, scene.reference, options_.write_exr);
     m->image_png = files.png;
