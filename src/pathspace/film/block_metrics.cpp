@@ -40,9 +40,7 @@ std::vector<BlockMean> block_means(const Image& image, int block, int bw, int bh
 }  // namespace
 
 BlockError block_error(const Image& image, const Image& reference, int block) {
-  if (image.width != reference.width || image.height != reference.height)
-    throw Error("image sizes differ: " + std::to_string(image.width) + "x" + std::to_string(image.height) + " vs " +
-                std::to_string(reference.width) + "x" + std::to_string(reference.height));
+  check_same_size(image, reference);
   if (block < 1) throw Error("block size must be at least 1, not " + std::to_string(block));
   BlockError e;
   const int bw = (image.width + block - 1) / block, bh = (image.height + block - 1) / block;

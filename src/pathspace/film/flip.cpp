@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pathspace/base/error.h"
+#include "pathspace/film/image_metrics.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -44,12 +45,13 @@ constexpr double kWhite[3] = {kRgbToXyz[0][0] + kRgbToXyz[0][1] + kRgbToXyz[0][2
                               kRgbToXyz[1][0] + kRgbToXyz[1][1] + kRgbToXyz[1][2],
                               kRgbToXyz[2][0] + kRgbToXyz[2][1] + kRgbToXyz[2][2]};
 
-struct Vec3 {
+// Three doubles: a colour in linear RGB, XYZ or CIELab.
+struct Triple {
   double v[3];
 };
 
-Vec3 multiply(const double (&m)[3][3], const Vec3& x) {
-  Vec3 y{};
+Triple multiply(const double (&m)[3][3], const Triple& x) {
+  Triple y{};
   for (int i = 0; i < 3; ++i) y.v[i] = m[i][0] * x.v[0] + m[i][1] * x.v[1] + m[i][2] * x.v[2];
   return y;
 }
@@ -64,8 +66,8 @@ double lab_f(double t) {
 
 // Linear RGB -> CIELab, then the Hunt adjustment (sec. 3.1): chroma scaled by 0.01 L, since colour
 // differences are less visible in dark regions.
-Vec3 hunt_lab(const Vec3& rgb) {
-  const Vec3 xyz = multiply(kRgbToXyz, rgb);
+Triple hunt_lab(const Triple& rgb) {
+  const Triple xyz = multiply(kRgbToXyz, rgb);
   const double fx = lab_f(xyz.v[0] / kWhite[0]), fy = lab_f(xyz.v[1] / kWhite[1]), fz = lab_f(xyz.v[2] / kWhite[2]);
   const double l = 116.0 * fy - 16.0;
   return {{l, 0.01 * l * 500.0 * (fx - fy), 0.01 * l * 200.0 * (fy - fz)}};
@@ -73,7 +75,7 @@ Vec3 hunt_lab(const Vec3& rgb) {
 
 // HyAB (Abasi et al. 2020): city-block in lightness, Euclidean in chroma; suits large differences
 // better than the Euclidean CIELab distance (sec. 3.1).
-double hyab(const Vec3& p, const Vec3& q) {
+double hyab(const Triple& p, const Triple& q) {
   return std::abs(p.v[0] - q.v[0]) + std::hypot(p.v[1] - q.v[1], p.v[2] - q.v[2]);
 }
 
@@ -162,12 +164,12 @@ Plane csf_filter(const Plane& channel, const CsfKernels& k) {
 // Colour pipeline of one image (sec. 3.1): linear RGB clamped to [0, 1] -> YCxCz (the opponent space
 // that is linear in XYZ, so filtering there is filtering light) -> CSF filtering -> back to linear RGB,
 // clamped -> Hunt-adjusted CIELab.
-std::vector<Vec3> filtered_hunt_lab(const Image& image, double ppd, Plane* achromatic) {
+std::vector<Triple> filtered_hunt_lab(const Image& image, double ppd, Plane* achromatic) {
   const int w = image.width, h = image.height;
   Plane ycxcz[3] = {Plane(w, h), Plane(w, h), Plane(w, h)};
   for (size_t i = 0; i < image.size(); ++i) {
     const Rgb& p = image.pixels[i];
-    const Vec3 xyz = multiply(kRgbToXyz, Vec3{{clamp01(p.r), clamp01(p.g), clamp01(p.b)}});
+    const Triple xyz = multiply(kRgbToXyz, Triple{{clamp01(p.r), clamp01(p.g), clamp01(p.b)}});
     const double xn = xyz.v[0] / kWhite[0], yn = xyz.v[1] / kWhite[1], zn = xyz.v[2] / kWhite[2];
     ycxcz[0].v[i] = 116.0 * yn - 16.0;
     ycxcz[1].v[i] = 500.0 * (xn - yn);
@@ -175,11 +177,11 @@ std::vector<Vec3> filtered_hunt_lab(const Image& image, double ppd, Plane* achro
     achromatic->v[i] = yn;  // (Y + 16) / 116: the [0, 1] achromatic channel the features are found on
   }
   for (int c = 0; c < 3; ++c) ycxcz[c] = csf_filter(ycxcz[c], csf_kernels(kCsf[c], ppd));
-  std::vector<Vec3> lab(image.size());
+  std::vector<Triple> lab(image.size());
   for (size_t i = 0; i < lab.size(); ++i) {
     const double yn = (ycxcz[0].v[i] + 16.0) / 116.0;
-    const Vec3 xyz{{(yn + ycxcz[1].v[i] / 500.0) * kWhite[0], yn * kWhite[1], (yn - ycxcz[2].v[i] / 200.0) * kWhite[2]}};
-    Vec3 rgb = multiply(kXyzToRgb, xyz);
+    const Triple xyz{{(yn + ycxcz[1].v[i] / 500.0) * kWhite[0], yn * kWhite[1], (yn - ycxcz[2].v[i] / 200.0) * kWhite[2]}};
+    Triple rgb = multiply(kXyzToRgb, xyz);
     for (double& v : rgb.v) v = clamp01(v);
     lab[i] = hunt_lab(rgb);
   }
@@ -229,9 +231,7 @@ void feature_strengths(const Plane& achromatic, const FeatureKernels& k, Plane* 
 }  // namespace
 
 FlipResult flip(const Image& test, const Image& reference, double pixels_per_degree, bool with_map) {
-  if (test.width != reference.width || test.height != reference.height)
-    throw Error("image sizes differ: " + std::to_string(test.width) + "x" + std::to_string(test.height) + " vs " +
-                std::to_string(reference.width) + "x" + std::to_string(reference.height));
+  check_same_size(test, reference);
   if (!(pixels_per_degree > 0.0) || !std::isfinite(pixels_per_degree))
     throw Error("FLIP needs a positive number of pixels per degree, not " + std::to_string(pixels_per_degree));
   FlipResult result;
@@ -244,8 +244,8 @@ FlipResult flip(const Image& test, const Image& reference, double pixels_per_deg
   Plane achromatic_t(w, h), achromatic_r(w, h);
   std::vector<double> flip_map(test.size());
   {
-    const std::vector<Vec3> lab_t = filtered_hunt_lab(test, pixels_per_degree, &achromatic_t);
-    const std::vector<Vec3> lab_r = filtered_hunt_lab(reference, pixels_per_degree, &achromatic_r);
+    const std::vector<Triple> lab_t = filtered_hunt_lab(test, pixels_per_degree, &achromatic_t);
+    const std::vector<Triple> lab_r = filtered_hunt_lab(reference, pixels_per_degree, &achromatic_r);
     // Eq. 3: the lower p_c of the range [0, cmax] takes [0, p_t] of the output, so that small
     // differences get most of it.
     for (size_t i = 0; i < flip_map.size(); ++i) {

@@ -6,17 +6,15 @@
 
 namespace pathspace {
 
-namespace {
-void check_sizes(const Image& a, const Image& b) {
+void check_same_size(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw Error("image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
                 std::to_string(b.width) + "x" + std::to_string(b.height));
 }
-}  // namespace
 
 ImageError image_error(const Image& image, const Image& reference, const Image* reference_variance, double epsilon) {
-  check_sizes(image, reference);
-  if (reference_variance) check_sizes(image, *reference_variance);
+  check_same_size(image, reference);
+  if (reference_variance) check_same_size(image, *reference_variance);
   ImageError e;
   const double n = 3.0 * double(image.size());
   for (size_t i = 0; i < image.size(); ++i) {
@@ -38,7 +36,7 @@ ImageError image_error(const Image& image, const Image& reference, const Image* 
 }
 
 Image rel_error_map(const Image& image, const Image& reference, double epsilon) {
-  check_sizes(image, reference);
+  check_same_size(image, reference);
   Image map(image.width, image.height);
   for (size_t i = 0; i < image.size(); ++i) {
     double s = 0.0;

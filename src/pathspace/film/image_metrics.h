@@ -15,6 +15,9 @@ struct ImageError {
 
 inline constexpr double kRelMseEpsilon = 1e-2;
 
+// Throws pathspace::Error naming both sizes when a and b differ in size: the metrics' common check.
+void check_same_size(const Image& a, const Image& b);
+
 // Throws pathspace::Error when sizes differ. reference_variance may be null.
 ImageError image_error(const Image& image, const Image& reference, const Image* reference_variance = nullptr,
                        double epsilon = kRelMseEpsilon);

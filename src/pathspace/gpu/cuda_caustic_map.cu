@@ -26,7 +26,7 @@ __global__ void trace_photons_kernel(SceneView scene, BvhTracer tracer, uint64_t
 
 DeviceCausticMap::DeviceCausticMap(const SceneView& host_scene, const CausticSettings& settings, int max_segments,
                                    const VertexSelection& selection)
-    : host_(host_scene, settings, max_segments, selection), max_segments_(max_segments) {
+    : host_(host_scene, settings, max_segments, selection) {
   if (host_.photons_per_pass() > UINT32_MAX)
     throw Error("the GPU path tracer traces at most 2^32 - 1 caustic photons per pass: lower --psf-caustic-photons");
 }
@@ -37,8 +37,8 @@ void DeviceCausticMap::build(const SceneView& scene, const BvhTracer& tracer, ui
   const uint32_t n = uint32_t(host_.photons_per_pass());
   traced_.resize(n);
   if (n > 0) {
-    trace_photons_kernel<<<(n + kThreads - 1) / kThreads, kThreads>>>(scene, tracer, caustic_photon_seed(seed), pass, max_segments_,
-                                                                     host_.receivers(), n,
+    trace_photons_kernel<<<(n + kThreads - 1) / kThreads, kThreads>>>(scene, tracer, caustic_photon_seed(seed), pass,
+                                                                     host_.max_segments(), host_.receivers(), n,
                                                                      traced_.data(), counters);
     PS_CUDA_CHECK_LAUNCH("trace_photons_kernel");
   }

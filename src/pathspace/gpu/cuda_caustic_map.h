@@ -32,7 +32,6 @@ class DeviceCausticMap {
 
  private:
   CausticPhotonMap host_;
-  int max_segments_;
   DeviceBuffer<CausticPhoton> traced_, in_cells_;
   DeviceBuffer<GridSlot> slots_;
   DeviceBuffer<GridRecord> records_;

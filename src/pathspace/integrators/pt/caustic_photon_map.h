@@ -33,6 +33,7 @@ class CausticPhotonMap {
   // gpu/cuda_caustic_map.h): photon i of the pass from Sampler(caustic_photon_seed(seed), i, pass)
   // into traced_photons()[i], then index() builds the same map as build() would.
   uint64_t photons_per_pass() const { return photons_per_pass_; }
+  int max_segments() const { return max_segments_; }
   std::vector<CausticPhoton>& traced_photons() {
     traced_.resize(size_t(photons_per_pass_));
     return traced_;
