@@ -74,6 +74,50 @@ TEST(HashGrid, RandomPointsWithNegativeCoordinatesMatchBruteForce) {
   for (size_t i = 0; i < 200; ++i) ASSERT_EQ(grid_query(grid, queries[i], 0.45f), brute_force(points, queries[i], 0.45f));
 }
 
+// The occupancy bitmap only skips cells that hold nothing: sparse points (most queries empty) and
+// a dense cloud (every bit set) both match brute force, and the bitmap does reject empty cells.
+TEST(HashGrid, OccupancyBitmapIsExact) {
+  HashGridConfig with_bitmap;
+  with_bitmap.occupancy_bits_per_slot = 8;
+  const std::vector<Vec3> sparse = random_box(300, -3.f, 3.f, 11);
+  std::vector<Vec3> queries = random_box(3000, -3.5f, 3.5f, 12);
+  for (size_t i = 0; i < 300; ++i) queries.push_back(sparse[i]);
+  EXPECT_GT(expect_matches_brute_force(sparse, queries, 0.05f, with_bitmap), 300u);
+  EXPECT_GT(expect_matches_brute_force(random_box(20000, -1.f, 1.f, 13), queries, 0.2f, with_bitmap), 5000u);
+
+  HashGrid grid(with_bitmap);
+  grid.build(sparse, 0.05f);
+  const HashGridView view = grid.view();
+  ASSERT_NE(view.occupancy.words, nullptr);
+  size_t rejected = 0;
+  for (const Vec3& q : random_box(2000, -3.f, 3.f, 14))
+    rejected += !view.occupancy.may_hold(hash_cell_key(view.geometry.key_of(q)));
+  EXPECT_GT(rejected, 1900u);  // 300 occupied cells in 2^14 bits: about 2% false positives
+  // A grid being filled through its view has no bitmap: it would be stale.
+  grid.prepare(10, 0.05f);
+  EXPECT_EQ(grid.view().occupancy.words, nullptr);
+}
+
+// Cell ranges of a compacted grid list exactly the candidates, in the same order (callers that sum
+// over them get the same floats).
+TEST(HashGrid, CellRangesListTheCandidatesInOrder) {
+  const std::vector<Vec3> points = random_box(5000, -1.f, 1.f, 21);
+  HashGrid grid;
+  grid.build(points, 0.1f);
+  const HashGridView view = grid.view();
+  size_t total = 0;
+  for (const Vec3& q : random_box(300, -1.2f, 1.2f, 22)) {
+    std::vector<uint32_t> candidates, ranged;
+    view.for_each_candidate(q, 0.1f, [&](const GridRecord& rec) { candidates.push_back(rec.payload); });
+    view.for_each_cell_range(q, 0.1f, [&](uint32_t begin, uint32_t end) {
+      for (uint32_t i = begin; i < end; ++i) ranged.push_back(grid.record(i).payload);
+    });
+    ASSERT_EQ(ranged, candidates);
+    total += ranged.size();
+  }
+  EXPECT_GT(total, 1000u);
+}
+
 // A lattice with spacing r/2: many points sit exactly on cell borders (cell = 2r) and many pairs
 // are exactly r apart along an axis, which the inclusive query must return.
 TEST(HashGrid, CellBordersAndExactDistanceR) {

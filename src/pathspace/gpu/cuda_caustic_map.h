@@ -35,6 +35,7 @@ class DeviceCausticMap {
   DeviceBuffer<CausticPhoton> traced_, in_cells_;
   DeviceBuffer<GridSlot> slots_;
   DeviceBuffer<GridRecord> records_;
+  DeviceBuffer<uint64_t> occupancy_;
   CausticMapView view_;
 };
 

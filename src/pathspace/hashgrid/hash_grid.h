@@ -27,6 +27,9 @@ struct HashGridConfig {
   // read consecutive memory instead of chasing links scattered in insertion order, and the order
   // within a cell (hence float sums over neighbours) no longer depends on thread timing.
   bool compact = true;
+  // After build(): a CellOccupancy bitmap with this many bits per table slot (rounded to a power of
+  // two; 0: none). Worth it where most queries find empty cells, e.g. caustic photon gathers.
+  uint32_t occupancy_bits_per_slot = 0;
 };
 
 struct HashGridStats {
@@ -64,6 +67,7 @@ class HashGrid {
   void clear() {
     parallel_for(slots_.size(), size_t(1) << 14, [&](size_t b, size_t e) { std::fill(&slots_[b], &slots_[e], GridSlot{}); });
     counters_ = GridCounters{};
+    occupancy_ready_ = false;  // stale until a build() ends
   }
 
   // Record i holds position_of(i) with payload i, then is linked into its cell; all in parallel.
@@ -83,6 +87,7 @@ class HashGrid {
     });
     counters_.appended = uint32_t(n);
     if (config_.compact) compact();
+    if (config_.occupancy_bits_per_slot) mark_occupancy();
   }
   void build(std::span<const Vec3> positions, float radius) {
     build(positions.size(), radius, [&](size_t i) { return positions[i]; });
@@ -91,8 +96,10 @@ class HashGrid {
   // A view is a handle like a device pointer: the owner's constness does not travel with it.
   HashGridView view() const {
     auto* self = const_cast<HashGrid*>(this);
+    const CellOccupancy occupancy = occupancy_ready_ ? CellOccupancy{occupancy_.data(), occupancy_bit_mask_} : CellOccupancy{};
     return HashGridView{self->slots_.data(), uint32_t(slots_.size() - 1), self->records_.data(),
-                        uint32_t(records_.size()), &self->counters_, geometry_, config_.probing, config_.max_probes};
+                        uint32_t(records_.size()), &self->counters_, geometry_, config_.probing, config_.max_probes,
+                        occupancy};
   }
   template <typename F>
   void for_each_in_radius(const Vec3& p, float radius, F&& f) const {
@@ -132,6 +139,20 @@ class HashGrid {
     records_.swap(compacted_);
   }
 
+  // Sets the CellOccupancy bit of every claimed slot's key (serial: a few microseconds per 10^4 slots).
+  void mark_occupancy() {
+    const size_t bits = slots_.size() * std::bit_ceil(size_t(config_.occupancy_bits_per_slot));
+    PS_CHECK(bits <= (size_t(1) << 32));
+    occupancy_bit_mask_ = uint32_t(bits - 1);
+    occupancy_.assign(std::max<size_t>(1, bits / 64), 0);
+    for (const GridSlot& slot : slots_) {
+      if (slot.key == kEmptyCellKey) continue;
+      const uint32_t bit = CellOccupancy::bit_of(hash_cell_key(slot.key), occupancy_bit_mask_);
+      occupancy_[bit >> 6] |= uint64_t(1) << (bit & 63u);
+    }
+    occupancy_ready_ = true;
+  }
+
   // Records in cell order after compact(): records [0, compacted_records()) are exactly the linked ones.
   size_t compacted_records() const { return cell_start_.empty() ? 0 : size_t(cell_start_.back()); }
 
@@ -148,7 +169,7 @@ class HashGrid {
     s.dropped = counters_.dropped;
     s.status = counters_.status;
     s.bytes = slots_.capacity() * sizeof(GridSlot) + (records_.capacity() + compacted_.capacity()) * sizeof(GridRecord) +
-              (cell_start_.capacity() + order_.capacity()) * sizeof(uint32_t);
+              (cell_start_.capacity() + order_.capacity()) * sizeof(uint32_t) + occupancy_.capacity() * sizeof(uint64_t);
     const uint32_t mask = uint32_t(slots_.size() - 1);
     double probe_sum = 0.0;
     for (uint32_t slot = 0; slot < slots_.size(); ++slot) {
@@ -173,6 +194,9 @@ class HashGrid {
   GridCounters counters_;
   GridGeometry geometry_;
   std::vector<uint32_t> cell_start_, order_;  // compaction scratch, reused
+  std::vector<uint64_t> occupancy_;           // CellOccupancy words, valid while occupancy_ready_
+  uint32_t occupancy_bit_mask_ = 0;
+  bool occupancy_ready_ = false;
   std::vector<GridRecord> compacted_;
 };
 

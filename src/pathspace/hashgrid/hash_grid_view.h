@@ -35,6 +35,22 @@ struct GridCounters {
   uint32_t dropped = 0;        // records not stored at all (full buffer, non-finite position)
 };
 
+// An optional bitmap with one bit per hashed cell key, set for every occupied cell: a query for an
+// empty cell then reads one word of a table small enough for the L1/L2 cache instead of probing the
+// slot table (a cache miss when the table is large and the queries scattered). Exact: a clear bit
+// means an empty cell; a set bit only sends the query on to the table.
+struct CellOccupancy {
+  const uint64_t* words = nullptr;  // null: no bitmap, every query probes
+  uint32_t bit_mask = 0;            // bits - 1 (power of two)
+
+  PS_HD static uint32_t bit_of(uint64_t key_hash, uint32_t bit_mask) { return uint32_t(key_hash >> 32) & bit_mask; }
+  PS_HD bool may_hold(uint64_t key_hash) const {
+    if (!words) return true;
+    const uint32_t bit = bit_of(key_hash, bit_mask);
+    return (words[bit >> 6] >> (bit & 63u)) & 1u;
+  }
+};
+
 struct HashGridView {
   GridSlot* slots = nullptr;
   uint32_t slot_mask = 0;  // table size - 1 (power of two)
@@ -44,6 +60,7 @@ struct HashGridView {
   GridGeometry geometry;
   Probing probing = Probing::quadratic;
   uint32_t max_probes = 64;
+  CellOccupancy occupancy;  // set by HashGrid after a build when configured (HashGridConfig)
 
   // Links the already written record `index` into its cell's list. On a probe failure the record
   // stays in the buffer unlinked and the failure is counted.
@@ -88,7 +105,9 @@ struct HashGridView {
   // the first empty slot is exact: there are no deletions, so every slot before a key's own slot in
   // its probe sequence was occupied when that key was inserted and still is.
   PS_HD uint32_t find_head(uint64_t key) const {
-    const uint32_t home = uint32_t(hash_cell_key(key)) & slot_mask;
+    const uint64_t hash = hash_cell_key(key);
+    if (!occupancy.may_hold(hash)) return kNoRecord;
+    const uint32_t home = uint32_t(hash) & slot_mask;
     for (uint32_t i = 0; i < max_probes; ++i) {
       const GridSlot& slot = slots[probe_slot(home, i, probing, slot_mask)];
       if (slot.key == key) return slot.head;
@@ -100,7 +119,10 @@ struct HashGridView {
   // After HashGrid::compact(): the records of the cell with this key are [*begin, *end) (empty if
   // none), from the slot alone.
   PS_HD void find_cell(uint64_t key, uint32_t* begin, uint32_t* end) const {
-    const uint32_t home = uint32_t(hash_cell_key(key)) & slot_mask;
+    *begin = *end = 0;
+    const uint64_t hash = hash_cell_key(key);
+    if (!occupancy.may_hold(hash)) return;
+    const uint32_t home = uint32_t(hash) & slot_mask;
     for (uint32_t i = 0; i < max_probes; ++i) {
       const GridSlot& slot = slots[probe_slot(home, i, probing, slot_mask)];
       if (slot.key == key) {
@@ -110,19 +132,37 @@ struct HashGridView {
       }
       if (slot.key == kEmptyCellKey) break;
     }
-    *begin = *end = 0;
+  }
+
+  // f(key) for every cell a ball of `radius` around p can touch, x outermost, z innermost.
+  template <typename F>
+  PS_HD void for_each_cell_key(const Vec3& p, float radius, F&& f) const {
+    CellCoord lo, hi;
+    geometry.cell_range(p, radius, &lo, &hi);
+    for (int32_t x = lo.x; x <= hi.x; ++x)
+      for (int32_t y = lo.y; y <= hi.y; ++y)
+        for (int32_t z = lo.z; z <= hi.z; ++z) f(pack_cell_key(x, y, z));
   }
 
   // Every record in the cells a ball of `radius` around p can touch, without a distance test (for
   // callers with per-record radii, e.g. SPPM hit points built with the largest radius).
   template <typename F>
   PS_HD void for_each_candidate(const Vec3& p, float radius, F&& f) const {
-    CellCoord lo, hi;
-    geometry.cell_range(p, radius, &lo, &hi);
-    for (int32_t x = lo.x; x <= hi.x; ++x)
-      for (int32_t y = lo.y; y <= hi.y; ++y)
-        for (int32_t z = lo.z; z <= hi.z; ++z)
-          for (uint32_t r = find_head(pack_cell_key(x, y, z)); r != kNoRecord; r = records[r].next) f(records[r]);
+    for_each_cell_key(p, radius, [&](uint64_t key) {
+      for (uint32_t r = find_head(key); r != kNoRecord; r = records[r].next) f(records[r]);
+    });
+  }
+
+  // After HashGrid::compact(): f(begin, end), the record range of every non-empty cell a ball of
+  // `radius` around p can touch, in for_each_candidate's order. For callers that keep their payloads
+  // in record order: they read their own array only, not the records as well.
+  template <typename F>
+  PS_HD void for_each_cell_range(const Vec3& p, float radius, F&& f) const {
+    for_each_cell_key(p, radius, [&](uint64_t key) {
+      uint32_t begin, end;
+      find_cell(key, &begin, &end);
+      if (begin != end) f(begin, end);
+    });
   }
 
   // f(const GridRecord&, float distance_squared) for every record with |x - p| <= radius.

@@ -52,7 +52,9 @@ class CausticPhotonMap {
   VertexSelection receivers_;
   uint64_t photons_per_pass_;
   ProgressiveRadius radius_;
-  HashGrid grid_;
+  // Most gathers land where no caustic falls: an occupancy bitmap (8 bits per slot, a few tens of
+  // KiB) answers them without a cache miss in the slot table.
+  HashGrid grid_{HashGridConfig{.occupancy_bits_per_slot = 8}};
   std::vector<CausticPhoton> traced_, in_cells_;
   std::vector<uint32_t> stored_index_;  // of traced_, in order
   CausticMapView view_;

@@ -97,13 +97,19 @@ PS_INLINE Rgb gather_caustics(const SceneView& scene, const CausticMapView& map,
   const Vec3 n_front = dot(hit.ng, wo) >= 0.f ? hit.ng : -hit.ng;
   const Frame frame(hit.ns);
   const Vec3 wo_local = frame.to_local(wo);
+  const float r2 = map.radius * map.radius;
   Rgb sum;
-  map.grid.for_each_in_radius(hit.p, map.radius, [&](const GridRecord& rec, float) {
-    const CausticPhoton& ph = map.photons[size_t(&rec - map.grid.records)];
-    if (camera_segments + int(ph.segments) > map.max_segments) return;
-    if (dot(n_front, ph.wi) <= 0.f) return;
-    const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
-    if (all_finite(c)) sum += c;
+  // The photons are in the grid's record order (CausticPhotonMap::index), so a cell's range indexes
+  // them directly: one array read per photon instead of a record and then the photon.
+  map.grid.for_each_cell_range(hit.p, map.radius, [&](uint32_t begin, uint32_t end) {
+    for (uint32_t i = begin; i < end; ++i) {
+      const CausticPhoton& ph = map.photons[i];
+      if (distance_squared(ph.p, hit.p) > r2) continue;
+      if (camera_segments + int(ph.segments) > map.max_segments) continue;
+      if (dot(n_front, ph.wi) <= 0.f) continue;
+      const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
+      if (all_finite(c)) sum += c;
+    }
   });
   return sum * map.inv_area_count;
 }
