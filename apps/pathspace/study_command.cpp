@@ -49,8 +49,13 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
   add_common_options(pclt, &o->pclt, "Seconds per equal-time image (fig. 1); sets the iterations of figs. 5-8");
   pclt->callback([o] { o->study = "pclt"; });
   CLI::App* psf = study->add_subcommand(
-      "psf", "Path space filtering papers (2014 consistent, 2021 hashed): their figures and an equal-time comparison");
-  add_common_options(psf, &o->psf, "Seconds per equal-time image (the equal-time comparison)");
+      "psf", "Path space filtering papers (2014 consistent, 2021 hashed): their figures and equal-time comparisons");
+  add_common_options(psf, &o->psf, "Sets the references' time (20 x this unless --reference-time); the equal-time budgets follow --equal-time-spp");
+  psf->add_option("--equal-time-spp", o->psf_only.equal_time_spp,
+                  "Paths per pixel of the hashed filter whose time is each equal-time figure's budget, comma-separated")
+      ->delimiter(',')
+      ->check(checked_integer("equal-time-spp", 1, 1 << 16))
+      ->capture_default_str();
   psf->add_option("--max-spp", o->psf_only.max_spp, "Last sample count of the progressive series (2014 fig. 3): 1, 4, 16, ...")
       ->check(checked_integer("max-spp", 1, 1 << 20))
       ->capture_default_str();

@@ -12,7 +12,7 @@ namespace pathspace::studies {
 struct StudyOptions {
   std::string out;
   std::string resolution = "128x128";
-  double time_s = 5.0;            // equal-time budget per image
+  double time_s = 5.0;            // equal-time budget per image (pclt); the references' time / 20
   double reference_time_s = 0.0;  // 0: 20 x time_s
   std::vector<std::string> scenes;
   uint64_t seed = 0;
@@ -29,6 +29,9 @@ struct PsfStudyOptions {
   uint32_t temporal_frames = 64;     // orbit frames of sec. 3.4.1 (fig. 9 uses min(32, this))
   uint32_t eviction_frames = 10000;  // frames of the eviction flight (sec. 3.4.3)
   std::string room_scene = "scenes/textured-room/scene.pbrt";  // relative: to the working folder, else to the repository of the binary
+  // The equal-time figures: one per count, each giving every method the hashed filter's time for that
+  // many paths per pixel (studies/psf/equal_time.cpp).
+  std::vector<uint32_t> equal_time_spp = {1, 4, 16};
 };
 
 // `study gallery`'s options (studies/gallery/gallery.h).

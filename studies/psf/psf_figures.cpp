@@ -2,6 +2,8 @@
 // the study reproduces it, in page order, and the helpers the figure files share.
 #include "studies/psf/psf_figures.h"
 
+#include <fmt/format.h>
+
 namespace pathspace::studies {
 
 namespace {
@@ -18,7 +20,9 @@ study::Figure figure(std::string id, std::string title, std::string paper, std::
 
 }  // namespace
 
-std::vector<study::Figure> make_psf_figures() {
+std::string equal_time_figure_id(uint32_t spp) { return fmt::format("equal-time-{}spp", spp); }
+
+std::vector<study::Figure> make_psf_figures(const std::vector<uint32_t>& equal_time_spp) {
   std::vector<study::Figure> f;
   // Keller, Dahm, Binder 2014: consistent path space filtering.
   f.push_back(figure("2014-fig2", "2014 fig. 2 - iterated averaging",
@@ -107,12 +111,17 @@ std::vector<study::Figure> make_psf_figures() {
                      "process's resident memory (VmRSS), the time per frame and the temporal bookkeeping's share of the "
                      "filter's time (hashed.temporal.s_per_step against clear + accumulate + lookup per pass)."));
   // Ours.
-  f.push_back(figure("equal-time", "Equal time: path space filters against a screen-space filter",
-                     "Neither paper compares at equal time. The 2021 paper calls screen-space noise filters complementary "
-                     "(sec. 4); the edge-avoiding à-trous wavelet filter (Dammertz et al. 2010) is such a filter.",
-                     "PT, PT + hashed and PT + consistent filter, each for the same wall time (whole passes); and the PT "
-                     "render followed by 5 à-trous iterations guided by the first hits' normals, albedo and positions "
-                     "(cast by the study), its time = PT's + the filter's."));
+  for (const uint32_t spp : equal_time_spp)
+    f.push_back(figure(equal_time_figure_id(spp),
+                       fmt::format("Equal time at the hashed filter's {} path{} per pixel: path space filters against a "
+                                   "screen-space filter", spp, spp == 1 ? "" : "s"),
+                       "Neither paper compares at equal time. The 2021 paper calls screen-space noise filters complementary "
+                       "(sec. 4); the edge-avoiding à-trous wavelet filter (Dammertz et al. 2010) is such a filter.",
+                       fmt::format("PT + hashed filter (its defaults, caustic photons included) for {} pass{}; its wall time "
+                                   "is the budget of PT and of PT + consistent filter (whole passes, at least one); and the "
+                                   "PT render followed by 5 à-trous iterations guided by the first hits' normals, albedo and "
+                                   "positions (cast by the study), its time = PT's + the filter's.",
+                                   spp, spp == 1 ? "" : "es")));
   for (study::Figure& fig : f) {
     if (fig.id.rfind("2014-", 0) == 0) fig.metric_rows = filter_metric_rows("consistent");
     if (fig.id == "2021-fig1" || fig.id == "2021-fig4" || fig.id == "2021-fig10") fig.metric_rows = filter_metric_rows("hashed");

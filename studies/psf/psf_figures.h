@@ -5,8 +5,9 @@
 //   Binder, Fricke, Keller 2021 (--filter hashed): fig. 1 one path per pixel, fig. 4 voxel size,
 //     fig. 10 second-bounce filtering, and the 2019 short version's figs. 7 and 8 (hash collisions,
 //     filter time) on fixed vertex sets (studies/psf2021/figures_2021.cpp);
-//   an equal-time comparison neither paper has: PT, PT + hashed, PT + consistent and PT followed by
-//     an edge-avoiding à-trous filter in screen space (studies/psf/equal_time.cpp).
+//   equal-time comparisons neither paper has, at the hashed filter's time for 1, 4 and 16 paths per
+//     pixel: PT, PT + hashed, PT + consistent and PT followed by an edge-avoiding à-trous filter in
+//     screen space (studies/psf/equal_time.cpp).
 #pragma once
 
 #include <cstdint>
@@ -24,13 +25,16 @@
 namespace pathspace::studies {
 
 struct PsfStudyParams {
-  double time_s = 3.0;   // equal-time budget
   uint64_t seed = 0;     // of every run (the reference has its own)
   uint32_t max_spp = 64; // 2014 fig. 3's last checkpoint
+  std::vector<uint32_t> equal_time_spp = {1, 4, 16};  // PsfStudyOptions::equal_time_spp
 };
 
 // Every section in page order, with its texts and no runs yet.
-std::vector<study::Figure> make_psf_figures();
+// equal_time_spp: one equal-time figure per count ("equal-time-4spp").
+std::vector<study::Figure> make_psf_figures(const std::vector<uint32_t>& equal_time_spp);
+// The id of the equal-time figure at the hashed filter's `spp` paths per pixel.
+std::string equal_time_figure_id(uint32_t spp);
 
 // Per scene (each appends its runs, findings and plots to its figure).
 void run_2014_fig2(const study::FigureRunner& fr, const PsfStudyParams& params, std::vector<study::Figure>* figures);

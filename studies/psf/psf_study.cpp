@@ -26,8 +26,9 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf) {
   doc.settings["vertex_set_resolution"] = psf.vertex_set_resolution;
   doc.settings["temporal_frames"] = psf.temporal_frames;
   doc.settings["eviction_frames"] = psf.eviction_frames;
-  doc.figures = make_psf_figures();
-  const PsfStudyParams params{o.time_s, o.seed, psf.max_spp};
+  doc.settings["equal_time_spp"] = psf.equal_time_spp;
+  doc.figures = make_psf_figures(psf.equal_time_spp);
+  const PsfStudyParams params{o.seed, psf.max_spp, psf.equal_time_spp};
   for (const std::string& name : setup.scene_names) {
     // One scene at a time: its geometry, acceleration structure and images are freed before the next.
     const study::PreparedScene scene = runner.prepare(study::SceneSpec{name, setup.width, setup.height}, reference);

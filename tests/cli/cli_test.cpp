@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -232,13 +233,14 @@ TEST_F(CliTest, StudyPcltWritesJsonHtmlAndEveryImage) {
 // fence, the hash table figures carry their data, and the page has the SVG plots.
 TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   const CliResult r = run("study psf --scenes bs_c --resolution 16x12 --time 0.05 --reference-time 0.2 --max-spp 4 "
-                          "--vertex-set-resolution 32x24 --temporal-frames 4 --eviction-frames 6 --no-exr --quiet -o sp");
+                          "--vertex-set-resolution 32x24 --temporal-frames 4 --eviction-frames 6 --equal-time-spp 1,2 --no-exr --quiet -o sp");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(read_all(dir_ / "sp/study.json"));
   EXPECT_EQ(json.at("study"), "psf");
   const std::string html = read_all(dir_ / "sp/study.html");
   for (const char* fig :
-       {"2014-fig2", "2014-fig3", "2014-fig4", "2014-fig7", "2014-sec2.3", "2021-fig1", "2021-fig4", "2021-fig10", "equal-time"}) {
+       {"2014-fig2", "2014-fig3", "2014-fig4", "2014-fig7", "2014-sec2.3", "2021-fig1", "2021-fig4", "2021-fig10", "equal-time-1spp",
+        "equal-time-2spp"}) {
     SCOPED_TRACE(fig);
     const auto& f = json.at("figures").at(fig);
     EXPECT_NE(html.find("id=\"" + std::string(fig) + "\""), std::string::npos);
@@ -286,8 +288,16 @@ TEST_F(CliTest, StudyPsfWritesJsonHtmlPlotsAndEveryImage) {
   }
   EXPECT_EQ(eviction.at(2).at("policy"), "stale");
   EXPECT_NE(html.find("<caption>"), std::string::npos);
-  const auto& equal_time = json.at("figures").at("equal-time").at("runs");
-  EXPECT_EQ(equal_time.back().at("label"), "PT + à-trous");
+  // Each equal-time figure: PT, the hashed filter for that many passes, the others for its time.
+  for (const int spp : {1, 2}) {
+    const auto& equal_time = json.at("figures").at(fmt::format("equal-time-{}spp", spp)).at("runs");
+    ASSERT_EQ(equal_time.size(), 4u);
+    EXPECT_EQ(equal_time.at(0).at("label"), "PT");
+    EXPECT_EQ(equal_time.at(1).at("label"), "PT + hashed");
+    EXPECT_EQ(equal_time.at(1).at("iterations"), spp);
+    EXPECT_EQ(equal_time.at(2).at("time_budget_s"), equal_time.at(1).at("time_s"));
+    EXPECT_EQ(equal_time.back().at("label"), "PT + à-trous");
+  }
 }
 
 // A pass longer than 2 s reports from inside once a second (progress_reporter.h): one pass of BPT
