@@ -71,6 +71,7 @@ const std::set<std::string> kOtherToolsOptions = {
     "--version",                 // gcc/cmake/nvcc --version
     "--no-install-recommends",   // apt-get install
     "--fuzz",                    // scripts/install-deps --fuzz (a script, not the pathspace binary)
+    "--render",                  // scripts/build --render, scripts/install-deps --render
     "--expt-relaxed-constexpr",  // nvcc
     "--fmad",                    // nvcc
     "--runs",                    // bench/cuda/cuda_filter_bench, bench/ray_replay_bench, bench/smallvcm/side_by_side.py
