@@ -2,11 +2,16 @@
 // studies/ (one folder per paper), which this file only dispatches to.
 #include "study_command.h"
 
+#include <fmt/format.h>
+
 #include "number_options.h"
+#include "pathspace/base/error.h"
 #include "pathspace/session/run_options.h"
+#if PATHSPACE_HAVE_STUDIES
 #include "studies/gallery/gallery.h"
 #include "studies/pclt/pclt_study.h"
 #include "studies/psf/psf_study.h"
+#endif
 
 namespace pathspace::cli {
 
@@ -82,9 +87,15 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
 }
 
 int run_study_command(const StudyCommandOptions& o) {
+#if PATHSPACE_HAVE_STUDIES
   if (o.study == "psf") return studies::run_psf_study(o.psf, o.psf_only);
   if (o.study == "gallery") return studies::run_gallery_study(o.gallery);
   return studies::run_pclt_study(o.pclt);
+#else
+  throw Error(fmt::format("this build has no studies, so no '{}' (scripts/render builds the renderer alone); "
+                          "scripts/build builds everything, or configure with -DPATHSPACE_STUDIES=ON",
+                          o.study));
+#endif
 }
 
 }  // namespace pathspace::cli
