@@ -37,6 +37,18 @@ void check_command_word(const CLI::App& app, int argc, char** argv) {
   throw UsageError("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")", "run 'pathspace --help' for usage");
 }
 
+// An empty value ("-r ''", "--resume ''", "--scenes ''") names nothing; the options' own code would
+// take it as "not given" and fall back to a default. Checked once here for every option that takes
+// values, in every parsed command.
+void check_no_empty_values(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_type_size_min() <= 0) continue;  // flags
+    for (const std::string& value : opt->results())
+      if (value.empty()) throw UsageError("option " + opt->get_name() + " has an empty value");
+  }
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App* s) { return s->parsed(); })) check_no_empty_values(*sub);
+}
+
 }  // namespace
 
 CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tracing renderer", "pathspace") {
@@ -50,6 +62,7 @@ CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tr
 void CliApp::parse(int argc, char** argv) {
   check_command_word(app, argc, argv);
   app.parse(argc, argv);
+  check_no_empty_values(app);
 }
 
 int CliApp::run() {

@@ -309,6 +309,16 @@ TEST_F(CliTest, LongPassReportsProgressFromInside) {
   EXPECT_NE(r.out.find("% of its work so far"), std::string::npos) << r.out;
 }
 
+// An empty value names nothing: a usage error, never the option's default (cli_app.cpp,
+// check_no_empty_values), for every command. (CLI11 drops empty items inside a list: "a,,b" is "a,b".)
+TEST_F(CliTest, EmptyOptionValuesAreUsageErrors) {
+  expect_usage_error("render cornell-box -r '' -s 1 -o x.exr", "--resolution has an empty value");
+  expect_usage_error("render cornell-box --resume '' -s 1", "--resume has an empty value");
+  expect_usage_error("render '' -s 1 -o x.exr", "has an empty value");
+  expect_usage_error("study psf --scenes '' -o st", "--scenes has an empty value");
+  expect_usage_error("compare a.exr '' ", "has an empty value");
+}
+
 TEST_F(CliTest, StudyMisuseIsAUsageError) {
   expect_usage_error("study psf --vertex-set-resolution 0x3 --quiet", "--vertex-set-resolution");
   expect_usage_error("study psf --max-spp 0 --quiet", "--max-spp");
