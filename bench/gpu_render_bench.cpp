@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "median.h"
 #include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/accel/accel.h"
 #include "pathspace/film/film.h"
@@ -31,12 +32,6 @@ namespace pathspace {
 namespace {
 
 constexpr int kWidth = 1920, kHeight = 1080;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 // A statistic's total over `passes` passes (the integrator reports per-pass means).
 double total(const Statistics& s, const char* name, uint32_t passes) {

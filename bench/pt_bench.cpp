@@ -5,11 +5,11 @@
 // (docs/hashed-filter.md), interleaved with plain PT passes, for the ratio of their times.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <vector>
 
+#include "median.h"
 #include "pathspace/accel/accel.h"
 #include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/integrators/pt/pt_settings.h"
@@ -49,11 +49,6 @@ std::unique_ptr<RenderSession> make_one_path_session(double photons_per_pixel, b
                                                  std::shared_ptr<const Accel>(std::shared_ptr<void>(), &accel), config);
   session->run(RunLimit::for_passes(1));  // the first pass allocates the table and buffers
   return session;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 // One iteration = one pass each of plain PT, PT + hashed filter, and PT + hashed filter + caustic

@@ -23,10 +23,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
-
-namespace {
-
 // One equal-time figure: the hashed filter for `spp` passes, then the others for its time.
 void run_equal_time_at(const study::FigureRunner& fr, uint32_t spp, std::vector<study::Figure>* figures) {
   study::Figure& f = study::find_figure(figures, equal_time_figure_id(spp));
