@@ -54,7 +54,7 @@ void DeviceCausticMap::build(const SceneView& scene, const BvhTracer& tracer, ui
   view_.grid.records = records_.data();
   view_.grid.counters = nullptr;  // gathers only read
   if (map.grid.occupancy.words) {
-    occupancy_.upload(map.grid.occupancy.words, size_t(map.grid.occupancy.bit_mask) / 64 + 1);
+    occupancy_.upload(map.grid.occupancy.words, map.grid.occupancy.word_count());
     view_.grid.occupancy.words = occupancy_.data();
   }
   view_.photons = in_cells_.data();

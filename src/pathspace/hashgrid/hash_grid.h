@@ -144,7 +144,7 @@ class HashGrid {
     const size_t bits = slots_.size() * std::bit_ceil(size_t(config_.occupancy_bits_per_slot));
     PS_CHECK(bits <= (size_t(1) << 32));
     occupancy_bit_mask_ = uint32_t(bits - 1);
-    occupancy_.assign(std::max<size_t>(1, bits / 64), 0);
+    occupancy_.assign(CellOccupancy{nullptr, occupancy_bit_mask_}.word_count(), 0);
     for (const GridSlot& slot : slots_) {
       if (slot.key == kEmptyCellKey) continue;
       const uint32_t bit = CellOccupancy::bit_of(hash_cell_key(slot.key), occupancy_bit_mask_);

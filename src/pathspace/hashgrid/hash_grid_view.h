@@ -4,6 +4,7 @@
 // The owning host class is HashGrid (hash_grid.h); this view is what kernels receive.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "pathspace/hashgrid/grid_cell.h"
@@ -44,6 +45,7 @@ struct CellOccupancy {
   uint32_t bit_mask = 0;            // bits - 1 (power of two)
 
   PS_HD static uint32_t bit_of(uint64_t key_hash, uint32_t bit_mask) { return uint32_t(key_hash >> 32) & bit_mask; }
+  PS_HD size_t word_count() const { return size_t(bit_mask) / 64 + 1; }
   PS_HD bool may_hold(uint64_t key_hash) const {
     if (!words) return true;
     const uint32_t bit = bit_of(key_hash, bit_mask);
