@@ -23,6 +23,7 @@
 #include "pathspace/film/film.h"
 #include "pathspace/gpu/cuda_pt_integrator.h"
 #include "pathspace/gpu/gpu_info.h"
+#include "pathspace/gpu/wavefront_stages.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
@@ -57,7 +58,8 @@ GpuRun run_gpu(const Scene& scene, BenchFilter bench_filter, gpu::CudaPtPipeline
     filter = FilterChoice{"hashed", settings};
   }
   const IntegratorContext context{scene, accel, 1, filter};
-  auto integrator = gpu::make_cuda_pt_integrator(context, PtSettings{}, pipeline);
+  // Both pipelines without camera-side branches, which the wavefront does not trace: the rows compare.
+  auto integrator = gpu::make_cuda_pt_integrator(context, without_camera_branches(PtSettings{}), pipeline);
   Film film(scene.camera.width, scene.camera.height);
   PathCounters counters;
   uint32_t passes = 0;

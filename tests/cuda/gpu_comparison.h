@@ -12,6 +12,7 @@
 #include "pathspace/film/film.h"
 #include "pathspace/gpu/cuda_pt_integrator.h"
 #include "pathspace/gpu/gpu_info.h"
+#include "pathspace/gpu/wavefront_stages.h"
 #include "pathspace/integrators/pt/pt_settings.h"
 #include "support/integrator_comparison.h"
 
@@ -44,8 +45,9 @@ inline void expect_gpu_matches_cpu(const Scene& scene, const RenderConfig& cpu_c
 inline void expect_pipelines_agree(const Scene& scene, const FilterChoice& filter) {
   const Accel accel(scene);
   const IntegratorContext context{scene, accel, 5, filter};
-  auto mega = gpu::make_cuda_pt_integrator(context, PtSettings{}, gpu::CudaPtPipeline::megakernel);
-  auto wave = gpu::make_cuda_pt_integrator(context, PtSettings{}, gpu::CudaPtPipeline::wavefront);
+  const PtSettings settings = without_camera_branches(PtSettings{});
+  auto mega = gpu::make_cuda_pt_integrator(context, settings, gpu::CudaPtPipeline::megakernel);
+  auto wave = gpu::make_cuda_pt_integrator(context, settings, gpu::CudaPtPipeline::wavefront);
   Film a(scene.camera.width, scene.camera.height), b(scene.camera.width, scene.camera.height);
   PathCounters ca, cb;
   for (uint32_t pass = 0; pass < 4; ++pass) {

@@ -39,6 +39,8 @@ TEST_P(FilterNone, EqualsPlainPathTracing) {
   pt.selection.n = c.n;
   pt.selection.max_vertices = c.n;
   pt.selection.split_layers = c.split_layers;
+  // One path, not its branches at glass: those are another estimator (camera_branches_test.cpp).
+  pt.selection.camera_splits = 0;
   const RenderConfig plain = pt_config(3, pt);
   // Every path through the vertex buffer and the resolve step, filtered by nothing.
   RenderConfig buffered = plain;

@@ -20,6 +20,7 @@ TEST(PtUnsplitPaths, SameRaysAndValuesAsTheSplitPath) {
     const Accel accel(scene);
     const SceneView view = scene.view();
     PtSettings split;  // the hashed filter's default: split at the first diffuse vertex
+    split.selection.camera_splits = 0;  // one path, not its branches (camera_branches_test.cpp)
     PtSettings plain;
     plain.selection.mode = VertexSelectionMode::none;
     double largest = 0.0;

@@ -44,7 +44,9 @@ struct VisibilityProbes {
   PS_HD bool any() const { return delta_count > 0 || open_ray; }
 };
 
-inline constexpr int kMaxPathRecords = kMaxSelectedVertices * kMaxBsdfLayers;
+// Room for two selected vertices in each of four camera-side branches (two splits), or for the
+// most vertices one path may select.
+inline constexpr int kMaxPathRecords = 2 * kMaxSelectedVertices * kMaxBsdfLayers;
 
 struct PathSample {
   Rgb prefix;

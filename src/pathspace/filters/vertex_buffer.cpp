@@ -7,7 +7,7 @@ namespace pathspace {
 int records_per_path(const VertexSelection& s) {
   if (s.mode == VertexSelectionMode::none) return 0;
   const int vertices = s.mode == VertexSelectionMode::all ? min_int(s.max_vertices, kMaxSelectedVertices) : 1;
-  return vertices * (s.split_layers ? kMaxBsdfLayers : 1);
+  return (vertices << s.camera_splits) * (s.split_layers ? kMaxBsdfLayers : 1);
 }
 
 void VertexBuffer::resize(size_t paths, int records_per_path) {

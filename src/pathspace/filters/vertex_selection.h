@@ -9,6 +9,8 @@
 namespace pathspace {
 
 inline constexpr int kMaxSelectedVertices = 4;
+// At most this many camera-side splits at smooth glass per path (VertexSelection::camera_splits).
+inline constexpr int kMaxCameraSplits = 3;
 
 // none: no filter, so no vertex is split off and the path's value is summed as it goes (plain path
 // tracing; not an option: integrators set it when no filter is active).
@@ -20,6 +22,12 @@ struct VertexSelection {
   int max_vertices = 2;        // all: at most this many per path (<= kMaxSelectedVertices)
   float min_roughness = 0.1f;  // Phong exponent 90 ~ 0.15, Lambert = 1
   bool split_layers = true;    // one average per material layer (sec. 3.1.2); false: one merged layer
+  // Before its first selectable vertex a path follows both the reflected and the refracted branch
+  // at smooth glass, up to this many times (pt_kernel.h, pt_continue_path): each branch ends in a
+  // selected vertex of its own, so what is seen in and through glass is filtered, not a random pick
+  // between the two per pixel. A path then holds up to 2^camera_splits branches' records. Two
+  // splits: into glass and out again (one split leaves the internal reflections' dark speckle).
+  int camera_splits = 2;
 };
 
 }  // namespace pathspace

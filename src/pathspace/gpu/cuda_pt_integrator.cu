@@ -114,7 +114,12 @@ class CudaPtIntegrator final : public Integrator {
     }
     image_.resize(pixels_);
     counters_.resize(1);
-    if (pipeline_ == CudaPtPipeline::wavefront) wavefront_.emplace(pixels_);
+    if (pipeline_ == CudaPtPipeline::wavefront) {
+      // Its paths are states in queues, one per pixel: branches of one path would need queues of their own.
+      if (settings_.selection.mode != VertexSelectionMode::none && settings_.selection.camera_splits > 0)
+        throw Error("the wavefront pipeline does not trace camera-side branches (--psf-camera-splits); use the megakernel");
+      wavefront_.emplace(pixels_);
+    }
     host_image_.resize(pixels_);
   }
 

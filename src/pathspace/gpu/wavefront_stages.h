@@ -20,6 +20,14 @@
 
 namespace pathspace {
 
+// The wavefront keeps one path state per pixel, so it traces no camera-side branches
+// (VertexSelection::camera_splits; CudaPtIntegrator refuses them): what is compared with it, or
+// timed beside it, is traced without them.
+inline PtSettings without_camera_branches(PtSettings s) {
+  s.selection.camera_splits = 0;
+  return s;
+}
+
 // A queue of path indices in memory the stages share; `count` is advanced atomically.
 struct PathQueue {
   uint32_t* paths = nullptr;

@@ -77,4 +77,15 @@ PS_INLINE bool bsdf_has_non_delta(const Material& m) {
   }
 }
 
+// Whether both lobes of a smooth dielectric can be followed here, each as its own branch: a material
+// with only delta lobes, reflection and refraction both possible at wo. *p_reflect is the reflection
+// lobe's probability: bsdf_sample takes reflection for u_lobe below it, refraction above, and the
+// sample's weight times its pdf_w is that branch's weight when both branches are traced.
+PS_INLINE bool bsdf_delta_branches(const Material& m, const Vec3& wo, float* p_reflect) {
+  if (m.type != MaterialType::standard || !(m.ior > 0.f) || standard::has_non_delta(m)) return false;
+  const standard::LobeProbabilities p = standard::lobe_probabilities(m, wo);
+  *p_reflect = p.reflect;
+  return p.reflect > 0.f && p.refract > 0.f;
+}
+
 }  // namespace pathspace

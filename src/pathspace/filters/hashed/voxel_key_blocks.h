@@ -22,15 +22,18 @@ class VoxelKeyBlocks {
   // Fills the next block: lanes [0, n) of batch() hold slot(j)'s key and hash. 0 once all are done.
   int next() {
     int n = 0;
-    // Without a branch per slot: every slot is written to the next lane, which only advances when
-    // the slot holds a record (a quarter of second-bounce paths have none, in no predictable
-    // pattern, and a mispredicted branch cost more than the copy).
+    // Without a branch per record: every slot up to the path's last record (at least one) is
+    // written to the next lane, which only advances when the slot holds a record (a quarter of
+    // second-bounce paths have none, in no predictable pattern, and a mispredicted branch cost more
+    // than the copy). Slots past the last record are not read: with camera-side branches
+    // (VertexSelection::camera_splits) most of a path's slots are empty.
     while (n < kVoxelKeyBatchSize && path_ < end_) {
       const size_t i = b_.slot(path_, record_);
       batch_.set_input(n, key_input(b_, i), jitter_seed(pass_hash_, i));
       slot_[n] = i;
-      n += record_ < b_.count[path_] ? 1 : 0;
-      if (++record_ == b_.records_per_path) {
+      const int count = b_.count[path_];
+      n += record_ < count ? 1 : 0;
+      if (++record_ >= (count > 1 ? count : 1)) {
         record_ = 0;
         ++path_;
       }

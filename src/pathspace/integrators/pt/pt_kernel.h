@@ -134,6 +134,10 @@ struct PtPathState {
   int caustic_chain = 0;
   int selected = 0, diffuse_index = 0;
   int segments = 1;          // of the ray being traced (camera ray = segment 1)
+  // Camera-side branches (VertexSelection::camera_splits): bit k of split_code picks refraction (1)
+  // or reflection (0) at the path's k-th split; `splits` counts the splits passed so far.
+  uint32_t split_code = 0;
+  int splits = 0;
   // Next event estimation waiting for its shadow ray: added if the ray is unoccluded.
   bool shadow_pending = false;
   int shadow_vertex = -1;    // -1: shadow_value[0] adds to open[shadow_owner] / the prefix; k: sets open[k].nee[l]
@@ -148,7 +152,8 @@ struct PtPathState {
 enum class PtNext : uint8_t { extend, end };
 
 // `open`: room for kMaxSelectedVertices selected vertices (written when selected, so not cleared).
-PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* open) {
+// `split_code`: which branch to follow at each camera-side split (PtPathState::split_code).
+PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* open, uint32_t split_code = 0) {
   s->ray = ray;
   s->open = open;
   s->prefix = Rgb();
@@ -161,6 +166,8 @@ PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* o
   s->path_distance = s->prev_distance = 0.f;
   s->caustic_chain = s->selected = s->diffuse_index = 0;
   s->segments = 1;
+  s->split_code = split_code;
+  s->splits = 0;
   s->shadow_pending = false;
 }
 
@@ -291,10 +298,22 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     }
   }
 
-  // Continue by BSDF sampling.
+  // Continue by BSDF sampling. At smooth glass before the path's first selectable vertex the
+  // branch code picks the lobe instead (pt_continue_path traces the other branch as well); the
+  // branch then keeps its lobe's probability as a weight instead of dividing by it.
   BsdfSample bs;
   const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
-  if (!bsdf_sample(mat, wo, sampler.at(dims::vertex(v, dims::kLobe)), ub, TransportMode::radiance, &bs)) return PtNext::end;
+  float u_lobe = sampler.at(dims::vertex(v, dims::kLobe));
+  float p_reflect = 0.f;
+  const bool branch = selection.mode != VertexSelectionMode::none && s->diffuse_index == 0 &&
+                      s->splits < selection.camera_splits && bsdf_delta_branches(mat, wo, &p_reflect);
+  if (branch) {
+    const bool refract = ((s->split_code >> s->splits) & 1u) != 0u;
+    u_lobe = refract ? p_reflect + 0.5f * (1.f - p_reflect) : 0.5f * p_reflect;
+    ++s->splits;
+  }
+  if (!bsdf_sample(mat, wo, u_lobe, ub, TransportMode::radiance, &bs)) return PtNext::end;
+  if (branch) bs.weight *= bs.pdf_w;
   s->abs_beta *= bs.weight;
   if (caustics) s->caustic_chain = gathers ? 1 : (s->caustic_chain != 0 ? 2 : 0);
   if (sel) {
@@ -336,25 +355,29 @@ PS_INLINE void pt_resolve_shadow(PtPathState* s, bool occluded) {
   }
 }
 
-// The ended path as a PathSample: its prefix and its selected vertices' records.
-PS_INLINE void pt_finish(PtPathState* s, PathSample* out) {
-  out->prefix = s->prefix;
-  out->count = 0;
+// The ended path as a PathSample: its prefix and its selected vertices' records. With `append` they
+// are added to what `out` holds already (another branch of the same camera path).
+PS_INLINE void pt_finish(PtPathState* s, PathSample* out, bool append = false) {
+  if (append) {
+    out->prefix += s->prefix;
+  } else {
+    out->prefix = s->prefix;
+    out->count = 0;
+  }
   pt_detail::close_vertices(s->open, s->selected, out);
 }
 
-// The path whose camera ray `ray` was traced already: `found` says whether it hit, at `first`. The
-// CPU traces a chunk's camera rays together as one coherent stream (PtIntegrator), then continues
-// each path here, one ray at a time, exactly as pt_trace_path would.
+namespace pt_detail {
+// One branch of a camera path (its split code) from its traced camera ray; appends its prefix and
+// records to *out when `append`. Returns the number of camera-side splits it passed.
 template <typename Tracer>
-PS_HD void pt_continue_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray, bool found,
-                            const SurfaceHit& first, const PtSettings& settings, PathCounters* counters, PathSample* out,
-                            const VisibilityProbes& probes = {}, bool query_only = false,
-                            const CausticMapView* caustics = nullptr) {
-  pt_detail::OpenVertex open[kMaxSelectedVertices];
+PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const Ray& ray, bool found,
+                          const SurfaceHit& first, const PtSettings& settings, PathCounters* counters, PathSample* out,
+                          const VisibilityProbes& probes, bool query_only, const CausticMapView* caustics, uint32_t split_code,
+                          bool append) {
+  OpenVertex open[kMaxSelectedVertices];
   PtPathState s;
-  pt_begin(&s, ray, open);
-  ++counters->rays;
+  pt_begin(&s, ray, open, split_code);
   SurfaceHit hit = first;
   for (;;) {
     if (!found) {
@@ -367,7 +390,46 @@ PS_HD void pt_continue_path(const SceneView& scene, const Tracer& tracer, const 
     ++counters->rays;
     found = tracer.intersect(s.ray, &hit);
   }
-  pt_finish(&s, out);
+  pt_finish(&s, out, append);
+  return s.splits;
+}
+}  // namespace pt_detail
+
+// The path whose camera ray `ray` was traced already: `found` says whether it hit, at `first`. The
+// CPU traces a chunk's camera rays together as one coherent stream (PtIntegrator), then continues
+// each path here, one ray at a time, exactly as pt_trace_path would.
+// With camera splits (VertexSelection::camera_splits) every branch of the path is traced, depth
+// first: branch `code` passed `taken` splits and chose by bits [from, taken) the reflection, so each
+// of those bits set gives a branch not traced yet. Each branch repeats the same sampler dimensions
+// after the camera ray (the branches are correlated, each is unbiased) and re-traces the segments
+// before its own splits; the camera ray is traced and counted once.
+template <typename Tracer>
+PS_HD void pt_continue_path(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, Ray ray, bool found,
+                            const SurfaceHit& first, const PtSettings& settings, PathCounters* counters, PathSample* out,
+                            const VisibilityProbes& probes = {}, bool query_only = false,
+                            const CausticMapView* caustics = nullptr) {
+  ++counters->rays;
+  // Branches waiting: at most d (d + 1) / 2 of them for d splits.
+  constexpr int kWaiting = kMaxCameraSplits * (kMaxCameraSplits + 1) / 2;
+  uint32_t codes[kWaiting];
+  int from[kWaiting];
+  codes[0] = 0u;
+  from[0] = 0;
+  int pending = 1;
+  bool append = false;
+  while (pending > 0) {
+    --pending;
+    const uint32_t code = codes[pending];
+    const int first_free = from[pending];
+    const int taken = pt_detail::pt_trace_branch(scene, tracer, sampler, ray, found, first, settings, counters, out, probes,
+                                                 query_only, caustics, code, append);
+    append = true;
+    for (int k = taken - 1; k >= first_free; --k) {
+      codes[pending] = code | (1u << k);
+      from[pending] = k + 1;
+      ++pending;
+    }
+  }
 }
 
 // `probes`: the visibility weight's rays at each selected vertex (none by default). `query_only`: the

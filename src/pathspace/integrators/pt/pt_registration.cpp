@@ -1,5 +1,9 @@
 // `--integrator pt`: the options of path tracing and its registration. The vertex selection
 // options say where a path is split for path space filtering (2021 paper, sec. 4 and fig. 10).
+#include <fmt/format.h>
+
+#include "pathspace/filters/path_sample.h"
+#include "pathspace/filters/vertex_buffer.h"
 #include "pathspace/integrators/common/common_options.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/integrators/pt/pt_integrator.h"
@@ -31,8 +35,17 @@ OptionTable<PtSettings> pt_options() {
            "Vertices smoother than this are not selected");
   t.flag("psf-no-layers", [](S& s) -> bool& { return s.selection.split_layers; }, false,
          "One average per vertex instead of one per material layer", "2021 paper, sec. 3.1.2");
+  t.number("psf-camera-splits", [](S& s) -> int& { return s.selection.camera_splits; }, 0, kMaxCameraSplits,
+           "With --filter: at smooth glass before the first selected vertex, follow both reflection and refraction, "
+           "up to N times per path, each branch filtered (no speckle in and through glass)",
+           "docs/hashed-filter.md, camera-side branches");
   t.check([](const S& s) {
     if (!s.nee && !s.bsdf_sampling) throw OptionError("--no-nee and --no-bsdf-sampling together would render black");
+    const int records = records_per_path(s.selection);
+    if (records > kMaxPathRecords)
+      throw OptionError(fmt::format("--psf-camera-splits {} with this vertex selection needs {} records per path, more than the {} "
+                                    "a path holds: lower --psf-camera-splits or --psf-max-vertices, or add --psf-no-layers",
+                                    s.selection.camera_splits, records, kMaxPathRecords));
   });
   return t;
 }
