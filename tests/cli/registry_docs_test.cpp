@@ -1,6 +1,6 @@
 // The integrator and filter options exist in one place, the registry; these tests check that its
 // three views agree: `pathspace render --help`, `pathspace info --integrators --json` and the
-// generated tables of docs/cli.md (`pathspace info --integrators --markdown`).
+// generated tables of docs/options.md (`pathspace info --integrators --markdown`).
 #include <set>
 #include <string>
 
@@ -51,14 +51,14 @@ TEST(RegistryDocs, IntegratorsInRenderHelpAreRegistered) {
   }
 }
 
-// docs/cli.md holds the generated block verbatim: regenerate it with
+// docs/options.md holds the generated block verbatim: regenerate it with
 // `pathspace info --integrators --markdown` after changing a registration.
-TEST(RegistryDocs, CliDocHoldsTheGeneratedTables) {
-  const std::string doc = read_file(PATHSPACE_SOURCE_DIR "/docs/cli.md");
+TEST(RegistryDocs, OptionsDocHoldsTheGeneratedTables) {
+  const std::string doc = read_file(PATHSPACE_SOURCE_DIR "/docs/options.md");
   const std::string generated = run_binary("info --integrators --markdown");
   ASSERT_FALSE(generated.empty());
   EXPECT_NE(doc.find(generated), std::string::npos)
-      << "docs/cli.md does not contain the output of `pathspace info --integrators --markdown`; paste it between the "
+      << "docs/options.md does not contain the output of `pathspace info --integrators --markdown`; paste it between the "
          "generated-block markers";
 }
 
