@@ -1,5 +1,6 @@
 #include "cli_app.h"
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -82,6 +83,9 @@ std::string CliApp::command_name() const {
 }
 
 int run_cli(int argc, char** argv) {
+  // A closed pipe on stdout or stderr (`pathspace render ... | head -1`) is an error of the write,
+  // not a signal that kills the render before it writes its outputs: progress then goes quiet.
+  std::signal(SIGPIPE, SIG_IGN);
   CliApp cli;
   try {
     cli.parse(argc, argv);

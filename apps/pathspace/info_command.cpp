@@ -163,9 +163,9 @@ void print_checkpoint(const std::string& path, bool json) {
 }
 
 // `info ARG` describes the file ARG when there is one, else the built-in scene ARG names.
-bool names_a_file(const std::string& arg) {
+bool names_a_file(const std::string& arg) {  // anything on disk: reading it says what is wrong with it
   std::error_code ec;
-  return std::filesystem::is_regular_file(arg, ec);
+  return std::filesystem::exists(arg, ec);
 }
 
 }  // namespace

@@ -43,12 +43,18 @@ void ProgressReporter::in_pass(const PassProgress& p) {
   const std::string text = fmt::format("pass {}: {:.0f}% of its work so far, {} in the pass", p.pass, 100.0 * p.fraction,
                                        format_duration(p.seconds));
   if (tty_) {
-    fmt::print(out_, "\r{}\x1b[K", text);
+    emit("\r" + text + "\x1b[K");
     drew_ = true;
   } else {
-    fmt::print(out_, "{}\n", text);
+    emit(text + "\n");
   }
-  std::fflush(out_);
+}
+
+// A progress line that cannot be written (a closed pipe: `render ... 2>&1 | head -1`; SIGPIPE is
+// ignored, cli_app.cpp) mutes the reporter: the render goes on and writes its outputs.
+void ProgressReporter::emit(const std::string& text) {
+  if (quiet_) return;
+  if (std::fputs(text.c_str(), out_) < 0 || std::fflush(out_) != 0) quiet_ = true;
 }
 
 void ProgressReporter::update(const RenderProgress& p) {
@@ -65,14 +71,12 @@ void ProgressReporter::update(const RenderProgress& p) {
   if (tty_) {
     constexpr int kBarWidth = 30;
     const int filled = std::clamp(static_cast<int>(p.fraction * kBarWidth + 0.5), 0, kBarWidth);
-    fmt::print(out_, "\r[{}{}] {}\x1b[K", std::string(size_t(filled), '#'), std::string(size_t(kBarWidth - filled), '.'),
-               numbers);
+    emit(fmt::format("\r[{}{}] {}\x1b[K", std::string(size_t(filled), '#'), std::string(size_t(kBarWidth - filled), '.'), numbers));
     drew_ = true;
   } else if (percent + 1e-9 >= next_plain_percent_) {
-    fmt::print(out_, "{}\n", numbers);
+    emit(numbers + "\n");
     while (next_plain_percent_ <= percent + 1e-9) next_plain_percent_ += 25;
   }
-  std::fflush(out_);
 }
 
 void ProgressReporter::finish() {
@@ -85,8 +89,7 @@ void ProgressReporter::finish() {
     watcher_.join();
   }
   if (quiet_ || !drew_) return;
-  fmt::print(out_, "\n");
-  std::fflush(out_);
+  emit("\n");
   drew_ = false;
 }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "pathspace/session/render_session.h"
@@ -32,6 +33,7 @@ class ProgressReporter {
 
  private:
   void in_pass(const PassProgress& p);
+  void emit(const std::string& text);
   void tick(const RenderSession& session);
 
   std::mutex mutex_;  // update() and the watcher print in turn

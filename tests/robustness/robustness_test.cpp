@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -172,6 +173,44 @@ TEST_F(Robustness, CompareRefusesToOverwriteAnInput) {
   expect("compare a.exr b.exr --error-map ./a.exr", 2, {"--error-map './a.exr'", "image 'a.exr'"});
   fs::create_symlink("b.exr", dir.file("ref.exr"));
   expect("compare a.exr b.exr --error-map ref.exr", 2, {"--error-map 'ref.exr'", "reference 'b.exr'"});
+}
+
+// Every input passes one check (base/regular_file.h): a FIFO is refused without waiting for a
+// writer (it used to block in open(), deaf to SIGTERM), a device or a folder is named as such
+// instead of being read without end or reported missing.
+TEST_F(Robustness, InputsThatAreNotRegularFilesAreNamedAsSuch) {
+  for (const char* fifo : {"f.pbrt", "f.exr", "f.ckpt", "f.mtl"}) ASSERT_EQ(::mkfifo(dir.file(fifo).c_str(), 0600), 0) << fifo;
+  write("m.obj", "mtllib f.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  expect(std::string("render f.pbrt -o a.exr") + kQuick, 1, {"f.pbrt: is a FIFO (named pipe), not a regular file"});
+  expect(std::string("render m.obj -o a.exr") + kQuick, 1, {"f.mtl: is a FIFO"});
+  expect(std::string("render --resume f.ckpt -o a.exr") + kQuick, 1, {"f.ckpt: is a FIFO"});
+  expect("compare f.exr f.exr", 1, {"f.exr: is a FIFO"});
+  ASSERT_EQ(::mkfifo(dir.file("f.bin").c_str(), 0600), 0);
+  write("b.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "f.bin", "byteLength": 4}]})");
+  expect(std::string("render b.gltf -o a.exr") + kQuick, 1, {"f.bin: is a FIFO"});
+  expect("info f.pbrt", 1, {"f.pbrt: is a FIFO"});
+  expect("compare /dev/zero /dev/zero", 1, {"/dev/zero: is a character device, not a regular file"});
+  expect(std::string("render /dev/zero -o a.exr") + kQuick, 1, {"/dev/zero: is a character device"});
+  fs::create_directory(dir.file("scenes.pbrt"));
+  expect(std::string("render scenes.pbrt -o a.exr") + kQuick, 1, {"scenes.pbrt: is a directory, not a file"});
+  expect(std::string("render . -o a.exr") + kQuick, 1, {".: is a directory, not a file"});
+}
+
+// An output is renamed into place, which would replace a device node by a regular file: refused.
+TEST_F(Robustness, DeviceNodesAreNotReplacedByOutputs) {
+  expect(std::string("render -o a.exr --stats /dev/null") + kQuick, 1, {"cannot write '/dev/null': it is a character device"});
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+// Progress into a closed pipe (`render ... 2>&1 | head -c 1`) no longer kills the render by SIGPIPE:
+// it goes quiet, and the render writes its outputs and exits 0.
+TEST_F(Robustness, AClosedProgressPipeKeepsTheOutputs) {
+  const std::string cmd = "cd '" + dir.path.string() + "' && { '" PATHSPACE_BINARY
+                          "' render -r 32x32 -s 64 -o a.exr --stats s.json; echo $? > rc.txt; } 2>&1 | head -c 1 > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(read_all(dir.file("rc.txt")), "0\n");
+  EXPECT_TRUE(fs::is_regular_file(dir.file("a.exr")));
+  EXPECT_TRUE(fs::is_regular_file(dir.file("s.json")));
 }
 
 // Replacing an existing output keeps its mode, and a symlink keeps pointing at the file it names,

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "pathspace/base/error.h"
+#include "pathspace/base/regular_file.h"
 
 namespace pathspace {
 
@@ -40,7 +41,7 @@ class Writer {
 
 class Reader {
  public:
-  explicit Reader(const std::string& path) : path_(path), in_(path, std::ios::binary | std::ios::ate) {
+  explicit Reader(const std::string& path) : path_(path), in_((require_regular_file(path), path), std::ios::binary | std::ios::ate) {
     if (!in_) throw Error("cannot open the vertex buffer file " + path);
     size_ = uint64_t(in_.tellg());
     in_.seekg(0);

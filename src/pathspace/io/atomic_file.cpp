@@ -73,7 +73,18 @@ void check_parent_folder(const std::string& path) {
 void check_target(const std::string& path) {
   if (path.empty()) throw Error("empty output file name");
   check_parent_folder(path);
-  if (fs::is_directory(path)) throw Error("cannot write '" + path + "': it is a folder");
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);  // through a symlink: what it points to
+  if (fs::is_directory(st)) throw Error("cannot write '" + path + "': it is a folder");
+  // The rename that puts a finished output in place would replace a device node (/dev/null) or a
+  // FIFO by a regular file: such a target is refused, before the render.
+  const char* kind = fs::is_character_file(st) ? "a character device"
+                     : fs::is_block_file(st)   ? "a block device"
+                     : fs::is_fifo(st)         ? "a FIFO (named pipe)"
+                     : fs::is_socket(st)       ? "a socket"
+                                               : nullptr;
+  if (kind)
+    throw Error("cannot write '" + path + "': it is " + kind + "; outputs are written as regular files (leave the option out instead)");
 }
 
 void rename_into_place(const std::string& temp, const std::string& path) {
@@ -89,7 +100,8 @@ void rename_into_place(const std::string& temp, const std::string& path) {
 void write_bytes_synced(const std::string& file, const void* data, size_t size, const std::string& shown_as,
                         const std::string& replaced) {
   std::FILE* f = std::fopen(file.c_str(), "wb");
-  if (!f) throw Error(shown_as + ": cannot create temporary file '" + file + "': " + std::strerror(errno));
+  // Errors name the output, not its temporary name (the user never gave that one).
+  if (!f) throw Error("cannot write '" + shown_as + "': " + std::strerror(errno));
   int err = 0;  // first errno seen
   auto check = [&](bool ok) {
     if (!ok && err == 0) err = errno ? errno : EIO;
@@ -100,7 +112,7 @@ void write_bytes_synced(const std::string& file, const void* data, size_t size, 
   check(std::fflush(f) == 0);
   check(fsync(fileno(f)) == 0);
   check(std::fclose(f) == 0);
-  if (err != 0) throw Error(shown_as + ": write failed: " + std::strerror(err));
+  if (err != 0) throw Error("cannot write '" + shown_as + "': " + std::strerror(err));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pathspace/base/error.h"
+#include "pathspace/io/file_bytes.h"
 #include "pathspace/scene/scene_validation.h"
 
 namespace pathspace {
@@ -94,11 +95,7 @@ CameraPath parse_camera_path(const std::string& text, const std::string& name) {
 }
 
 CameraPath read_camera_path(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(FileLoc{path}, "cannot open the camera path");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_camera_path(text.str(), path);
+  return parse_camera_path(read_file_as_stored(path), path);
 }
 
 }  // namespace pathspace

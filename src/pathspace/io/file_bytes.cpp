@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "pathspace/base/error.h"
+#include "pathspace/base/regular_file.h"
 
 namespace pathspace {
 
@@ -62,13 +63,7 @@ std::string gunzip(const std::string& path, uint64_t compressed_size) {
 }  // namespace
 
 std::string read_file_bytes(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(FileLoc{path}, "file not found");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(FileLoc{path}, "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string bytes = std::move(ss).str();
+  std::string bytes = read_file_as_stored(path);
   if (bytes.size() >= 2 && uint8_t(bytes[0]) == 0x1f && uint8_t(bytes[1]) == 0x8b) return gunzip(path, bytes.size());
   return bytes;
 }
@@ -78,15 +73,7 @@ void set_decompression_limit(double ratio, uint64_t floor_bytes) {
   decompression_limit().floor_bytes = floor_bytes;
 }
 
-std::string read_file_as_stored(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": cannot read: is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error(path + ": read error");
-  return bytes;
-}
+std::string read_file_as_stored(const std::string& path) { return read_regular_file(path); }
 
 std::string scene_file_extension(const std::string& path) {
   std::filesystem::path p(path);

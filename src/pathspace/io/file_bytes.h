@@ -1,10 +1,13 @@
-// Reading whole input files into memory for the scene parsers (PLY, pbrt, OBJ). Gzip files are
+// Reading whole input files into memory for the scene parsers (PLY, pbrt, OBJ) and the images,
+// checkpoints and hashes. Gzip files are
 // recognised by their magic bytes (not the name), so "mesh.ply.gz" and a gzip file without the
 // suffix both work. Failures are pathspace::Error naming the file.
 #pragma once
 
 #include <cstdint>
 #include <string>
+
+#include "pathspace/base/regular_file.h"  // require_regular_file, for readers with their own streams
 
 namespace pathspace {
 
@@ -21,7 +24,8 @@ inline constexpr double kDefaultMaxDecompressionRatio = 100.0;
 inline constexpr uint64_t kDefaultDecompressionFloorBytes = uint64_t(256) << 20;
 void set_decompression_limit(double ratio, uint64_t floor_bytes = kDefaultDecompressionFloorBytes);
 
-// The file's bytes as stored (images, checkpoints, content hashes). Errors: "PATH: cannot open: ...".
+// The file's bytes as stored (images, checkpoints, content hashes), after the check of
+// base/regular_file.h that every input file passes (no directory, FIFO, device or socket).
 std::string read_file_as_stored(const std::string& path);
 
 // Lower-case extension without the ".gz" suffix: "a/b.PLY.gz" -> ".ply".

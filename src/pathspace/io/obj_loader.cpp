@@ -29,8 +29,8 @@ Rgb rgb(const tinyobj::real_t* v) { return Rgb(float(v[0]), float(v[1]), float(v
 // without a line: list unknown statements with their lines, and fail at the first face that names
 // a vertex that does not exist (positive indices count from the file's first vertex, negative ones
 // back from the last vertex defined so far, 0 is invalid).
-void scan_statements(const std::string& path, LoadWarnings* w) {
-  std::ifstream in(path);
+void scan_statements(const std::string& path, const std::string& text, LoadWarnings* w) {
+  std::istringstream in(text);
   std::string line;
   int line_no = 0;
   int64_t vertices = 0;
@@ -139,16 +139,38 @@ Material obj_material(const tinyobj::material_t& mt, const std::string& path, Sc
   return m;
 }
 
+// Material files next to the OBJ, as tinyobjloader's MaterialFileReader finds them, but read through
+// read_file_bytes: its checks (no FIFO, no device) and gzip, with errors that name the file.
+class MtlReader final : public tinyobj::MaterialReader {
+ public:
+  explicit MtlReader(std::string folder) : folder_(std::move(folder)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* by_name,
+                  std::string* warning, std::string* error) override {
+    const std::string path = folder_ + name;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {  // as tinyobjloader: a missing library is a warning
+      *warning += "Material file [ " + name + " ] not found in a path : " + folder_ + "\n";
+      return false;
+    }
+    std::istringstream in(read_file_bytes(path));
+    tinyobj::LoadMtl(by_name, materials, &in, warning, error);
+    return true;
+  }
+
+ private:
+  std::string folder_;
+};
+
 }  // namespace
 
 void load_obj_into(const std::string& path, LoadWarnings* warnings, Scene* scene) {
-  scan_statements(path, warnings);
   std::string text = read_file_bytes(path);
+  scan_statements(path, text, warnings);
   drop_skin_weights(&text);
   std::istringstream in(text);
   // Material files next to the OBJ, as tinyobjloader's ObjReader::ParseFromFile finds them.
   const std::string folder = std::filesystem::path(path).parent_path().string();
-  tinyobj::MaterialFileReader mtl_reader(folder.empty() ? std::string() : folder + "/");
+  MtlReader mtl_reader(folder.empty() ? std::string() : folder + "/");
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;

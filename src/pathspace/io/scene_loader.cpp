@@ -92,7 +92,9 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
 
 bool names_scene_file(const std::string& name) {
   std::error_code ec;
-  return is_scene_file(name) || (!find_builtin_scene(name) && std::filesystem::is_regular_file(name, ec));
+  // Anything on disk that is not a built-in scene's name: the loader then says what is wrong with it
+  // (a directory, a FIFO, a device) instead of "unknown scene".
+  return is_scene_file(name) || (!find_builtin_scene(name) && std::filesystem::exists(name, ec));
 }
 
 bool is_scene_parameter_name(const std::string& name) {
@@ -117,6 +119,7 @@ auto naming_the_file(const std::string& path, F&& load) -> decltype(load()) {
 
 Scene load_scene_file(const std::string& path, const SceneLoadOptions& options, std::vector<std::string>* warnings,
                       SceneFileSettings* settings) {
+  require_regular_file(path);  // a directory or FIFO is named as such, whatever its name ends with
   LoadWarnings w(warnings);
   const std::string ext = scene_file_extension(path);
   if (!options.defines.empty() && ext != ".xml")

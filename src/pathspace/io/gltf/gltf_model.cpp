@@ -33,9 +33,31 @@ bool keep_image_bytes(tinygltf::Image* image, const int index, std::string* err,
   return true;
 }
 
+// External buffers and images, read through read_file_as_stored: a FIFO or device named by a
+// uri is refused instead of blocking or filling memory (tinygltf's own reader opens anything).
+bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = read_file_as_stored(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const Error& e) {
+    *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+
+// Whether a referenced file exists, without opening it (tinygltf's own check opens it, which waits
+// for a writer when it is a FIFO).
+bool referenced_file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
 void parse(const std::string& path, tinygltf::Model* model, LoadWarnings* w) {
   const std::string bytes = read_file_bytes(path);
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file,
+                                              &tinygltf::WriteWholeFile, nullptr});
   loader.SetImageLoader(keep_image_bytes, model);
   std::string err, warn;
   const std::string folder = std::filesystem::path(path).parent_path().string();

@@ -1,0 +1,19 @@
+// The one check every input file of pathspace passes (io/file_bytes.h reads through it): what is
+// not a regular file is refused before a read could block on it (a FIFO is opened without
+// blocking, so a FIFO with no writer cannot hang the process deaf to SIGTERM) or run without end
+// (/dev/zero). Errors name the file and what it is: "PATH: file not found", "PATH: is a directory,
+// not a file", "PATH: is a FIFO (named pipe), not a regular file", a character or block device, a
+// socket, or "PATH: cannot open: <reason>".
+#pragma once
+
+#include <string>
+
+namespace pathspace {
+
+// The bytes of the regular file `path`, as stored.
+std::string read_regular_file(const std::string& path);
+
+// The check alone, for readers with streams of their own (the vertex buffer file's).
+void require_regular_file(const std::string& path);
+
+}  // namespace pathspace
