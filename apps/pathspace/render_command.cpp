@@ -65,8 +65,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->capture_default_str();
   cmd->add_option("-r,--resolution", o->resolution, run_option(RunOption::resolution).help)->type_name("WxH");
   cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
-  cmd->add_option("--camera-target", o->camera_target, "Scene files: point the camera looks at x,y,z (default: the scene centre)");
-  cmd->add_option("--camera-up", o->camera_up, "Scene files: camera up vector x,y,z (default 0,1,0)");
+  cmd->add_option("--camera-target", o->camera_target, "Scene files, with --camera-pos: point the camera looks at x,y,z (default: the scene centre)");
+  cmd->add_option("--camera-up", o->camera_up, "Scene files, with --camera-pos: camera up vector x,y,z (default 0,1,0)");
   cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(checked_real("fov", 0.01, 179.0));
   cmd->add_option("--lens-radius", o->lens_radius, "Thin lens radius in scene units for depth of field (0: pinhole; default: the scene's)")
       ->check(checked_real("lens-radius", 0.0, kMaxSceneCoordinate));

@@ -196,6 +196,16 @@ TEST_F(Robustness, InputsThatAreNotRegularFilesAreNamedAsSuch) {
   expect(std::string("render . -o a.exr") + kQuick, 1, {".: is a directory, not a file"});
 }
 
+// A UTF-8 byte-order mark is not an unknown directive; a camera target or up vector without a
+// position would be ignored (the scene's camera stays), so it is an error.
+TEST_F(Robustness, ByteOrderMarkAndCameraOptionsWithoutAPosition) {
+  write("bom.pbrt", std::string("\xEF\xBB\xBF") + kCamera + kLight + "Shape \"sphere\"\n");
+  expect(std::string("render bom.pbrt -o a.exr") + kQuick, 0, {}, {"a.exr"});
+  expect(std::string("render bom.pbrt -o a.exr --camera-up 0,0,1") + kQuick, 1, {"give --camera-pos too"});
+  expect(std::string("render bom.pbrt -o a.exr --camera-target 1,0,0") + kQuick, 1, {"give --camera-pos too"});
+  expect(std::string("render bom.pbrt -o a.exr --camera-pos 0,0,5 --camera-up 1,0,0") + kQuick, 0, {}, {"a.exr"});
+}
+
 // An output is renamed into place, which would replace a device node by a regular file: refused.
 TEST_F(Robustness, DeviceNodesAreNotReplacedByOutputs) {
   expect(std::string("render -o a.exr --stats /dev/null") + kQuick, 1, {"cannot write '/dev/null': it is a character device"});

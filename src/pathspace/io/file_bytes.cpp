@@ -64,7 +64,10 @@ std::string gunzip(const std::string& path, uint64_t compressed_size) {
 
 std::string read_file_bytes(const std::string& path) {
   std::string bytes = read_file_as_stored(path);
-  if (bytes.size() >= 2 && uint8_t(bytes[0]) == 0x1f && uint8_t(bytes[1]) == 0x8b) return gunzip(path, bytes.size());
+  if (bytes.size() >= 2 && uint8_t(bytes[0]) == 0x1f && uint8_t(bytes[1]) == 0x8b) bytes = gunzip(path, bytes.size());
+  // A UTF-8 byte-order mark (editors on Windows write one) is not the file's first statement; without
+  // it, columns in messages count as editors show them.
+  if (bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.erase(0, 3);
   return bytes;
 }
 

@@ -11,7 +11,8 @@
 
 namespace pathspace {
 
-// The file's bytes, gunzipped when the file starts with the gzip magic (1f 8b). A gzip file may
+// The file's bytes, gunzipped when the file starts with the gzip magic (1f 8b), without a leading
+// UTF-8 byte-order mark. A gzip file may
 // not decompress to more than the decompression limit below (an Error naming the file and the
 // limit), so a small file of blanks cannot take gigabytes of memory.
 std::string read_file_bytes(const std::string& path);

@@ -64,6 +64,9 @@ PerspectiveCamera make_file_camera(const Vec3& position, const Vec3& forward, co
 
 void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int width, int height, Scene* scene) {
   const bool place = o.camera_position.has_value() || frame_bounds;
+  // The scene's own camera stays where it is: a target or up vector alone would be ignored.
+  if (!place && (o.camera_target || o.camera_up))
+    throw Error("--camera-target and --camera-up place the camera together with --camera-pos; give --camera-pos too");
   if (!place && !o.fov_degrees) return;
   const float fov = o.fov_degrees.value_or(kDefaultFov);
   if (!(fov > 0.f && fov < 180.f)) throw Error("--fov must be between 0 and 180 degrees");
