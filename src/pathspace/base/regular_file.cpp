@@ -73,7 +73,7 @@ class RegularFile {
 
 }  // namespace
 
-std::string read_regular_file(const std::string& path) { return RegularFile(path).read_all(); }
+std::string read_file_as_stored(const std::string& path) { return RegularFile(path).read_all(); }
 
 void require_regular_file(const std::string& path) { RegularFile file(path); }
 

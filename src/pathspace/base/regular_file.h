@@ -10,8 +10,9 @@
 
 namespace pathspace {
 
-// The bytes of the regular file `path`, as stored.
-std::string read_regular_file(const std::string& path);
+// The bytes of the regular file `path`, as stored (images, checkpoints, content hashes, camera
+// paths, glTF buffers; io/file_bytes.h's read_file_bytes adds gzip and the byte-order mark).
+std::string read_file_as_stored(const std::string& path);
 
 // The check alone, for readers with streams of their own (the vertex buffer file's).
 void require_regular_file(const std::string& path);

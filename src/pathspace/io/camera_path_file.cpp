@@ -1,8 +1,6 @@
 #include "pathspace/io/camera_path_file.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 

@@ -7,14 +7,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "pathspace/base/error.h"
-#include "pathspace/base/regular_file.h"
 
 namespace pathspace {
 
@@ -76,7 +71,6 @@ void set_decompression_limit(double ratio, uint64_t floor_bytes) {
   decompression_limit().floor_bytes = floor_bytes;
 }
 
-std::string read_file_as_stored(const std::string& path) { return read_regular_file(path); }
 
 std::string scene_file_extension(const std::string& path) {
   std::filesystem::path p(path);

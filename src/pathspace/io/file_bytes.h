@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "pathspace/base/regular_file.h"  // require_regular_file, for readers with their own streams
+#include "pathspace/base/regular_file.h"  // read_file_as_stored, require_regular_file
 
 namespace pathspace {
 
@@ -24,10 +24,6 @@ std::string read_file_bytes(const std::string& path);
 inline constexpr double kDefaultMaxDecompressionRatio = 100.0;
 inline constexpr uint64_t kDefaultDecompressionFloorBytes = uint64_t(256) << 20;
 void set_decompression_limit(double ratio, uint64_t floor_bytes = kDefaultDecompressionFloorBytes);
-
-// The file's bytes as stored (images, checkpoints, content hashes), after the check of
-// base/regular_file.h that every input file passes (no directory, FIFO, device or socket).
-std::string read_file_as_stored(const std::string& path);
 
 // Lower-case extension without the ".gz" suffix: "a/b.PLY.gz" -> ".ply".
 std::string scene_file_extension(const std::string& path);
