@@ -1,8 +1,13 @@
 #include "cli_app.h"
 
+#include <algorithm>
+#include <cctype>
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -50,6 +55,34 @@ void check_no_empty_values(const CLI::App& app) {
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App* s) { return s->parsed(); })) check_no_empty_values(*sub);
 }
 
+// CLI11 2.1 takes a "--" right after an option's list of values (-o a.exr b.png -- scene) as the end
+// of that list and then reads options again, so "-o a.exr -- -odd.pbrt" read "-odd.pbrt" as
+// "-o dd.pbrt". In pathspace, as in every Unix tool, "--" ends option parsing: every word after it
+// is a positional argument. Where CLI11 would spend the "--" on a value list, a second one follows.
+std::vector<std::string> with_positional_mark(const CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> words(argv, argv + argc);
+  const auto mark = std::find(words.begin() + std::min(argc, 2), words.end(), "--");
+  if (mark == words.end() || argc < 2) return words;
+  const CLI::App* command = nullptr;
+  for (const CLI::App* sub : app.get_subcommands({}))
+    if (sub->check_name(words[1])) command = sub;
+  if (!command) return words;
+  auto is_option = [](const std::string& w) {
+    return w.size() > 1 && w[0] == '-' && !(std::isdigit(static_cast<unsigned char>(w[1])) || w[1] == '.');
+  };
+  // The option whose values end at the mark, and how many it has.
+  int values = 0;
+  auto it = mark;
+  while (it != words.begin() + 2 && !is_option(*(it - 1))) --it, ++values;
+  if (it == words.begin() + 2) return words;
+  std::string name = *(it - 1);
+  if (name.rfind("--", 0) == 0 && name.find('=') != std::string::npos) name.erase(name.find('=')), ++values;
+  else if (name.rfind("--", 0) != 0 && name.size() > 2) name.erase(2), ++values;  // -oVALUE
+  const CLI::Option* opt = command->get_option_no_throw(name);
+  if (opt && opt->get_items_expected_max() > values) words.insert(mark, "--");
+  return words;
+}
+
 }  // namespace
 
 CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tracing renderer", "pathspace") {
@@ -62,7 +95,10 @@ CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tr
 
 void CliApp::parse(int argc, char** argv) {
   check_command_word(app, argc, argv);
-  app.parse(argc, argv);
+  std::vector<std::string> words = with_positional_mark(app, argc, argv);
+  std::vector<char*> marked;
+  for (std::string& w : words) marked.push_back(w.data());
+  app.parse(int(marked.size()), marked.data());
   check_no_empty_values(app);
 }
 
@@ -111,6 +147,13 @@ int run_cli(int argc, char** argv) {
     const std::string command = cli.command_name();
     fmt::print(stderr, "{}: error: {} (run '{} --help' for usage)\n", command, one_line(e.what()), command);
     return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    // A scene file's reader names its file (io/scene_loader.cpp); what is left is the render's own
+    // memory: the image, the filter's tables, the photons.
+    if (!error_printed_by_rank0())
+      fmt::print(stderr, "{}: error: out of memory (the image size, samples kept per pixel or a filter's tables need more than is "
+                         "available; try a smaller -r or table)\n", cli.command_name());
+    return kExitFailure;
   } catch (const std::exception& e) {
     if (!error_printed_by_rank0()) fmt::print(stderr, "{}: error: {}\n", cli.command_name(), one_line(e.what()));
     return kExitFailure;

@@ -14,7 +14,7 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
                          "' name one file: each output needs its own");
     for (const NamedFile& in : inputs)
       if (same_file(out.path, in.path))
-        throw UsageError(out.option + " '" + out.path + "' would overwrite the input " + in.option + " '" + in.path + "'");
+        throw UsageError(out.option + " '" + out.path + "' would overwrite the input '" + in.path + "' (" + in.option + ")");
   }
 }
 

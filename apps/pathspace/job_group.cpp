@@ -81,6 +81,17 @@ void agreed_step(ProcessGroup* group, const std::function<void()>& step) {
   throw Error(text);
 }
 
+void require_same_on_every_rank(ProcessGroup* group, const std::string& what, const std::string& text) {
+  if (!group) return;
+  const std::vector<uint64_t> all = group->all_gather(fnv1a64(text.data(), text.size()));
+  for (size_t r = 1; r < all.size(); ++r)
+    if (all[r] != all[0]) {
+      g_error_printed_by_rank0 = group->rank() != 0;
+      throw UsageError(fmt::format("distributed render: rank {} was started with other {} than rank 0 (this rank: {})", r, what, text),
+                       "start every rank with the same options");
+    }
+}
+
 void abort_job(const std::string& message, int exit_code) {
   fmt::print(stderr, "pathspace render: error: {}\n", message);
   std::fflush(stderr);

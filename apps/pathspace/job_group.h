@@ -23,6 +23,11 @@ void agreed_step(ProcessGroup* group, const std::function<void()>& step);
 // (with the failing rank's number), the others only exit with its status.
 bool error_printed_by_rank0();
 
+// Collective: throws on every rank when `text` differs between ranks, naming the first rank that
+// differs from rank 0 and `what` the text holds (the run options that decide how much is rendered,
+// which RenderSession::join's fingerprint of the image options leaves out).
+void require_same_on_every_rank(ProcessGroup* group, const std::string& what, const std::string& text);
+
 // A failure on this rank alone while the others may be waiting for it: prints the message and ends
 // the whole job (MPI_Abort), so nothing hangs.
 [[noreturn]] void abort_job(const std::string& message, int exit_code);

@@ -161,9 +161,14 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   // Validate everything before the (possibly long) render.
   RenderConfig config;
   agreed_step(group.get(), [&] { config = check_render_options(o, cmd); });
+  // How much is rendered: every rank must run the same passes and frames (-j may differ).
+  require_same_on_every_rank(group.get(), "run options (-s, -t, --frames, --fps, --orbit, --camera-path)",
+                             fmt::format("-s {} -t {} --frames '{}' --fps {} --orbit {} --camera-path '{}'", o.spp, o.time_s, o.frames,
+                                         o.fps, o.orbit, o.camera_path));
   if (!o.frames.empty()) return render_frame_sequence(o, config);
   const bool quiet = o.quiet || !root;
   OutputPlan plan;
+  std::vector<NamedFile> outputs;  // every file this render writes, the checkpoint included
   agreed_step(group.get(), [&] {
     if (resumed && o.spp == 0 && o.time_s <= 0.0)
       throw UsageError("--resume needs --spp N (samples per pixel in total) or --time S (seconds more)");
@@ -183,11 +188,11 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
     // The new checkpoint may replace the resumed one (atomically); no other output may.
     if (!o.resume.empty()) inputs.push_back({"--resume", o.resume});
     check_distinct_files(files, inputs);
+    outputs = files;
     if (!o.checkpoint.empty()) {
       check_output_writable(o.checkpoint);
-      std::vector<NamedFile> all = files;
-      all.push_back({"--checkpoint", o.checkpoint});
-      check_distinct_files(all, from_file ? std::vector<NamedFile>{inputs.front()} : std::vector<NamedFile>{});
+      outputs.push_back({"--checkpoint", o.checkpoint});
+      check_distinct_files(outputs, from_file ? std::vector<NamedFile>{inputs.front()} : std::vector<NamedFile>{});
     }
   });
 
@@ -198,6 +203,7 @@ int render(const RenderOptions& o, const CLI::App& cmd, const Checkpoint* resume
   std::unique_ptr<RenderSession> session_ptr;
   agreed_step(group.get(), [&] {
     prepared_scene.emplace(prepare_scene(o));
+    if (root) check_distinct_files(outputs, scene_inputs(*prepared_scene));  // what the scene read, now known
     image_options = canonical_image_options(cmd, prepared_scene->key, config);
     if (resumed) check_resume_options(resumed->info, image_options);
   });

@@ -110,22 +110,24 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
     }
     prepared_scene.emplace(prepare_scene(o));
     images = image_output_paths(o.outputs, prepared_scene->display_name + "-%04d");
-    std::vector<NamedFile> files;
     for (const std::string& pattern : images) {
       check_frame_pattern("-o", pattern);
-      files.push_back({"-o", frame_path(pattern, range.first)});
-      check_image_path("-o", files.back().path);
+      check_image_path("-o", frame_path(pattern, range.first));
     }
-    if (!o.variance_path.empty()) {
-      check_frame_pattern("--variance-out", o.variance_path);
-      files.push_back({"--variance-out", frame_path(o.variance_path, range.first)});
-    }
-    if (!o.stats_path.empty() && root) files.push_back({"--stats", o.stats_path}), check_output_writable(o.stats_path);
-    if (!o.video.empty()) files.push_back({"--video", o.video});
-    std::vector<NamedFile> inputs;
-    if (!prepared_scene->file.empty()) inputs.push_back({"the scene file", prepared_scene->file});
+    if (!o.variance_path.empty()) check_frame_pattern("--variance-out", o.variance_path);
+    std::vector<NamedFile> once;  // the outputs written once for the whole sequence
+    if (!o.stats_path.empty() && root) once.push_back({"--stats", o.stats_path}), check_output_writable(o.stats_path);
+    if (!o.video.empty()) once.push_back({"--video", o.video});
+    std::vector<NamedFile> inputs = scene_inputs(*prepared_scene);
     if (!o.camera_path.empty()) inputs.push_back({"--camera-path", o.camera_path});
-    check_distinct_files(files, inputs);
+    // Every frame's files, not only the first's: frame 7 of a pattern may be the --stats file.
+    for (uint64_t f = range.first; f <= range.last; ++f) {
+      std::vector<NamedFile> files;
+      for (const std::string& pattern : images) files.push_back({"-o", frame_path(pattern, f)});
+      if (!o.variance_path.empty()) files.push_back({"--variance-out", frame_path(o.variance_path, f)});
+      files.insert(files.end(), once.begin(), once.end());
+      check_distinct_files(files, inputs);
+    }
   });
   PreparedScene& prepared = *prepared_scene;
   const BuiltinSceneInfo* builtin = prepared.file.empty() ? find_builtin_scene(prepared.label) : nullptr;

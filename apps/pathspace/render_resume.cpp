@@ -129,7 +129,7 @@ void check_resume_options(const CheckpointInfo& checkpoint, const std::vector<st
   if (scene == then.end() || scene->second != now.front().second)
     throw UsageError("--resume: the checkpoint was made for the scene " + checkpoint.scene + " (" +
                          (scene == then.end() ? std::string("?") : scene->second) + "), this render's scene is " + now.front().second,
-                     "resume with the same scene; a scene file must have the same content");
+                     "resume with the same scene; a scene file and every file it reads (includes, meshes, textures) must have the same content");
   for (const auto& [name, value] : now) {
     const auto it = then.find(name);
     const std::string before = it == then.end() ? std::string() : it->second;

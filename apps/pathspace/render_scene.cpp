@@ -72,11 +72,13 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     p.label = p.id = p.file = scene_name;
     p.load_options = load_options;
     p.display_name = std::filesystem::path(scene_name).stem().string();
-    p.key = scene_file_hash(scene_name);
     std::vector<std::string> warnings;
     SceneFileSettings file_settings;
     try {
+      const InputFileLog read;
       p.scene = load_scene(scene_name, load_options, &warnings, &file_settings);
+      p.input_files = read.files();
+      p.key = scene_files_hash(p.input_files);
     } catch (const Error&) {
       // What was noticed before the error can explain it (on every rank: the error may be this rank's).
       for (const std::string& w : warnings) fmt::print(stderr, "{}\n", printable(w));
@@ -95,6 +97,13 @@ PreparedScene prepare_scene(const RenderOptions& o) {
   validate_scene(p.scene, &p.validation_warnings);
   print_warnings(p.validation_warnings);
   return p;
+}
+
+std::vector<NamedFile> scene_inputs(const PreparedScene& prepared) {
+  std::vector<NamedFile> inputs;
+  for (const InputFile& f : prepared.input_files)
+    inputs.push_back({f.path == prepared.file ? "the scene file" : "read by the scene", f.path});
+  return inputs;
 }
 
 void apply_scene_options(const RenderOptions& o, Scene* scene) {

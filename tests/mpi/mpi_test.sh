@@ -156,6 +156,10 @@ PY
   options_mismatch)
     fails_with "other options" "$mpirun" --allow-run-as-root --oversubscribe -n 2 bash -c 's=1; [ "$OMPI_COMM_WORLD_RANK" = 1 ] && s=2; exec "$0" render cornell-box --seed $s -q -s 2 -r 16x16 -o "$1/x.exr"' \
       "$bin" "$work" ;;
+  run_options_mismatch)
+    # -s (and -t, --frames) decide how much each rank renders: a rank started with another count is refused.
+    fails_with "rank 1 was started with other run options" "$mpirun" --allow-run-as-root --oversubscribe -n 2 bash -c 's=2; [ "$OMPI_COMM_WORLD_RANK" = 1 ] && s=3; exec "$0" render cornell-box -q -s $s -r 16x16 -o "$1/x.exr"' \
+      "$bin" "$work" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok $case"

@@ -14,60 +14,11 @@
 #include <set>
 #include <string>
 
-#include "cli/cli_process.h"
+#include "robustness_fixture.h"
 #include "support/gltf_test_files.h"
-#include "support/temp_dir.h"
 
 namespace pathspace::testing {
 namespace {
-
-namespace fs = std::filesystem;
-
-// What a file is: its bytes, permission bits, and a symlink's target.
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = fs::relative(e.path(), dir).string();
-    if (e.is_symlink()) files[name] = "link:" + fs::read_symlink(e.path()).string();
-    else if (e.is_regular_file()) files[name] = read_all(e.path()) + "|mode:" + std::to_string(int(e.status().permissions()));
-    else files[name] = "folder";
-  }
-  return files;
-}
-
-const char* kCamera =
-    "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [ 40 ]\n"
-    "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n";
-const char* kLight = "LightSource \"point\" \"rgb I\" [ 5 5 5 ] \"point3 from\" [ 0 0 4 ]\n";
-
-class Robustness : public ::testing::Test {
- protected:
-  TempDir dir{"robustness"};
-
-  std::string write(const std::string& name, const std::string& bytes) {
-    std::ofstream(dir.file(name), std::ios::binary) << bytes;
-    return name;
-  }
-  // Runs `pathspace ARGS` in the test folder; expects the status, every text in `names` in the
-  // output, and the folder unchanged except for `outputs`.
-  testing::Run expect(const std::string& args, int status, const std::vector<std::string>& names, const std::set<std::string>& outputs = {}) {
-    const auto before = snapshot(dir.path);
-    const fs::path cwd = fs::current_path();
-    fs::current_path(dir.path);
-    const testing::Run r = run_pathspace(args);
-    fs::current_path(cwd);
-    EXPECT_EQ(r.exit_code, status) << args << "\n" << r.out;
-    for (const std::string& n : names) EXPECT_NE(r.out.find(n), std::string::npos) << args << ": no '" << n << "' in\n" << r.out;
-    auto after = snapshot(dir.path);
-    for (const std::string& o : outputs) after.erase(o);
-    auto expected = before;
-    for (const std::string& o : outputs) expected.erase(o);
-    EXPECT_EQ(after, expected) << args << ": a file other than the outputs changed";
-    return r;
-  }
-};
-
-constexpr const char* kQuick = " -r 8x8 -s 1 -q";
 
 // --- values Embree aborted on (SIGABRT in ray.valid()) ---
 
@@ -94,6 +45,38 @@ TEST_F(Robustness, InvalidMaterialIsAnInputError) {
   expect(std::string("render neg.pbrt -o a.exr") + kQuick, 1, {"neg.pbrt:6:1: ", "diffuse reflectance", "-0.5", ">= 0"});
 }
 
+// "--" ends option parsing: a scene whose name starts with '-' follows it, also right after -o's list.
+TEST_F(Robustness, DoubleDashEndsOptionParsing) {
+  write("-odd.pbrt", std::string(kCamera) + kLight + "Shape \"sphere\"\n");
+  expect("render -r 8x8 -s 1 -q -o a.exr -- -odd.pbrt", 0, {}, {"a.exr"});
+  expect("render -r 8x8 -s 1 -q -o a.exr b.exr -- -odd.pbrt", 0, {}, {"a.exr", "b.exr"});
+  expect("render -r 8x8 -o c.exr -s 1 -q -- -odd.pbrt", 0, {}, {"c.exr"});
+  expect("render -o d.exr -- -odd.pbrt -s 1", 2, {"not expected"});  // options after "--" are words
+}
+
+// Out of memory is said in words, not as "std::bad_alloc" (prlimit caps the address space).
+TEST_F(Robustness, OutOfMemoryIsSaidInWords) {
+  if (std::system("prlimit --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "no prlimit";
+  const std::string cmd = "prlimit --as=1500000000 '" PATHSPACE_BINARY "' render cornell-box -r 16384x16384 -s 1 -q -o " +
+                          dir.file("big.exr") + " 2>&1";
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  const int status = pclose(p);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << out;
+  EXPECT_NE(out.find("error: out of memory (the image size"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir.file("big.exr")));
+}
+
+// A scene file's own sample count is held to --spp's range: it is what the render runs when -s is
+// not given.
+TEST_F(Robustness, SceneSampleCountHasTheRangeOfSpp) {
+  write("many.pbrt", std::string("Sampler \"halton\" \"integer pixelsamples\" 100000000\n") + kCamera + kLight + "Shape \"sphere\"\n");
+  expect("render many.pbrt -o a.exr -r 8x8 -q", 1, {"many.pbrt:1:1: ", "pixelsamples must be between 1 and 16777216"});
+}
+
 // render -D NAME=VALUE: Mitsuba parameters from the command line; misuse is a usage error.
 TEST_F(Robustness, SceneParametersFromTheCommandLine) {
 #if PATHSPACE_HAS_MITSUBA
@@ -105,7 +88,10 @@ TEST_F(Robustness, SceneParametersFromTheCommandLine) {
   expect(std::string("render p.xml -o a.exr") + kQuick, 1, {"p.xml:2:", "undefined parameter '$power'", "-D power=VALUE"});
   expect(std::string("render p.xml -D power -o a.exr") + kQuick, 2, {"expected NAME=VALUE", "power"});
   expect(std::string("render p.xml -D p-ower=1 -o a.exr") + kQuick, 2, {"-D p-ower=1", "letters, digits"});
-  expect(std::string("render -D power=5,5,5 p.xml -D unused=1 -o a.exr") + kQuick, 0, {}, {"a.exr"});
+  expect(std::string("render -D power=5,5,5 p.xml -D power=1 -o a.exr") + kQuick, 0, {}, {"a.exr"});
+  // A name the scene does not use would change nothing: a misspelling, said so with the scene's names.
+  expect(std::string("render -D power=5,5,5 p.xml -D powr=1 -o b.exr") + kQuick, 1,
+         {"p.xml", "-D powr=1", "no parameter 'powr'", "its parameters: power"});
 #endif
   expect(std::string("render cornell-box -D power=1 -o a.exr") + kQuick, 2, {"-D and --animation apply to scene files only"});
 }
@@ -170,9 +156,9 @@ TEST_F(Robustness, OutputsNamingOneFileAreAUsageError) {
 
 TEST_F(Robustness, CompareRefusesToOverwriteAnInput) {
   expect(std::string("render -o a.exr b.exr") + kQuick, 0, {}, {"a.exr", "b.exr"});
-  expect("compare a.exr b.exr --error-map ./a.exr", 2, {"--error-map './a.exr'", "image 'a.exr'"});
+  expect("compare a.exr b.exr --error-map ./a.exr", 2, {"--error-map './a.exr'", "the input 'a.exr' (image)"});
   fs::create_symlink("b.exr", dir.file("ref.exr"));
-  expect("compare a.exr b.exr --error-map ref.exr", 2, {"--error-map 'ref.exr'", "reference 'b.exr'"});
+  expect("compare a.exr b.exr --error-map ref.exr", 2, {"--error-map 'ref.exr'", "the input 'b.exr' (reference)"});
 }
 
 // Every input passes one check (base/regular_file.h): a FIFO is refused without waiting for a

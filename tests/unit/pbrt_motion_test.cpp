@@ -87,15 +87,15 @@ TEST(PbrtMotion, TheShutterSelectsPartOfTheMotion) {
 
 TEST(PbrtMotion, InterpolatedRotationsFollowTheArc) {
   pbrt::Mat4 out;
-  ASSERT_TRUE(pbrt::interpolate_transform(pbrt::Mat4(), pbrt::Mat4::rotate(90, 0, 0, 1), 0.5, &out));
-  const pbrt::Mat4 expected = pbrt::Mat4::rotate(45, 0, 0, 1);
+  ASSERT_TRUE(pbrt::interpolate_transform(pbrt::Mat4(), *pbrt::Mat4::rotate(90, 0, 0, 1), 0.5, &out));
+  const pbrt::Mat4 expected = *pbrt::Mat4::rotate(45, 0, 0, 1);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) EXPECT_NEAR(out.m[i][j], expected.m[i][j], 1e-9) << i << "," << j;
   // Translation and scale blend linearly, each with the rotation.
   const pbrt::Mat4 a = pbrt::Mat4::translate(1, 2, 3) * pbrt::Mat4::scale(2, 2, 2);
-  const pbrt::Mat4 b = pbrt::Mat4::translate(3, 2, 1) * pbrt::Mat4::rotate(60, 1, 0, 0) * pbrt::Mat4::scale(4, 4, 4);
+  const pbrt::Mat4 b = pbrt::Mat4::translate(3, 2, 1) * *pbrt::Mat4::rotate(60, 1, 0, 0) * pbrt::Mat4::scale(4, 4, 4);
   ASSERT_TRUE(pbrt::interpolate_transform(a, b, 0.5, &out));
-  const pbrt::Mat4 mid = pbrt::Mat4::translate(2, 2, 2) * pbrt::Mat4::rotate(30, 1, 0, 0) * pbrt::Mat4::scale(3, 3, 3);
+  const pbrt::Mat4 mid = pbrt::Mat4::translate(2, 2, 2) * *pbrt::Mat4::rotate(30, 1, 0, 0) * pbrt::Mat4::scale(3, 3, 3);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) EXPECT_NEAR(out.m[i][j], mid.m[i][j], 1e-9) << i << "," << j;
   EXPECT_NEAR(pbrt::rotation_between_degrees(a, b), 60.0, 1e-9);

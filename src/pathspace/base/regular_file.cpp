@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "pathspace/base/error.h"
+#include "pathspace/base/input_file_log.h"
 
 namespace pathspace {
 
@@ -73,8 +74,17 @@ class RegularFile {
 
 }  // namespace
 
-std::string read_file_as_stored(const std::string& path) { return RegularFile(path).read_all(); }
+std::string read_file_as_stored_unlogged(const std::string& path) { return RegularFile(path).read_all(); }
 
-void require_regular_file(const std::string& path) { RegularFile file(path); }
+std::string read_file_as_stored(const std::string& path) {
+  std::string bytes = read_file_as_stored_unlogged(path);
+  InputFileLog::note(path, &bytes);
+  return bytes;
+}
+
+void require_regular_file(const std::string& path) {
+  { RegularFile file(path); }
+  InputFileLog::note(path, nullptr);
+}
 
 }  // namespace pathspace

@@ -17,4 +17,7 @@ std::string read_file_as_stored(const std::string& path);
 // The check alone, for readers with streams of their own (the vertex buffer file's).
 void require_regular_file(const std::string& path);
 
+// Both note the file in every open InputFileLog (base/input_file_log.h); this read does not.
+std::string read_file_as_stored_unlogged(const std::string& path);
+
 }  // namespace pathspace

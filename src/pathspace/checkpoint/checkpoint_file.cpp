@@ -176,4 +176,11 @@ std::string scene_file_hash(const std::string& path) {
   return fmt::format("fnv1a64:{:016x}", fnv1a64(bytes.data(), bytes.size()));
 }
 
+std::string scene_files_hash(const std::vector<InputFile>& files) {
+  if (files.empty()) throw Error("scene_files_hash: no files");
+  uint64_t hash = files.front().fnv1a64;
+  for (size_t i = 1; i < files.size(); ++i) hash = fnv1a64(&files[i].fnv1a64, sizeof(uint64_t), hash);
+  return fmt::format("fnv1a64:{:016x}", hash);
+}
+
 }  // namespace pathspace

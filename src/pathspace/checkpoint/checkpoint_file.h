@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "pathspace/base/input_file_log.h"
 #include "pathspace/session/render_session.h"
 
 namespace pathspace {
@@ -73,5 +74,9 @@ Checkpoint read_checkpoint(const std::string& path);
 
 // "fnv1a64:<16 hex digits>" of a file's bytes (as stored, not decompressed). Throws pathspace::Error.
 std::string scene_file_hash(const std::string& path);
+// The same for a scene that reads several files (base/input_file_log.h, the main file first): the
+// main file's alone is scene_file_hash's, so checkpoints of one-file scenes keep their key; every
+// further file (an Include, a mesh, a texture) changes it when its bytes change.
+std::string scene_files_hash(const std::vector<InputFile>& files);
 
 }  // namespace pathspace

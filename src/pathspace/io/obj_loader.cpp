@@ -40,15 +40,21 @@ void scan_statements(const std::string& path, const std::string& text, LoadWarni
     std::istringstream ss(line);
     std::string word;
     if (!(ss >> word) || word[0] == '#') continue;
-    if (word == "v") {  // tinyobjloader reads "nan" or "x" as 0 without a word
-      ++vertices;
-      std::string c;
-      for (int k = 0; k < 3 && ss >> c; ++k) {
+    // tinyobjloader reads "nan" or "x" as 0, and a missing coordinate as 0, without a word.
+    const int needed = word == "v" || word == "vn" ? 3 : word == "vt" ? 1 : 0;
+    if (needed > 0) {
+      vertices += word == "v";
+      const char* what = word == "v" ? "vertex coordinate" : word == "vn" ? "normal coordinate" : "texture coordinate";
+      int count = 0;
+      for (std::string c; count < 3 && ss >> c; ++count) {
         double x = 0.0;
         const auto r = std::from_chars(c.data() + (c[0] == '+'), c.data() + c.size(), x);
         if (r.ec != std::errc() || r.ptr != c.data() + c.size() || !(std::fabs(x) <= std::numeric_limits<float>::max()))
-          throw Error(FileLoc{path, line_no, 1}, "vertex coordinate '" + c + "' is not a finite float");
+          throw Error(FileLoc{path, line_no, 1}, std::string(what) + " '" + c + "' is not a finite float");
       }
+      if (count < needed)
+        throw Error(FileLoc{path, line_no, 1}, "'" + word + "' has " + std::to_string(count) + " coordinate(s); it needs " +
+                                                 (needed == 3 ? "3 (x y z)" : "at least 1 (u [v])"));
     }
     if (word == "f")
       for (std::string ref; ss >> ref;) {
@@ -138,6 +144,36 @@ Material obj_material(const tinyobj::material_t& mt, const std::string& path, Sc
   return m;
 }
 
+// tinyobjloader reads a number it cannot parse ("nan", "1,5") in a material statement as 0 and a
+// missing one as its default, without a word: check the numeric statements pathspace uses first.
+void scan_material_numbers(const std::string& path, const std::string& text) {
+  static const std::map<std::string, int> kCounts = {{"Ka", 3}, {"Kd", 3}, {"Ks", 3}, {"Ke", 3}, {"Tf", 3},
+                                                     {"Ni", 1}, {"Ns", 1}, {"d", 1},  {"Tr", 1}, {"illum", 1}};
+  std::istringstream in(text);
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    std::istringstream ss(line);
+    std::string word;
+    if (!(ss >> word)) continue;
+    const auto it = kCounts.find(word);
+    if (it == kCounts.end()) continue;
+    std::vector<std::string> values;
+    for (std::string v; ss >> v;) values.push_back(v);
+    if (values.size() == 2 && values[0] == "spectral") continue;  // Tf spectral file: not read
+    if (!values.empty() && (values[0] == "xyz" || values[0] == "-halo")) values.erase(values.begin());
+    // One value stands for all three channels (Kd 0.5), as tinyobjloader reads it.
+    if (values.empty() || (values.size() != 1 && int(values.size()) < it->second))
+      throw Error(FileLoc{path, line_no, 1}, "'" + word + "' needs " + std::to_string(it->second) + " number(s)");
+    for (const std::string& v : values) {
+      double x = 0.0;
+      const auto r = std::from_chars(v.data() + (v[0] == '+'), v.data() + v.size(), x);
+      if (r.ec != std::errc() || r.ptr != v.data() + v.size() || !std::isfinite(x))
+        throw Error(FileLoc{path, line_no, 1}, "'" + word + "' value '" + v + "' is not a finite number");
+    }
+  }
+}
+
 // Material files next to the OBJ, as tinyobjloader's MaterialFileReader finds them, but read through
 // read_file_bytes: its checks (no FIFO, no device) and gzip, with errors that name the file.
 class MtlReader final : public tinyobj::MaterialReader {
@@ -151,7 +187,9 @@ class MtlReader final : public tinyobj::MaterialReader {
       *warning += "Material file [ " + name + " ] not found in a path : " + folder_ + "\n";
       return false;
     }
-    std::istringstream in(read_file_bytes(path));
+    const std::string text = read_file_bytes(path);
+    scan_material_numbers(path, text);
+    std::istringstream in(text);
     tinyobj::LoadMtl(by_name, materials, &in, warning, error);
     return true;
   }

@@ -328,8 +328,11 @@ PlyMesh parse_ply(const std::string& bytes, const std::string& name) {
           if (!all_finite(n)) in.fail("vertex normal is NaN or infinite");
           mesh.normals.push_back(n);
         }
-        if (layout.slot[6] >= 0)
-          mesh.uvs.push_back({float(values[size_t(layout.slot[6])]), float(values[size_t(layout.slot[7])])});
+        if (layout.slot[6] >= 0) {
+          const float u = float(values[size_t(layout.slot[6])]), v = float(values[size_t(layout.slot[7])]);
+          if (!std::isfinite(u) || !std::isfinite(v)) in.fail("vertex texture coordinate is NaN or infinite");
+          mesh.uvs.push_back({u, v});
+        }
       } else if (is_face) {
         if (face.size() < 3) in.fail("face with " + std::to_string(face.size()) + " vertices (at least 3 needed)");
         if (face.size() > 3) ++mesh.polygon_faces;

@@ -7,6 +7,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <new>
+#include <stdexcept>
 #include <memory>
 
 #include "pathspace/io/file_bytes.h"
@@ -117,6 +119,11 @@ auto naming_the_file(const std::string& path, F&& load) -> decltype(load()) {
   } catch (const Error& e) {
     if (!e.location().file.empty()) throw;
     throw Error(FileLoc{path}, e.what());
+  } catch (const std::bad_alloc&) {
+    // A count in a header (PLY elements, glTF accessors, pbrt arrays) that the memory cannot hold.
+    throw Error(FileLoc{path}, "out of memory while reading the scene (does a count in the file claim more data than it holds?)");
+  } catch (const std::length_error&) {
+    throw Error(FileLoc{path}, "a size in the file is beyond what a container can hold");
   }
 }
 

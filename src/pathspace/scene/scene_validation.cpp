@@ -133,6 +133,14 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     check_point(scene.positions[i], "vertex " + std::to_string(i), src.find(K::kVertex, i));
   for (size_t i = 0; i < scene.positions_end.size(); ++i)
     check_point(scene.positions_end[i], "vertex " + std::to_string(i) + " at shutter close", src.find(K::kVertex, i));
+  // Texture coordinates and shading normals from any format (OBJ vt/vn, PLY u v / nx ny nz, glTF
+  // accessors): a NaN would become a NaN texel index or shading frame at every hit near it.
+  for (size_t i = 0; i < scene.uvs.size(); ++i)
+    if (!std::isfinite(scene.uvs[i].x) || !std::isfinite(scene.uvs[i].y))
+      fail(src.find(K::kVertex, i), fmt::format("vertex {}: texture coordinates ({:g}, {:g}) must be finite", i, scene.uvs[i].x, scene.uvs[i].y));
+  for (const std::vector<Vec3>* normals : {&scene.normals, &scene.normals_end})
+    for (size_t i = 0; i < normals->size(); ++i)
+      if (!all_finite((*normals)[i])) fail(src.find(K::kVertex, i), fmt::format("vertex {}: its normal must be finite", i));
   for (size_t i = 0; i < scene.spheres.size(); ++i) {
     const Sphere& s = scene.spheres[i];
     check_point(s.center, "the centre of sphere " + std::to_string(i), src.find(K::kSphere, i));
@@ -153,9 +161,13 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     if (l.type == LightType::projector && !(std::isfinite(l.uv_scale_u) && std::isfinite(l.uv_scale_v) && l.uv_scale_u != 0.f && l.uv_scale_v != 0.f))
       fail(at, name + ": the projector's field of view is not valid");
   }
-  for (size_t i = 0; i < scene.textures.size(); ++i)
-    check_texels(scene.textures[i].texels, scene.textures[i].width, "texture " + std::to_string(i) + " ('" + scene.textures[i].name + "')",
-                 src.find(K::kTexture, i), warnings);
+  for (size_t i = 0; i < scene.textures.size(); ++i) {
+    const ImageTexture& t = scene.textures[i];
+    const std::string name = "texture " + std::to_string(i) + " ('" + t.name + "')";
+    if (!std::isfinite(t.uscale) || !std::isfinite(t.vscale) || !std::isfinite(t.udelta) || !std::isfinite(t.vdelta))
+      fail(src.find(K::kTexture, i), name + ": its uv scale and offset must be finite");
+    check_texels(t.texels, t.width, name, src.find(K::kTexture, i), warnings);
+  }
   if (!scene.environment_image.empty()) {
     const FileLoc* at = nullptr;  // the environment light's statement
     for (size_t i = 0; i < scene.lights.size() && !at; ++i)

@@ -19,6 +19,9 @@ namespace pathspace {
 inline constexpr float kMaxSceneCoordinate = 1e9f;
 // Largest image width or height (pixels), for -r and for cameras from scene files alike.
 inline constexpr int kMaxImageSide = 16384;
+// Largest samples per pixel, for -s and for a scene file's own count (pbrt pixelsamples, Mitsuba
+// sample_count) alike.
+inline constexpr int kMaxSamplesPerPixel = 1 << 24;
 
 // Throws pathspace::Error for the first value out of its range (naming the element and the value);
 // appends warnings (one per kind) to *warnings.

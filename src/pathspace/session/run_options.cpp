@@ -32,7 +32,7 @@ void check_range(const OptionSpec& s, double value) {
 const std::vector<OptionSpec>& run_options() {
   static const std::string default_size = std::to_string(kDefaultImageSide) + "x" + std::to_string(kDefaultImageSide);
   static const std::vector<OptionSpec> options = {
-      number_option("spp", OptionType::integer, std::to_string(kDefaultSpp), 1, double(1 << 24),
+      number_option("spp", OptionType::integer, std::to_string(kDefaultSpp), 1, double(kMaxSamplesPerPixel),
                     "Samples per pixel (default " + std::to_string(kDefaultSpp) + ", or the scene file's; with --resume: in total)"),
       number_option("time", OptionType::real, "", 1e-3, 1e7,
                     "Render for this many seconds (whole passes) instead of --spp; with --resume: this many more"),

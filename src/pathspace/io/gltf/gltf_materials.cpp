@@ -20,16 +20,18 @@ float extension_number(const Context& c, const tinygltf::ExtensionMap& ext, cons
   return float(x);
 }
 
-Rgb factor_rgb(const Context& c, const std::vector<double>& v, size_t expected, const std::string& what) {
-  if (v.size() != expected) c.fail(what + " has " + std::to_string(v.size()) + " numbers; expected " + std::to_string(expected));
-  for (double x : v)
-    if (!std::isfinite(x)) c.fail(what + " holds a NaN or infinite number");
-  return Rgb(float(v[0]), float(v[1]), float(v[2]));
+// The glTF schema bounds every material factor to [0, 1] (emission is scaled by its own extension);
+// a value outside is an error, not clamped into a colour the author did not write.
+float unit_factor(const Context& c, double x, const std::string& what) {
+  if (!std::isfinite(x)) c.fail(what + " is not a finite number");
+  if (x < 0.0 || x > 1.0) c.fail(what + " = " + std::to_string(x) + " is outside [0, 1]");
+  return float(x);
 }
 
-float finite(const Context& c, double x, const std::string& what) {
-  if (!std::isfinite(x)) c.fail(what + " is not a finite number");
-  return float(x);
+Rgb unit_factor_rgb(const Context& c, const std::vector<double>& v, size_t expected, const std::string& what) {
+  if (v.size() != expected) c.fail(what + " has " + std::to_string(v.size()) + " numbers; expected " + std::to_string(expected));
+  for (size_t i = 0; i < v.size(); ++i) unit_factor(c, v[i], what + "[" + std::to_string(i) + "]");
+  return Rgb(float(v[0]), float(v[1]), float(v[2]));
 }
 
 Rgb clamp01(const Rgb& v) { return Rgb(std::clamp(v.r, 0.f, 1.f), std::clamp(v.g, 0.f, 1.f), std::clamp(v.b, 0.f, 1.f)); }
@@ -49,9 +51,9 @@ Surface Materials::build(int index) {
   const std::string pbr_name = name + ".pbrMetallicRoughness";
   const tinygltf::PbrMetallicRoughness& pbr = mt.pbrMetallicRoughness;
 
-  const Rgb base = clamp01(factor_rgb(c_, pbr.baseColorFactor, 4, pbr_name + ".baseColorFactor"));
-  float metallic = std::clamp(finite(c_, pbr.metallicFactor, pbr_name + ".metallicFactor"), 0.f, 1.f);
-  float roughness = std::clamp(finite(c_, pbr.roughnessFactor, pbr_name + ".roughnessFactor"), 0.f, 1.f);
+  const Rgb base = unit_factor_rgb(c_, pbr.baseColorFactor, 4, pbr_name + ".baseColorFactor");
+  float metallic = unit_factor(c_, pbr.metallicFactor, pbr_name + ".metallicFactor");
+  float roughness = unit_factor(c_, pbr.roughnessFactor, pbr_name + ".roughnessFactor");
   if (pbr.metallicRoughnessTexture.index >= 0) {  // roughness in G, metallic in B, linear data
     const std::string what = pbr_name + ".metallicRoughnessTexture";
     if (const auto mean = textures_.mean(pbr.metallicRoughnessTexture.index, LdrEncoding::linear, what)) {
@@ -64,7 +66,8 @@ Surface Materials::build(int index) {
   const float ior = extension_number(c_, mt.extensions, "KHR_materials_ior", "ior", 1.5f, name);
   const float eta = ior >= 1.f ? ior : 1.5f;
   if (ior < 1.f) c_.warn(name + ".extensions.KHR_materials_ior.ior = " + std::to_string(ior) + " not supported; 1.5 used");
-  const float transmission = std::clamp(extension_number(c_, mt.extensions, "KHR_materials_transmission", "transmissionFactor", 0.f, name), 0.f, 1.f);
+  const float transmission = unit_factor(c_, extension_number(c_, mt.extensions, "KHR_materials_transmission", "transmissionFactor", 0.f, name),
+                                         name + ".extensions.KHR_materials_transmission.transmissionFactor");
   const bool base_textured = pbr.baseColorTexture.index >= 0;
   const std::string base_tex = pbr_name + ".baseColorTexture";
   // Conductors and dielectrics have no texture slot: a baseColor texture enters as its mean colour.
@@ -107,8 +110,10 @@ Surface Materials::build(int index) {
 
   Surface s;
   s.two_sided = mt.doubleSided;
-  s.emission = factor_rgb(c_, mt.emissiveFactor.empty() ? std::vector<double>{0, 0, 0} : mt.emissiveFactor, 3, name + ".emissiveFactor");
-  s.emission = s.emission * std::max(0.f, extension_number(c_, mt.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.f, name));
+  s.emission = unit_factor_rgb(c_, mt.emissiveFactor.empty() ? std::vector<double>{0, 0, 0} : mt.emissiveFactor, 3, name + ".emissiveFactor");
+  const float strength = extension_number(c_, mt.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.f, name);
+  if (strength < 0.f) c_.fail(name + ".extensions.KHR_materials_emissive_strength.emissiveStrength is negative");
+  s.emission = s.emission * strength;
   if (mt.emissiveTexture.index >= 0 && !is_black(s.emission)) {
     const std::string what = name + ".emissiveTexture";
     if (const auto mean = textures_.mean(mt.emissiveTexture.index, LdrEncoding::srgb, what)) {

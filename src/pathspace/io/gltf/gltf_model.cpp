@@ -8,6 +8,7 @@
 
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/gltf/gltf_context.h"
+#include "pathspace/io/gltf/gltf_json_check.h"
 
 namespace pathspace::gltf {
 
@@ -55,6 +56,7 @@ bool referenced_file_exists(const std::string& path, void*) {
 
 void parse(const std::string& path, tinygltf::Model* model, LoadWarnings* w) {
   const std::string bytes = read_file_bytes(path);
+  check_gltf_json(path, bytes);
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file,
                                               &tinygltf::WriteWholeFile, nullptr});

@@ -266,7 +266,9 @@ Mat4 Object::parse_transform(const pugi::xml_node& node) const {
       o = Mat4::scale(v[0], v[1], v[2]);
     } else if (t == "rotate") {
       const auto v = triple("0");
-      o = Mat4::rotate(num("angle", "0"), v[0], v[1], v[2]);
+      const std::optional<Mat4> r = Mat4::rotate(num("angle", "0"), v[0], v[1], v[2]);
+      if (!r) throw Error(loc, "<rotate> needs an axis of nonzero length (x, y, z)");
+      o = *r;
     } else if (t == "matrix") {
       const std::vector<double> v = parse_numbers(doc_->attr(op, "value"), loc);
       if (v.size() != 16 && v.size() != 9) throw Error(loc, "<matrix> needs 16 (or 9) values");

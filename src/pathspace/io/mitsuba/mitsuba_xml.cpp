@@ -10,6 +10,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <set>
 
 namespace pathspace::mitsuba {
 
@@ -106,6 +108,7 @@ Document::Document(const std::string& bytes, std::string name, const std::vector
     const std::string id = attr(t, "id");
     if (!id.empty()) textures_.emplace(id, t);
   }
+  check_defines_are_parameters(defines);
   const std::string version = attr(scene_, "version", "");
   legacy_ = !version.empty() && (version[0] == '0' || version[0] == '1') && version.size() > 1 && version[1] == '.';
 }
@@ -114,8 +117,36 @@ void Document::read_defaults() {
   for (const pugi::xml_node& d : scene_.children("default")) {
     const std::string key = d.attribute("name").value();
     if (!is_scene_parameter_name(key)) throw Error(loc(d), "<default> needs a name made of letters, digits and '_'");
+    declared_.insert(key);
     if (!d.attribute("value")) throw Error(loc(d), "<default name=\"" + key + "\"> has no value");
     params_.emplace(key, d.attribute("value").value());  // -D, then the first definition wins
+  }
+}
+
+// A -D that no <default> declares and no $name uses would change nothing: a misspelt name, or a
+// parameter of another scene. Mitsuba 3 refuses it too.
+void Document::check_defines_are_parameters(const std::vector<std::pair<std::string, std::string>>& defines) const {
+  std::set<std::string> known = declared_;
+  std::vector<pugi::xml_node> stack = {scene_};
+  while (!stack.empty()) {
+    const pugi::xml_node n = stack.back();
+    stack.pop_back();
+    for (const pugi::xml_attribute& a : n.attributes())
+      for (const char* p = std::strchr(a.value(), '$'); p; p = std::strchr(p + 1, '$')) {
+        const char* e = p + 1;
+        while (is_ident(*e)) ++e;
+        known.emplace(p + 1, e);
+      }
+    for (const pugi::xml_node& c : n.children())
+      if (c.type() == pugi::node_element) stack.push_back(c);
+  }
+  for (const auto& [key, value] : defines) {
+    if (known.count(key)) continue;
+    std::string names;
+    for (const std::string& k : known)
+      if (!k.empty()) names += (names.empty() ? "" : ", ") + k;
+    throw Error(FileLoc{name_}, "-D " + key + "=" + value + ": the scene has no parameter '" + key + "' (its parameters: " +
+                                    (names.empty() ? "none" : names) + ")");
   }
 }
 

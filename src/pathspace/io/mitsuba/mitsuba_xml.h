@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <unordered_map>
 #include <string>
 #include <utility>
@@ -21,7 +22,7 @@ class Document {
  public:
   // Parses `bytes` (the text of file `name` in `folder`); an XML syntax error is an Error at
   // file:line:column. `defines` are parameters given from outside: they take the place of the
-  // file's <default>s. Top-level <include filename="..."/> elements are replaced by the children of
+  // file's <default>s, and each must name a <default> or a $name of the file. Top-level <include filename="..."/> elements are replaced by the children of
   // the included file's <scene> (found like any file name, resolve_file), whose nodes keep their own
   // file:line:column.
   Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines = {},
@@ -53,12 +54,14 @@ class Document {
   std::string substitute(const std::string& value, const pugi::xml_node& node) const;
   void read_defaults();
   void expand_includes();
+  void check_defines_are_parameters(const std::vector<std::pair<std::string, std::string>>& defines) const;
 
   pugi::xml_document doc_;
   pugi::xml_node scene_;
   std::string name_;
   std::vector<size_t> line_starts_;
   std::map<std::string, std::string> params_;
+  std::set<std::string> declared_;  // names of the <default>s
   std::map<std::string, pugi::xml_node> textures_;
   std::vector<std::string> search_paths_;  // <path value="..."/>
   std::string folder_;

@@ -10,6 +10,7 @@
 
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/spectrum/white_balance.h"
+#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace::pbrt {
 
@@ -117,7 +118,9 @@ void SceneBuilder::dispatch(const Statement& st) {
   } else if (d == "Scale") {
     transform(Mat4::scale(n[0], n[1], n[2]));
   } else if (d == "Rotate") {
-    transform(Mat4::rotate(n[0], n[1], n[2], n[3]));
+    const std::optional<Mat4> r = Mat4::rotate(n[0], n[1], n[2], n[3]);
+    if (!r) throw Error(st.loc, "Rotate needs an axis of nonzero length");
+    transform(*r);
   } else if (d == "LookAt") {
     Mat4 m;
     if (!look_at(Vec3(float(n[0]), float(n[1]), float(n[2])), Vec3(float(n[3]), float(n[4]), float(n[5])),
@@ -156,14 +159,15 @@ void SceneBuilder::dispatch(const Statement& st) {
     if (st.strings[0] != "rgb") warn(st.loc, "Film \"" + st.strings[0] + "\" treated as \"rgb\"");
     film_width_ = st.get_int("xresolution", 1280);
     film_height_ = st.get_int("yresolution", 720);
-    if (film_width_ < 1 || film_height_ < 1 || film_width_ > 16384 || film_height_ > 16384)
-      throw Error(st.loc, "Film resolution must be between 1 and 16384");
+    if (film_width_ < 1 || film_height_ < 1 || film_width_ > kMaxImageSide || film_height_ > kMaxImageSide)
+      throw Error(st.loc, "Film resolution must be between 1 and " + std::to_string(kMaxImageSide));
     image_name_ = st.get_string("filename", "");
     st.ignore({"savefp16"});
     film_sensor(st);
   } else if (d == "Sampler") {
     spp_ = st.get_int("pixelsamples", 16);
-    if (spp_ < 1) throw Error(st.loc, "pixelsamples must be at least 1");
+    if (spp_ < 1 || spp_ > kMaxSamplesPerPixel)
+      throw Error(st.loc, "pixelsamples must be between 1 and " + std::to_string(kMaxSamplesPerPixel) + " (--spp's range)");
     mark_all(st);  // sampler kind, seed, randomisation: they change the noise, not the expectation
   } else if (d == "Integrator") {
     max_depth_ = st.get_int("maxdepth", 5);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 
 #include "pathspace/math/frame.h"
 #include "pathspace/math/vec3.h"
@@ -29,11 +30,13 @@ struct Mat4 {
     r.m[0][0] = x, r.m[1][1] = y, r.m[2][2] = z;
     return r;
   }
-  // Rotation by `degrees` about `axis` (right-hand rule for column vectors, as pbrt's Rotate).
-  static Mat4 rotate(double degrees, double ax, double ay, double az) {
+  // Rotation by `degrees` about `axis` (right-hand rule for column vectors, as pbrt's Rotate); none
+  // when the axis has no direction (zero or not finite) and the angle is not 0, which the scene
+  // readers report as an error rather than guess a rotation.
+  static std::optional<Mat4> rotate(double degrees, double ax, double ay, double az) {
     const double len = std::sqrt(ax * ax + ay * ay + az * az);
     Mat4 r;
-    if (len == 0.0) return r;
+    if (!(len > 0.0) || !std::isfinite(len)) return degrees == 0.0 ? std::optional<Mat4>(r) : std::nullopt;
     ax /= len, ay /= len, az /= len;
     const double t = degrees * M_PI / 180.0, s = std::sin(t), c = std::cos(t);
     r.m[0][0] = ax * ax + (1 - ax * ax) * c;
