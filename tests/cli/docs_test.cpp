@@ -91,6 +91,8 @@ const std::set<std::string> kOtherToolsOptions = {
     "--ntasks-per-node",         // srun
     "--cpus-per-task",           // srun
     "--nodes",                   // srun
+    "--system-site-packages",    // python3 -m venv (docs/python.md)
+    "--no-build-isolation",      // pip install (docs/python.md)
 };
 
 // Folders at the repository root: a token starting with one of them is a repository path
