@@ -63,6 +63,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const Material& m : scene.materials) ++materials[material_kind(m)];
   size_t texels = 0;
   for (const ImageTexture& t : scene.textures) texels += t.texels.size();
+  // What the images hold in memory as rendered (linear float RGB texels, the environment's too).
+  const size_t texture_bytes = (texels + scene.environment_image.texels.size()) * sizeof(Rgb);
   size_t moving_vertices = 0;  // motion blur (scene/motion.h): vertices that move while the shutter is open
   for (size_t i = 0; i < scene.positions_end.size(); ++i) moving_vertices += !(scene.positions_end[i] == scene.positions[i]);
   const PerspectiveCamera& c = scene.camera;
@@ -76,6 +78,7 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
     j["spheres"] = scene.spheres.size();
     j["textures"] = scene.textures.size();
     j["texels"] = texels;
+    j["texture_bytes"] = texture_bytes;
     j["environment_image"] = scene.environment_image.empty() ? nlohmann::json(nullptr)
                                                              : nlohmann::json{scene.environment_image.width, scene.environment_image.height};
     j["lights"] = lights;
@@ -96,10 +99,11 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
     fmt::print("  motion blur  the camera moves {:.4g} and turns {:.1f} degrees while the shutter is open\n",
                length(scene.camera_end.position - c.position),
                std::acos(std::clamp(dot(c.forward, scene.camera_end.forward), -1.f, 1.f)) * 180.0 / M_PI);
-  fmt::print("  textures     {} ({} texels){}\n", scene.textures.size(), texels,
+  fmt::print("  textures     {} ({} texels){}; {:.1f} MiB in memory\n", scene.textures.size(), texels,
              scene.environment_image.empty()
                  ? std::string()
-                 : fmt::format("; environment image {}x{}", scene.environment_image.width, scene.environment_image.height));
+                 : fmt::format("; environment image {}x{}", scene.environment_image.width, scene.environment_image.height),
+             double(texture_bytes) / 1048576.0);
   fmt::print("  lights       {}\n", scene.lights.size());
   for (const auto& [kind, n] : lights) fmt::print("    {:<26} {}\n", kind, n);
   fmt::print("  materials    {}\n", scene.materials.size());

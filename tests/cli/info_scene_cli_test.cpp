@@ -33,6 +33,10 @@ TEST(InfoScene, CountsAndWarningsWithTheirLocation) {
   EXPECT_EQ(parsed["lights"]["area (triangles)"], 2);
   EXPECT_EQ(parsed["materials"]["diffuse"], 4);
   EXPECT_EQ(parsed["warnings"].size(), 1u);
+  // Texture memory as rendered: 12 bytes (float RGB) a texel, the environment image's included.
+  const size_t env = parsed["environment_image"].is_null() ? 0 : size_t(parsed["environment_image"][0]) * size_t(parsed["environment_image"][1]);
+  EXPECT_EQ(parsed["texture_bytes"], (size_t(parsed["texels"]) + env) * 12);
+  EXPECT_NE(r.out.find("MiB in memory"), std::string::npos) << r.out;
 }
 
 // Layered materials count under their own kind, not under their base's lobes.

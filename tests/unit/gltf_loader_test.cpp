@@ -218,8 +218,11 @@ TEST(GltfLoader, MaterialMappings) {
 
   const Material m4 = mat(4);
   EXPECT_NEAR(m4.specular.r, 0.04f, 1e-6f);
-  ASSERT_EQ(sc.lights.size(), 2u);  // the emissive quad's two triangles
-  for (const Light& li : sc.lights) {
+  // The emissive quad's two triangles, and (no light source in the file) the viewers' white environment.
+  ASSERT_EQ(sc.lights.size(), 3u);
+  EXPECT_EQ(sc.lights.back().type, LightType::environment);
+  EXPECT_TRUE(l.warned("no light sources in the file (only 2 emissive triangles)"));
+  for (const Light& li : std::vector<Light>(sc.lights.begin(), sc.lights.end() - 1)) {
     EXPECT_EQ(li.type, LightType::area_triangle);
     EXPECT_NEAR(li.value.r, 4.f, 1e-6f);
     EXPECT_NEAR(li.value.g, 2.f, 1e-6f);
@@ -462,7 +465,10 @@ TEST(GltfLoader, RendersLikeTheSameObjScene) {
   o.camera_position = Vec3(0, 0, 3);
   o.camera_target = Vec3(0, 0, 0);
   o.fov_degrees = 45.f;
-  const Scene m = load_scene(dir.file("box.obj"), o, &warnings);
+  Scene m = load_scene(dir.file("box.obj"), o, &warnings);
+  // A glTF file without light sources is also lit by the viewers' white environment: the OBJ too.
+  m.add_environment_light(Rgb(1.f));
+  m.finalize();
   ASSERT_EQ(g.triangles.size(), m.triangles.size());
   ASSERT_EQ(g.lights.size(), m.lights.size());
   expect_near(g.camera.forward, m.camera.forward);

@@ -258,6 +258,10 @@ TEST(MitsubaLoader, SensorFilmSamplerIntegrator) {
   const Scene s = mitsuba::load_mitsuba_string(scene3("<sensor type=\"perspective\"/>"), "scene.xml", ".", o, &w, nullptr);
   EXPECT_EQ(s.camera.width, 8);
   EXPECT_EQ(s.camera.height, 6);
+  // `direct`: emission and direct light, i.e. 2 segments, without a warning for its sample counts.
+  const Loaded direct = load(scene3("<integrator type=\"direct\"><integer name=\"emitter_samples\" value=\"4\"/></integrator>"));
+  EXPECT_EQ(direct.scene.max_path_segments, 2);
+  EXPECT_EQ(find_warning(direct.warnings, "integrator"), "") << ::testing::PrintToString(direct.warnings);
   expect_error(scene3("<sensor type=\"orthographic\"/>"), "scene.xml:2:1:", "sensor type 'orthographic' is not supported");
   expect_error(scene3("<sensor type=\"perspective\"><float name=\"fov\" value=\"180\"/></sensor>"), "scene.xml:2:1:", "field of view");
   expect_error(scene3("<integrator type=\"path\"><integer name=\"max_depth\" value=\"0\"/></integrator>"), "scene.xml:2:1:", "max_depth");
@@ -497,6 +501,62 @@ TEST(MitsubaLoader, MeshFiles) {
   expect_error(scene3("<shape type=\"ply\">\n<string name=\"filename\" value=\"none.ply\"/></shape>"), "scene.xml:2:1:", "none.ply",
                dir.path.string());
   expect_error(scene3("<shape type=\"obj\"/>"), "scene.xml:2:1:", "needs a filename", dir.path.string());
+}
+
+// Mitsuba 3's instancing: a shapegroup's shapes appear once per instance, under its to_world.
+TEST(MitsubaLoader, ShapegroupInstances) {
+  const Loaded r = load(scene3(
+      "<shape type=\"shapegroup\" id=\"pair\">\n"
+      "  <shape type=\"rectangle\"><transform name=\"to_world\"><translate x=\"1\"/></transform></shape>\n"
+      "  <shape type=\"sphere\"><float name=\"radius\" value=\"0.5\"/></shape>\n"
+      "</shape>\n"
+      "<shape type=\"instance\"><ref id=\"pair\"/><transform name=\"to_world\"><translate y=\"10\"/></transform></shape>\n"
+      "<shape type=\"instance\"><ref id=\"pair\"/><transform name=\"to_world\"><scale value=\"2\"/></transform></shape>"));
+  const Scene& s = r.scene;
+  ASSERT_EQ(s.spheres.size(), 2u);
+  EXPECT_NEAR(s.spheres[0].center.y, 10.f, 1e-6f);
+  EXPECT_NEAR(s.spheres[1].radius, 1.f, 1e-6f);  // the instance's scale on top of the shape's radius
+  ASSERT_EQ(s.triangles.size(), 2u + 2u + 2u);   // two rectangles placed, then scene3's emitter
+  const Vec3 first = s.positions[s.triangles[0].v[0]], second = s.positions[s.triangles[2].v[0]];
+  EXPECT_NEAR(first.y, second.y / 2.f + 10.f, 1e-5f);  // the same corner: translated, then scaled about the origin
+  EXPECT_NEAR(second.x, 2.f * (first.x), 1e-5f);
+  EXPECT_EQ(r.warnings.size(), 1u) << ::testing::PrintToString(r.warnings);  // only scene3's missing sensor
+  expect_error(scene3("<shape type=\"instance\"><ref id=\"none\"/></shape>"), "scene.xml:2:1:", "no shapegroup 'none'");
+  expect_error(scene3("<shape type=\"shapegroup\" id=\"g\"><shape type=\"instance\"/></shape>"), "scene.xml:2:", "cannot hold a shapegroup or an instance");
+  expect_error(scene3("<shape type=\"shapegroup\"/>"), "scene.xml:2:1:", "needs an id");
+}
+
+// Mesh files shade smooth as in Mitsuba 3: the file's normals, else angle-weighted ones from the
+// faces; face_normals makes them flat. A folded quad: the fold's vertices get the mean of +z and +x.
+TEST(MitsubaLoader, MeshNormals) {
+  TempDir dir("mitsuba");
+  std::ofstream(dir.file("fold.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
+  std::ofstream(dir.file("given.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nvn 0 1 1\nf 1//1 2//2 3//1\n";
+  // The shading normal at the triangles' corner at p (the OBJ reader gives corners with a vn their
+  // own vertex, after the file's unused ones).
+  const auto normal_at = [](const Scene& s, const Vec3& p) {
+    for (const Triangle& t : s.triangles)
+      for (uint32_t i : t.v)
+        if (length(s.positions[i] - p) < 1e-6f && i < s.normals.size()) return s.normals[i];
+    return Vec3(-9.f, -9.f, -9.f);
+  };
+  const Scene smooth = load(scene3("<shape type=\"obj\"><string name=\"filename\" value=\"fold.obj\"/></shape>"), dir.path.string()).scene;
+  const float h = std::sqrt(0.5f);
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(0, 1, 0)}) {
+    const Vec3 n = normal_at(smooth, p);
+    EXPECT_NEAR(n.x, h, 1e-5f);
+    EXPECT_NEAR(n.y, 0.f, 1e-5f);
+    EXPECT_NEAR(n.z, h, 1e-5f);
+  }
+  EXPECT_NEAR(normal_at(smooth, Vec3(1, 0, 0)).z, 1.f, 1e-6f);
+  EXPECT_NEAR(normal_at(smooth, Vec3(0, 0, 1)).x, 1.f, 1e-6f);
+  const Scene flat = load(scene3("<shape type=\"obj\"><string name=\"filename\" value=\"fold.obj\"/>"
+                                 "<boolean name=\"face_normals\" value=\"true\"/></shape>"),
+                          dir.path.string()).scene;
+  for (const Vec3& n : flat.normals) EXPECT_EQ(dot(n, n), 0.f);
+  const Scene given = load(scene3("<shape type=\"obj\"><string name=\"filename\" value=\"given.obj\"/></shape>"), dir.path.string()).scene;
+  EXPECT_NEAR(normal_at(given, Vec3(0, 0, 0)).z, 1.f, 1e-6f);
+  EXPECT_NEAR(normal_at(given, Vec3(1, 0, 0)).y, h, 1e-5f);
 }
 
 // <path value="..."/>: relative file names are looked up in the scene's folder first, then in each

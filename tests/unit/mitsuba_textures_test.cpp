@@ -112,9 +112,11 @@ TEST(MitsubaTextures, RawFilterWrapAndSharing) {
   ASSERT_EQ(r.scene.textures.size(), 2u);  // sRGB (shared by three materials) and raw
   EXPECT_NEAR(r.scene.textures[0].texels[0].r, 0.5f, 3e-3f);
   EXPECT_NEAR(r.scene.textures[1].texels[0].r, 188.f / 255.f, 1e-6f);
-  EXPECT_TRUE(has_warning(r, "scene.xml:5:41: warning: <texture type=\"bitmap\">: wrap_mode 'mirror' approximated by repeat"))
-      << ::testing::PrintToString(r.warnings);
-  EXPECT_TRUE(has_warning(r, "filter_type 'nearest' approximated by bilinear filtering"));
+  EXPECT_EQ(r.scene.textures[1].wrap, TextureWrap::mirror);  // wrap and filter are the texture's own
+  EXPECT_TRUE(r.scene.textures[1].nearest);
+  EXPECT_EQ(r.scene.textures[0].wrap, TextureWrap::repeat);
+  EXPECT_FALSE(r.scene.textures[0].nearest);
+  EXPECT_FALSE(has_warning(r, "wrap_mode")) << ::testing::PrintToString(r.warnings);
   // plastic: a coat over the textured base (the linear model's albedo remap needs a constant albedo).
   const Material& plastic = r.scene.materials[r.scene.triangles.back().material];
   EXPECT_EQ(plastic.type, MaterialType::coated_diffuse);

@@ -60,6 +60,31 @@ TEST(TextureLookup, RepeatAddressing) {
   EXPECT_TRUE(all_finite(nan_lookup));
 }
 
+// Mirror: every other period is the image turned over, so the edge texels meet their own copies;
+// clamp: outside is the edge texel, and at the edge the bilinear neighbour is the edge texel itself.
+TEST(TextureLookup, MirrorAndClampAddressing) {
+  TextureView t = two_by_two();
+  t.wrap = TextureWrap::mirror;
+  expect_rgb_near(texture_lookup(t, {1.25f, 0.75f}), kTexels[1], 1e-5f);  // u in (1, 2): mirrored, column 1
+  expect_rgb_near(texture_lookup(t, {1.75f, 0.75f}), kTexels[0], 1e-5f);
+  expect_rgb_near(texture_lookup(t, {-0.25f, 0.75f}), kTexels[0], 1e-5f);
+  expect_rgb_near(texture_lookup(t, {2.25f, 0.75f}), kTexels[0], 1e-5f);  // a whole period later: as at 0.25
+  expect_rgb_near(texture_lookup(t, {0.25f, 1.25f}), kTexels[0], 1e-5f);   // v mirrored: 1.25 reads as 0.75, the top row
+  expect_rgb_near(texture_lookup(t, {0.25f, -0.25f}), kTexels[2], 1e-5f);  // and -0.25 as 0.25, the bottom row
+  expect_rgb_near(texture_lookup(t, {0.f, 0.75f}), kTexels[0], 1e-5f);     // the left edge meets itself
+  t.wrap = TextureWrap::clamp;
+  expect_rgb_near(texture_lookup(t, {5.f, 0.75f}), kTexels[1], 1e-5f);
+  expect_rgb_near(texture_lookup(t, {-3.f, -3.f}), kTexels[2], 1e-5f);
+  expect_rgb_near(texture_lookup(t, {0.f, 0.75f}), kTexels[0], 1e-5f);
+  expect_rgb_near(texture_lookup(t, {1.f, 0.75f}), kTexels[1], 1e-5f);
+  EXPECT_TRUE(all_finite(texture_lookup(t, {NAN, -INFINITY})));
+  t.nearest = true;
+  expect_rgb_near(texture_lookup(t, {0.49f, 0.51f}), kTexels[0]);
+  expect_rgb_near(texture_lookup(t, {7.f, 0.51f}), kTexels[1]);
+  t.wrap = TextureWrap::mirror;
+  expect_rgb_near(texture_lookup(t, {1.1f, 0.51f}), kTexels[1]);
+}
+
 TEST(TextureLookup, UvScaleAndOffset) {
   TextureView t = two_by_two();
   t.uscale = 2.f;

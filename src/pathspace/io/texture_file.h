@@ -17,13 +17,19 @@ struct TextureUvTransform {
   float uscale = 1.f, vscale = 1.f, udelta = 0.f, vdelta = 0.f;
 };
 
+// How a texture is read between and beyond its texels (scene/texture.h).
+struct TextureSampling {
+  TextureWrap wrap = TextureWrap::repeat;
+  bool nearest = false;
+};
+
 class TextureFiles {
  public:
   // Index of the texture in scene->textures (read on first use). ImageContent::scalar: a float
   // texture such as cutout opacity (image_io.h).
   uint32_t add(Scene* scene, const std::string& path, LdrEncoding ldr, const TextureUvTransform& uv = {},
-               ImageContent content = ImageContent::color) {
-    const Key key{path, int(ldr), int(content), uv.uscale, uv.vscale, uv.udelta, uv.vdelta};
+               ImageContent content = ImageContent::color, const TextureSampling& sampling = {}) {
+    const Key key{path, int(ldr), int(content), uv.uscale, uv.vscale, uv.udelta, uv.vdelta, int(sampling.wrap), sampling.nearest};
     const auto it = loaded_.find(key);
     if (it != loaded_.end()) return it->second;
     Image image = read_image(path, ldr, content);
@@ -36,13 +42,15 @@ class TextureFiles {
     t.vscale = uv.vscale;
     t.udelta = uv.udelta;
     t.vdelta = uv.vdelta;
+    t.wrap = sampling.wrap;
+    t.nearest = sampling.nearest;
     const uint32_t index = scene->add_texture(std::move(t));
     loaded_.emplace(key, index);
     return index;
   }
 
  private:
-  using Key = std::tuple<std::string, int, int, float, float, float, float>;
+  using Key = std::tuple<std::string, int, int, float, float, float, float, int, bool>;
   std::map<Key, uint32_t> loaded_;
 };
 

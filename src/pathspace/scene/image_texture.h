@@ -14,9 +14,10 @@ struct ImageTexture {
   int width = 0, height = 0;
   std::vector<Rgb> texels;  // linear RGB, row 0 at the top
   float uscale = 1.f, vscale = 1.f, udelta = 0.f, vdelta = 0.f;
-  bool nearest = false;  // nearest-texel lookup (procedural patterns baked into a few texels)
+  bool nearest = false;  // nearest-texel lookup (procedural patterns baked into a few texels, Mitsuba's filter_type nearest)
+  TextureWrap wrap = TextureWrap::repeat;
 
-  TextureView view() const { return {texels.data(), width, height, uscale, vscale, udelta, vdelta, nearest}; }
+  TextureView view() const { return {texels.data(), width, height, uscale, vscale, udelta, vdelta, nearest, wrap}; }
   // Mean texel value (stand-in where a texture cannot be bound, e.g. on an emitter).
   Rgb mean() const {
     Rgb sum;

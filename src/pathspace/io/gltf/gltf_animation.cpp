@@ -95,8 +95,13 @@ GltfAnimation::GltfAnimation(const std::string& path, const SceneLoadOptions& op
   Materials materials(c, &scene);
   const CameraNode camera = add_scene_nodes(c, s.pose_at(c, 0.0), &materials, &scene);
   if (scene.triangles.empty()) c.fail("the scene holds no triangles");
-  if (scene.lights.empty()) {
-    c.warn("no emitters in the file: lit by a uniform white environment (radiance 1)");
+  // As glTF viewers do: a file without light sources (KHR_lights_punctual) is lit by an environment,
+  // also when some materials emit (a helmet's glowing visor lights nothing around it).
+  const size_t emitters = scene.lights.size();
+  if (std::all_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return is_area_light(l); })) {
+    c.warn(emitters == 0 ? std::string("no emitters in the file: lit by a uniform white environment (radiance 1)")
+                         : "no light sources in the file (only " + std::to_string(emitters) +
+                               " emissive triangles): lit by a uniform white environment (radiance 1) as well, as glTF viewers do");
     scene.add_environment_light(Rgb(1.f));
     s.white_environment = true;
   }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/environment_file.h"
@@ -15,6 +16,7 @@
 #include "pathspace/io/mitsuba/mitsuba_object.h"
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
+#include "pathspace/scene/scene_validation.h"
 
 namespace pathspace::mitsuba {
 
@@ -160,6 +162,13 @@ class Builder {
   }
 
   void integrator(const Object& o) {
+    if (o.type() == "direct") {  // direct illumination: what PT computes with 2 segments (emission and one bounce)
+      max_segments_ = 2;
+      if (o.get_bool("hide_emitters", false)) w_->add(doc_.loc(o.find("hide_emitters")->node), "hide_emitters is not supported; emitters stay visible");
+      o.ignore({"emitter_samples", "bsdf_samples", "shading_samples"});  // sample counts: the noise, not the expectation
+      o.warn_unused(w_);
+      return;
+    }
     if (o.type() != "path" && o.type() != "volpath") {
       w_->add(o.loc(), "integrator '" + o.type() + "': pathspace renders with the --integrator option (default pt); only max_depth is used");
       for (const pugi::xml_node& inner : o.children("integrator")) return integrator(Object(doc_, inner));  // aov, moment: the wrapped one
@@ -208,8 +217,8 @@ class Builder {
     if (o.type() != "hdrfilm" && o.type() != "ldrfilm") w_->add(o.loc(), "film '" + o.type() + "' treated as hdrfilm");
     film_width_ = o.get_int("width", 768);
     film_height_ = o.get_int("height", 576);
-    if (film_width_ < 1 || film_height_ < 1 || film_width_ > 16384 || film_height_ > 16384)
-      throw Error(o.loc(), "film width and height must be between 1 and 16384");
+    if (film_width_ < 1 || film_height_ < 1 || film_width_ > kMaxImageSide || film_height_ > kMaxImageSide)
+      throw Error(o.loc(), "film width and height must be between 1 and " + std::to_string(kMaxImageSide));
     for (const pugi::xml_node& n : o.children("rfilter")) {
       const Object f(doc_, n);
       if (f.type() != "box") w_->add(f.loc(), "reconstruction filter '" + f.type() + "' not supported: pathspace uses a box filter of one pixel");
@@ -221,7 +230,8 @@ class Builder {
 
   void sampler(const Object& o) {
     spp_ = o.get_int("sample_count", 4);
-    if (spp_ < 1) throw Error(o.loc(), "sample_count must be at least 1");
+    if (spp_ < 1 || spp_ > kMaxSamplesPerPixel)
+      throw Error(o.loc(), "sample_count must be between 1 and " + std::to_string(kMaxSamplesPerPixel) + " (--spp's range)");
     o.ignore_all();  // sampler kind, seed, jitter: they change the noise, not the expectation
   }
 
@@ -250,7 +260,11 @@ class Builder {
     return scene_.add_material(make_bsdf(doc_, b[0], named_, folder_, w_, &textures_));
   }
 
-  void shape(const Object& o) {
+  // <shape type="shapegroup" id="..."> holds shapes that only <shape type="instance"> places; an
+  // instance names its group with <ref id="..."/> (Mitsuba 3's instancing, flattened into copies).
+  void shape(const Object& o, const InstanceTransform& instance = {}) {
+    if (o.type() == "shapegroup") return shape_group(o);
+    if (o.type() == "instance") return place_instance(o);
     const uint32_t material = shape_material(o);
     Rgb radiance;
     for (const pugi::xml_node& n : o.children("emitter")) {
@@ -266,7 +280,33 @@ class Builder {
     const Material& m = scene_.materials[material];
     if (!is_black(radiance) && (!is_black(m.diffuse) || !is_black(m.glossy) || !is_black(m.specular) || m.type != MaterialType::standard))
       w_->add(o.loc(), "an emissive shape's BSDF is ignored (pathspace emitters do not reflect light)");
-    add_shape(o, material, radiance, folder_, shutter_, w_, &scene_);
+    add_shape(o, material, radiance, folder_, shutter_, w_, &scene_, instance);
+    o.warn_unused(w_);
+  }
+
+  void shape_group(const Object& o) {
+    const std::string id = doc_.attr(o.node(), "id");
+    if (id.empty()) throw Error(o.loc(), "a shapegroup needs an id (instances name it)");
+    if (!groups_.emplace(id, o.node()).second) throw Error(o.loc(), "a second shapegroup with id '" + id + "'");
+    for (const pugi::xml_node& n : o.node().children()) {
+      if (n.type() != pugi::node_element) continue;
+      if (std::string(n.name()) != "shape") throw Error(doc_.loc(n), "a shapegroup holds <shape> elements only, not <" + std::string(n.name()) + ">");
+      const std::string inner = doc_.attr(n, "type");
+      if (inner == "shapegroup" || inner == "instance") throw Error(doc_.loc(n), "a shapegroup cannot hold a shapegroup or an instance (nor can Mitsuba 3's)");
+    }
+    o.ignore_all();
+  }
+
+  void place_instance(const Object& o) {
+    const pugi::xml_node ref = o.node().child("ref");
+    const std::string id = ref ? doc_.attr(ref, "id") : std::string();
+    const auto group = groups_.find(id);
+    if (group == groups_.end())
+      throw Error(o.loc(), id.empty() ? std::string("an instance needs <ref id=\"...\"/> naming a shapegroup")
+                                      : "the instance names no shapegroup '" + id + "' defined before it");
+    const InstanceTransform placed = instance_transform(o, shutter_, w_);
+    for (const pugi::xml_node& n : group->second.children("shape")) shape(Object(doc_, n), placed);
+    o.ignore_all();
     o.warn_unused(w_);
   }
 
@@ -406,6 +446,7 @@ class Builder {
   Shutter shutter_;
   FieldOfView fov_;
   float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole
+  std::map<std::string, pugi::xml_node> groups_;  // shapegroups by id, for the instances after them
   int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;
 };
 

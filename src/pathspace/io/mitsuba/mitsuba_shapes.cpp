@@ -5,10 +5,12 @@
 // see mitsuba_textures.h), so a bitmap lands where Mitsuba puts it.
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "pathspace/geometry/sphere_tessellation.h"
+#include "pathspace/geometry/vertex_normals.h"
 #include "pathspace/io/obj_loader.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
 #include "pathspace/io/ply_reader.h"
@@ -179,9 +181,8 @@ LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w)
     // Mitsuba reads PLY uvs as they are and flips OBJ ones unless flip_tex_coords is false.
     if (o.type() == "ply") {
       PlyMesh ply = read_ply(path.string());
-      if (!ply.normals.empty() && !face_normals)
-        w->add(o.loc(), o.title() + ": vertex normals are not used for shading yet (flat shading)");
       m.positions = std::move(ply.positions);
+      if (ply.normals.size() == m.positions.size()) m.normals = std::move(ply.normals);
       m.indices = std::move(ply.indices);
       for (const auto& uv : ply.uvs) m.uvs.push_back(from_mitsuba_uv(uv[0], uv[1]));
     } else {
@@ -193,9 +194,22 @@ LocalMesh mesh_file(const Object& o, const std::string& folder, LoadWarnings* w)
         tmp.uvs.resize(m.positions.size());
         for (const Point2& uv : tmp.uvs) m.uvs.push_back(flip_uv ? uv : Point2{uv.x, 1.f - uv.y});
       }
+      // The file's vn where it gives them; a vertex without one gets a computed normal below.
+      if (!tmp.normals.empty()) tmp.normals.resize(m.positions.size()), m.normals = std::move(tmp.normals);
     }
   } catch (const Error& e) {
     throw Error(o.loc(), o.title() + ": " + e.what());
+  }
+  // As Mitsuba 3: the file's vertex normals, else smooth ones computed from the faces; face_normals
+  // discards both (flat shading).
+  if (face_normals) {
+    m.normals.clear();
+  } else if (m.normals.size() != m.positions.size() ||
+             std::any_of(m.normals.begin(), m.normals.end(), [](const Vec3& n) { return !(dot(n, n) > 0.f); })) {
+    const std::vector<Vec3> computed = angle_weighted_vertex_normals(m.positions, m.indices);
+    m.normals.resize(m.positions.size());
+    for (size_t i = 0; i < m.normals.size(); ++i)
+      if (!(dot(m.normals[i], m.normals[i]) > 0.f)) m.normals[i] = computed[i];
   }
   o.ignore({"face_normals", "max_smooth_angle", "vertex_count", "face_count"});
   return m;
@@ -224,10 +238,18 @@ ShapeTransform shape_transform(const Object& o, const Shutter& shutter, LoadWarn
 
 }  // namespace
 
+InstanceTransform instance_transform(const Object& instance, const Shutter& shutter, LoadWarnings* w) {
+  const ShapeTransform st = shape_transform(instance, shutter, w);
+  return {st.open, st.close};
+}
+
 void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::string& folder, const Shutter& shutter, LoadWarnings* w,
-               Scene* scene) {
+               Scene* scene, const InstanceTransform& instance) {
   const std::string& t = o.type();
-  const ShapeTransform st = shape_transform(o, shutter, w);
+  ShapeTransform st = shape_transform(o, shutter, w);
+  st.open = instance.open * st.open;
+  st.close = instance.close * st.close;
+  st.moving = !(st.open == st.close);
   const Mat4& m = st.open;
   const bool flip_normals = o.get_bool("flip_normals", false);
   // Analytic shapes transform their normal with the inverse transpose, so a mirroring to_world
@@ -258,7 +280,9 @@ void add_shape(const Object& o, uint32_t material, const Rgb& le, const std::str
       add_mesh(mesh, sphere, mirrored != flip_normals, material, le, o.loc(), scene);
     }
   } else if (t == "obj" || t == "ply") {
-    add_mesh(mesh_file(o, folder, w), st, flip_normals, material, le, o.loc(), scene);
+    const LocalMesh mesh = mesh_file(o, folder, w);
+    if (!mesh.normals.empty()) add_normals(mesh.normals, st, flip_normals, scene);
+    add_mesh(mesh, st, flip_normals, material, le, o.loc(), scene);
   } else {
     w->add(o.loc(), "shape type '" + t + "' not supported; skipped");
     o.ignore_all();

@@ -30,16 +30,20 @@ int32_t bind_bitmap(const Object& tex, const std::string& folder, TextureBinding
     throw Error(loc, "texture file '" + file + "' not found (looked for " + path.string() + ")");
   // raw: 8-bit data is linear (Mitsuba's default decodes sRGB); float images are always linear.
   const LdrEncoding ldr = tex.get_bool("raw", false) ? LdrEncoding::linear : LdrEncoding::srgb;
+  TextureSampling sampling;
   const std::string filter = tex.get_string("filter_type", "bilinear");
-  if (filter != "bilinear") w->add(tex.loc(), tex.title() + ": filter_type '" + filter + "' approximated by bilinear filtering");
+  if (filter != "bilinear" && filter != "nearest") throw Error(loc, tex.title() + ": filter_type must be bilinear or nearest, not '" + filter + "'");
+  sampling.nearest = filter == "nearest";
   const std::string wrap = tex.get_string("wrap_mode", "repeat");
-  if (wrap != "repeat") w->add(tex.loc(), tex.title() + ": wrap_mode '" + wrap + "' approximated by repeat");
+  if (wrap == "mirror") sampling.wrap = TextureWrap::mirror;
+  else if (wrap == "clamp") sampling.wrap = TextureWrap::clamp;
+  else if (wrap != "repeat") throw Error(loc, tex.title() + ": wrap_mode must be repeat, mirror or clamp, not '" + wrap + "'");
   const TextureUvTransform uv = uv_transform(tex, w);
   tex.ignore({"format"});
   tex.warn_unused(w);
   uint32_t index = 0;
   try {
-    index = binding->files.add(binding->scene, path.string(), ldr, uv, content);
+    index = binding->files.add(binding->scene, path.string(), ldr, uv, content, sampling);
   } catch (const Error& e) {
     throw Error(loc, "bitmap texture: " + std::string(e.what()));
   }

@@ -112,7 +112,8 @@ const ImageTextureRef* image_param(const Statement& st, const std::string& name,
 }
 
 // An imagemap Texture: its mean colour (the constant stand-in, returned) and, for spectrum textures
-// in a scene, the image itself (bilinear, repeat, uscale/vscale/udelta/vdelta, sRGB or linear).
+// in a scene, the image itself (bilinear or point, repeat or clamp, uscale/vscale/udelta/vdelta,
+// sRGB or linear).
 Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* w) {
   const std::string& name = st.strings[0];
   const Param* file = st.find("filename");
@@ -130,6 +131,9 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
                               float(st.get_float("udelta", 0.0)), float(st.get_float("vdelta", 0.0))};
   const std::string filter = st.get_string("filter", "bilinear");
   const std::string wrap = st.get_string("wrap", "repeat");
+  TextureSampling sampling;  // "point" and "clamp" as pbrt-v4; the rest approximated (warnings below)
+  sampling.nearest = filter == "point";
+  if (wrap == "clamp") sampling.wrap = TextureWrap::clamp;
   const std::string mapping = st.get_string("mapping", "uv");
   st.ignore({"maxanisotropy"});
   const float scale = float(st.get_float("scale", 1.0));
@@ -139,7 +143,7 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
   uint32_t index = 0;
   Rgb value;
   if (image) {
-    index = textures->files.add(textures->scene, path.string(), ldr, uv);
+    index = textures->files.add(textures->scene, path.string(), ldr, uv, ImageContent::color, sampling);
     value = textures->scene->textures[index].mean();
   } else {
     ImageTexture t;
@@ -154,8 +158,9 @@ Rgb add_image_texture(const Statement& st, const std::string& folder, TextureTab
   if (float_image) textures->float_images[name] = {path.string(), ldr, uv, scale};
   if (image) {
     textures->images[name] = {index, Rgb(scale)};
-    if (filter != "bilinear") w->add(st.loc, "imagemap filter \"" + filter + "\" approximated by bilinear filtering (no MIP maps)");
-    if (wrap != "repeat") w->add(st.loc, "imagemap wrap \"" + wrap + "\" approximated by repeat");
+    if (filter != "bilinear" && filter != "point")
+      w->add(st.loc, "imagemap filter \"" + filter + "\" approximated by bilinear filtering (no MIP maps)");
+    if (wrap != "repeat" && wrap != "clamp") w->add(st.loc, "imagemap wrap \"" + wrap + "\" approximated by repeat");
   } else {
     w->add(st.loc, "image texture '" + name + "' approximated by its mean colour (" +
                        std::string(invert ? "invert" : mapping != "uv" ? "mapping \"" + mapping + "\"" : st.strings[1] == "float" ? "float textures" : "no scene") +
