@@ -62,9 +62,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const Light& l : scene.lights) ++lights[light_kind(l.type)];
   for (const Material& m : scene.materials) ++materials[material_kind(m)];
   size_t texels = 0;
-  for (const ImageTexture& t : scene.textures) texels += t.texels.size();
-  // What the images hold in memory as rendered (linear float RGB texels, the environment's too).
-  const size_t texture_bytes = (texels + scene.environment_image.texels.size()) * sizeof(Rgb);
+  size_t texture_bytes = scene.environment_image.texels.size() * sizeof(Rgb);  // as rendered: 8-bit files take 3 bytes a texel
+  for (const ImageTexture& t : scene.textures) texels += t.texel_count(), texture_bytes += t.memory_bytes();
   size_t moving_vertices = 0;  // motion blur (scene/motion.h): vertices that move while the shutter is open
   for (size_t i = 0; i < scene.positions_end.size(); ++i) moving_vertices += !(scene.positions_end[i] == scene.positions[i]);
   const PerspectiveCamera& c = scene.camera;

@@ -33,9 +33,10 @@ TEST(InfoScene, CountsAndWarningsWithTheirLocation) {
   EXPECT_EQ(parsed["lights"]["area (triangles)"], 2);
   EXPECT_EQ(parsed["materials"]["diffuse"], 4);
   EXPECT_EQ(parsed["warnings"].size(), 1u);
-  // Texture memory as rendered: 12 bytes (float RGB) a texel, the environment image's included.
+  // Texture memory as rendered: the room's PNG textures 3 bytes a texel (8-bit kept as 8-bit), its
+  // environment image 12 (float RGB).
   const size_t env = parsed["environment_image"].is_null() ? 0 : size_t(parsed["environment_image"][0]) * size_t(parsed["environment_image"][1]);
-  EXPECT_EQ(parsed["texture_bytes"], (size_t(parsed["texels"]) + env) * 12);
+  EXPECT_EQ(parsed["texture_bytes"], size_t(parsed["texels"]) * 3 + env * 12);
   EXPECT_NE(r.out.find("MiB in memory"), std::string::npos) << r.out;
 }
 

@@ -80,8 +80,8 @@ TEST(CutoutLoading, MitsubaMaskSetsOpacity) {
   const Material tm = material(t);
   ASSERT_GE(tm.opacity_texture, 0);
   EXPECT_FLOAT_EQ(tm.opacity, 1.f);
-  EXPECT_EQ(t.textures[size_t(tm.opacity_texture)].texels[0], Rgb(0.f));
-  EXPECT_EQ(t.textures[size_t(tm.opacity_texture)].texels[1], Rgb(1.f));
+  EXPECT_EQ(t.textures[size_t(tm.opacity_texture)].texel(0), Rgb(0.f));
+  EXPECT_EQ(t.textures[size_t(tm.opacity_texture)].texel(1), Rgb(1.f));
   EXPECT_TRUE(t.view().has_cutouts);
   EXPECT_THROW(load_mitsuba("<shape type=\"rectangle\"><bsdf type=\"mask\"><float name=\"opacity\" value=\"1.5\"/>"
                             "<bsdf type=\"diffuse\"/></bsdf></shape>",
@@ -118,8 +118,8 @@ TEST(CutoutLoading, PbrtShapeAlphaSetsOpacityOnACopyOfTheMaterial) {
                             dir.path.string());
   const Material& m = t.materials[t.triangles[0].material];
   ASSERT_GE(m.opacity_texture, 0);
-  EXPECT_EQ(t.textures[size_t(m.opacity_texture)].texels[0], Rgb(1.f));
-  EXPECT_EQ(t.textures[size_t(m.opacity_texture)].texels[1], Rgb(0.f));
+  EXPECT_EQ(t.textures[size_t(m.opacity_texture)].texel(0), Rgb(1.f));
+  EXPECT_EQ(t.textures[size_t(m.opacity_texture)].texel(1), Rgb(0.f));
   try {
     load_pbrt(kTriangle + "\"float alpha\" 2\n", dir.path.string());
     ADD_FAILURE() << "alpha 2 was accepted";

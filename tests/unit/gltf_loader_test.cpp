@@ -306,8 +306,8 @@ void expect_texture(const Loaded& l) {
   ASSERT_GE(m.diffuse_texture, 0);
   const ImageTexture& t = sc.textures[size_t(m.diffuse_texture)];
   ASSERT_EQ(t.width, 2);
-  EXPECT_NEAR(t.texels[0].r, 1.f, 1e-3f);  // sRGB-decoded red
-  EXPECT_NEAR(t.texels[3].b, 1.f, 1e-3f);
+  EXPECT_NEAR(t.texel(0).r, 1.f, 1e-3f);  // sRGB-decoded red
+  EXPECT_NEAR(t.texel(3).b, 1.f, 1e-3f);
   EXPECT_NEAR(m.diffuse.r, 0.5f * 0.96f, 1e-6f);  // the factor multiplies the texture
   // glTF uv (0,0) is the image's top-left corner; ours is the bottom-left: v is flipped.
   ASSERT_EQ(sc.uvs.size(), sc.positions.size());
@@ -344,6 +344,33 @@ TEST(GltfLoader, ExternalAndEmbeddedTextures) {
     EXPECT_EQ(l.scene.materials[l.scene.triangles[0].material].diffuse_texture, -1);
     EXPECT_TRUE(l.warned("images[0] not used"));
   }
+}
+
+// An emissiveTexture is the emitting triangles' emission map (the factor times the texture at uv),
+// and a sampler's CLAMP_TO_EDGE and NEAREST reach the texture.
+TEST(GltfLoader, EmissiveTextureIsTheLightsMap) {
+  testing::TempDir dir("gltf");
+  const std::string png = png_2x2(dir);
+  GltfBuilder b;
+  std::string rest = textured_scene(b, R"({"uri":"tex.png"})");
+  const std::string material = R"("materials":[{"pbrMetallicRoughness":{"metallicFactor":0,"baseColorFactor":[0.5,1,1,1],"baseColorTexture":{"index":0}}}])";
+  rest.replace(rest.find(material), material.size(),
+               R"("materials":[{"emissiveFactor":[1,0.5,1],"emissiveTexture":{"index":0},"pbrMetallicRoughness":{"metallicFactor":0}}],)"
+               R"("samplers":[{"wrapS":33071,"wrapT":33071,"magFilter":9728}])");
+  const std::string textures = R"("textures":[{"source":0}])";
+  rest.replace(rest.find(textures), textures.size(), R"("textures":[{"source":0,"sampler":0}])");
+  const Loaded l = load_text(dir, "glow.gltf", b.gltf(rest));
+  const Scene& sc = l.scene;
+  ASSERT_EQ(sc.lights.size(), 2u);  // the triangle, and the environment of a file without light sources
+  const Light& glow = sc.lights[0];
+  EXPECT_EQ(glow.type, LightType::area_triangle);
+  ASSERT_GE(glow.texture, 0);
+  EXPECT_EQ(glow.value, Rgb(1.f, 0.5f, 1.f));
+  const ImageTexture& t = sc.textures[size_t(glow.texture)];
+  EXPECT_NEAR(t.texel(0).r, 1.f, 1e-3f);
+  EXPECT_EQ(t.wrap, TextureWrap::clamp);
+  EXPECT_TRUE(t.nearest);
+  EXPECT_FALSE(l.warned("emissiveTexture"));
 }
 
 TEST(GltfLoader, GlbMatchesGltf) {

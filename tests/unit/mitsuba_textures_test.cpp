@@ -110,8 +110,8 @@ TEST(MitsubaTextures, RawFilterWrapAndSharing) {
           "</bsdf></shape>",
       dir.path.string());
   ASSERT_EQ(r.scene.textures.size(), 2u);  // sRGB (shared by three materials) and raw
-  EXPECT_NEAR(r.scene.textures[0].texels[0].r, 0.5f, 3e-3f);
-  EXPECT_NEAR(r.scene.textures[1].texels[0].r, 188.f / 255.f, 1e-6f);
+  EXPECT_NEAR(r.scene.textures[0].texel(0).r, 0.5f, 3e-3f);
+  EXPECT_NEAR(r.scene.textures[1].texel(0).r, 188.f / 255.f, 1e-6f);
   EXPECT_EQ(r.scene.textures[1].wrap, TextureWrap::mirror);  // wrap and filter are the texture's own
   EXPECT_TRUE(r.scene.textures[1].nearest);
   EXPECT_EQ(r.scene.textures[0].wrap, TextureWrap::repeat);

@@ -47,9 +47,9 @@ TEST(ObjTextures, MapKdBindsTheImageWithVertexUvs) {
   EXPECT_EQ(t.width, 2);
   EXPECT_EQ(t.uscale, 2.f);
   EXPECT_EQ(t.vscale, 3.f);
-  EXPECT_NEAR(t.texels[3].r, 1.f, 1e-6f);
+  EXPECT_NEAR(t.texel(3).r, 1.f, 1e-6f);
   // The PNG stores sRGB 8 bit: a linear read of a (linear 1, 0, 0) texel is still (1, 0, 0).
-  EXPECT_NEAR(s.textures[size_t(lin.diffuse_texture)].texels[0].r, 1.f, 1e-6f);
+  EXPECT_NEAR(s.textures[size_t(lin.diffuse_texture)].texel(0).r, 1.f, 1e-6f);
   // Corners with vt became vertices with uvs; the untextured triangle keeps its material colour.
   ASSERT_EQ(s.uvs.size(), s.positions.size());
   const uint32_t* v = s.triangles[1].v;

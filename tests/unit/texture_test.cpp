@@ -109,9 +109,9 @@ TEST(TextureFiles, PngIsSrgbDecodedUnlessLinear) {
   const uint32_t linear = files.add(&scene, path, LdrEncoding::linear);
   EXPECT_EQ(files.add(&scene, path, LdrEncoding::srgb), srgb);  // read once per encoding
   ASSERT_EQ(scene.textures.size(), 2u);
-  EXPECT_NEAR(scene.textures[srgb].texels[0].g, 0.2158605f, 1e-6f);
-  EXPECT_NEAR(scene.textures[linear].texels[0].g, 128.f / 255.f, 1e-6f);
-  expect_rgb_near(scene.textures[srgb].texels[1], Rgb(1.f, 0.f, 0.f));
+  EXPECT_NEAR(scene.textures[srgb].texel(0).g, 0.2158605f, 1e-6f);
+  EXPECT_NEAR(scene.textures[linear].texel(0).g, 128.f / 255.f, 1e-6f);
+  expect_rgb_near(scene.textures[srgb].texel(1), Rgb(1.f, 0.f, 0.f));
   EXPECT_THROW(files.add(&scene, dir.file("missing.png"), LdrEncoding::srgb), Error);
 }
 

@@ -9,6 +9,7 @@
 #include "pathspace/math/frame.h"
 #include "pathspace/math/rgb.h"
 #include "pathspace/math/scalar.h"
+#include "pathspace/math/srgb.h"
 #include "pathspace/math/vec3.h"
 #include "pathspace/parallel/atomics.h"
 #include "pathspace/stats/path_counters.h"
@@ -146,7 +147,7 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
   acc += shadow.tmax + scene.bounds.radius;
   acc += cosine_hemisphere_pdf(square_to_cosine_hemisphere(u)) + uniform_cone_pdf(0.5f) +
          square_to_uniform_sphere(disk_concentric_to_square(square_to_disk_concentric(u))).z;
-  out[i] = sum + Rgb(acc + float(to_srgb8(acc)));
+  out[i] = sum + Rgb(acc + float(to_srgb8(acc)) + linear_from_srgb(u.y) + srgb_from_linear(u.x));
 }
 
 // Binder et al. 2021 algorithm 1 and sec. 3.2 on the device: key, hashes, insertion, atomic adds.

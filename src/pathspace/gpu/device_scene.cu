@@ -38,7 +38,14 @@ DeviceScene::DeviceScene(const Scene& scene) {
   view_.lights = upload(h.lights, h.num_lights);
   // Textures: each view's texels first, then the array of views pointing at them.
   std::vector<TextureView> textures(h.textures, h.textures + h.num_textures);
-  for (TextureView& t : textures) t.texels = upload(t.texels, size_t(t.width) * size_t(t.height));
+  for (TextureView& t : textures) {
+    if (t.bytes) {  // an 8-bit texture: its bytes and its 256 byte values
+      t.bytes = upload(t.bytes, 3 * size_t(t.width) * size_t(t.height));
+      t.byte_values = upload(t.byte_values, 256);
+    } else {
+      t.texels = upload(t.texels, size_t(t.width) * size_t(t.height));
+    }
+  }
   view_.textures = upload(textures.data(), textures.size());
   auto up = [this](const auto* p, size_t n) { return upload(p, n); };
   view_.light_selection = device_discrete(h.light_selection, up);

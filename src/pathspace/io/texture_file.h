@@ -1,6 +1,6 @@
 // Image files as scene textures: read through image_io (EXR, PFM, PNG, JPG, TGA, HDR, BMP) into a
 // Scene's texture store. A file shared by several materials with the same encoding and uv transform
-// is read and stored once. Read errors are image_io's pathspace::Error naming the file.
+// is read and stored once; an 8-bit file's colours are kept as 8 bits (scene/texture_bytes.h). Read errors are image_io's pathspace::Error naming the file.
 #pragma once
 
 #include <map>
@@ -10,6 +10,7 @@
 
 #include "pathspace/io/image_io.h"
 #include "pathspace/scene/scene.h"
+#include "pathspace/scene/texture_bytes.h"
 
 namespace pathspace {
 
@@ -44,6 +45,7 @@ class TextureFiles {
     t.vdelta = uv.vdelta;
     t.wrap = sampling.wrap;
     t.nearest = sampling.nearest;
+    if (content == ImageContent::color) compact_to_bytes(&t, ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear);
     const uint32_t index = scene->add_texture(std::move(t));
     loaded_.emplace(key, index);
     return index;

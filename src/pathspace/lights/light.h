@@ -46,6 +46,8 @@ struct Light {
   // uv = (0.5 + uv_scale_u x / z, 0.5 + uv_scale_v y / z); a projector emits only where uv lies in
   // [0, 1]^2. With irradiance_plane (Mitsuba's projector) the image is the irradiance on that plane,
   // so the intensity is value * image / cos^3; otherwise (pbrt-v4) value * image.
+  // An area triangle's texture is its emission map (glTF emissiveTexture): radiance value * texture
+  // at the surface's uv (scene/light_sampling.h area_light_radiance), positions sampled by area.
   int32_t texture = -1;
   Vec3 axis_u, axis_v;
   float uv_scale_u = 0.5f, uv_scale_v = 0.5f;

@@ -15,6 +15,7 @@ struct EmissionSample {
   Vec3 ng;                // the light's geometric normal at p (area lights), for two-sided emitters
   Vec3 d;                 // unit propagation direction
   Rgb le;                 // emitted radiance at (p, d) for area/environment lights; I or E for delta lights
+  Point2 uv;              // area triangles: the surface's texture coordinates at p (an emission map's)
   Rgb weight;             // le |cos| / (pdf_a pdf_w): the light-path throughput after emission
   float pdf_a = 0.f;      // area density of p (1 for a point light)
   float pdf_w = 0.f;      // solid-angle density of d (1 for a directional light)
@@ -73,6 +74,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
         p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
         n = triangle_normal(p0, p1, p2);
         area = triangle_area(p0, p1, p2);
+        e->uv = triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y);
       } else {
         const Sphere& sp = scene.spheres[l.shape];
         p = sp.center + square_to_uniform_sphere(u_pos) * sp.radius;
@@ -87,10 +89,10 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
       e->p = p;
       e->n = side;
       e->ng = n;
-      e->le = l.value;
+      e->le = area_light_radiance(scene, l, side, side, e->uv);  // along the emitting side: the light's value (and map)
       e->pdf_a = 1.f / area;
       e->pdf_w = pdf_w;
-      e->weight = l.value * (c / (e->pdf_a * pdf_w));
+      e->weight = e->le * (c / (e->pdf_a * pdf_w));
       return !is_black(e->le);
     }
     case LightType::point:

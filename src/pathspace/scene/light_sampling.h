@@ -5,6 +5,7 @@
 #pragma once
 
 #include "pathspace/geometry/interaction.h"
+#include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/scene/environment_light.h"
 #include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/lights/light.h"
@@ -20,6 +21,15 @@ PS_INLINE Rgb area_light_radiance(const Light& l, const Vec3& n, const Vec3& w) 
   const float c = dot(n, w);
   if (c > kMinEmitterCosine || (l.two_sided && c < -kMinEmitterCosine)) return l.value;
   return {};
+}
+
+// The same at a point with texture coordinates uv: times the light's emission map there, if it has
+// one (an area triangle's texture, glTF emissiveTexture). Every place that sees an area light's
+// radiance (a hit, a light sample, a light path's first vertex) goes through here.
+PS_INLINE Rgb area_light_radiance(const SceneView& scene, const Light& l, const Vec3& n, const Vec3& w, Point2 uv) {
+  const Rgb le = area_light_radiance(l, n, w);
+  if (l.texture < 0 || is_black(le)) return le;
+  return le * texture_lookup(scene.textures[l.texture], uv);
 }
 
 namespace detail {
@@ -46,7 +56,7 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       s->wi = d / dist;
       s->dist = dist;
       s->p = p;
-      s->li = area_light_radiance(l, n, -s->wi);
+      s->li = area_light_radiance(scene, l, n, -s->wi, triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y));
       s->pdf_w = detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
       s->delta = false;
       return s->pdf_w > 0.f && !is_black(s->li);

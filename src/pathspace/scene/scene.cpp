@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "pathspace/base/error.h"
+#include "pathspace/geometry/surface_attributes.h"
+#include "pathspace/sampling/warps.h"
 #include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/scene/surface_opacity.h"
 
@@ -170,6 +172,20 @@ float imaged_point_light_power(const Light& l, const std::vector<ImageTexture>& 
   return float(sum * 4.0 * hu * hv / (double(n) * n));
 }
 
+// The mean of an emission map over one triangle, by 8 x 8 stratified points of uniform area
+// density: what its texture makes of the triangle's power. It weights light selection only.
+Rgb triangle_texture_mean(const ImageTexture& texture, const Triangle& tri, const std::vector<Point2>& uvs) {
+  constexpr int kSide = 8;
+  const TextureView view = texture.view();
+  Rgb sum;
+  for (int j = 0; j < kSide; ++j)
+    for (int i = 0; i < kSide; ++i) {
+      const Point2 b = square_to_triangle_barycentric({(float(i) + 0.5f) / kSide, (float(j) + 0.5f) / kSide});
+      sum += texture_lookup(view, triangle_uv(tri, uvs.size() > tri.v[0] && uvs.size() > tri.v[1] && uvs.size() > tri.v[2] ? uvs.data() : nullptr, b.y, 1.f - b.x - b.y));
+    }
+  return sum * (1.f / float(kSide * kSide));
+}
+
 }  // namespace
 
 float Scene::light_power(size_t i) const {
@@ -179,7 +195,8 @@ float Scene::light_power(size_t i) const {
     case LightType::area_triangle: {
       const Triangle& t = triangles[l.shape];
       const float area = triangle_area(positions[t.v[0]], positions[t.v[1]], positions[t.v[2]]);
-      return kPi * area * luminance(l.value) * (l.two_sided ? 2.f : 1.f);
+      const Rgb value = l.texture >= 0 ? l.value * triangle_texture_mean(textures[size_t(l.texture)], t, uvs) : l.value;
+      return kPi * area * luminance(value) * (l.two_sided ? 2.f : 1.f);
     }
     case LightType::area_sphere: {
       const float rs = spheres[l.shape].radius;
@@ -295,7 +312,7 @@ void Scene::finalize() {
   }
   for (size_t i = 0; i < textures.size(); ++i) {
     const ImageTexture& t = textures[i];
-    if (t.width <= 0 || t.height <= 0 || t.texels.size() != size_t(t.width) * size_t(t.height))
+    if (t.width <= 0 || t.height <= 0 || t.texel_count() != size_t(t.width) * size_t(t.height))
       throw Error("texture " + std::to_string(i) + " ('" + t.name + "') has no or inconsistent texels");
   }
   for (size_t i = 0; i < materials.size(); ++i)
@@ -309,7 +326,8 @@ void Scene::finalize() {
     l.image_max = 1.f;
     if (l.texture >= 0) {
       l.image_max = 0.f;
-      for (const Rgb& t : textures[size_t(l.texture)].texels) l.image_max = std::max(l.image_max, max_component(t));
+      const ImageTexture& t = textures[size_t(l.texture)];
+      for (size_t k = 0; k < t.texel_count(); ++k) l.image_max = std::max(l.image_max, max_component(t.texel(k)));
     }
     const size_t shapes = l.type == LightType::area_triangle ? triangles.size() : spheres.size();
     if ((l.type == LightType::area_triangle || l.type == LightType::area_sphere) && l.shape >= shapes)
@@ -384,7 +402,8 @@ SceneView Scene::view() const {
   v.materials = materials.data();
   v.num_materials = uint32_t(materials.size());
   bool fresh = texture_views_.size() == textures.size();
-  for (size_t i = 0; fresh && i < textures.size(); ++i) fresh = texture_views_[i].texels == textures[i].texels.data();
+  for (size_t i = 0; fresh && i < textures.size(); ++i)
+    fresh = texture_views_[i].texels == textures[i].texels.data() && texture_views_[i].bytes == textures[i].view().bytes;
   if (!fresh) {
     texture_views_.clear();
     for (const ImageTexture& t : textures) texture_views_.push_back(t.view());

@@ -166,7 +166,7 @@ void validate_scene(const Scene& scene, std::vector<std::string>* warnings) {
     const std::string name = "texture " + std::to_string(i) + " ('" + t.name + "')";
     if (!std::isfinite(t.uscale) || !std::isfinite(t.vscale) || !std::isfinite(t.udelta) || !std::isfinite(t.vdelta))
       fail(src.find(K::kTexture, i), name + ": its uv scale and offset must be finite");
-    check_texels(t.texels, t.width, name, src.find(K::kTexture, i), warnings);
+    check_texels(t.texels, t.width, name, src.find(K::kTexture, i), warnings);  // 8-bit ones (bytes) are finite and >= 0
   }
   if (!scene.environment_image.empty()) {
     const FileLoc* at = nullptr;  // the environment light's statement

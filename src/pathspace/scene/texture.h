@@ -24,6 +24,10 @@ struct TextureView {
   float udelta = 0.f, vdelta = 0.f;  // pbrt's udelta / vdelta
   bool nearest = false;              // nearest texel instead of bilinear
   TextureWrap wrap = TextureWrap::repeat;
+  // An 8-bit texture (scene/texture_bytes.h): 3 bytes a texel and each byte's linear value, used
+  // instead of `texels` when set.
+  const uint8_t* bytes = nullptr;
+  const float* byte_values = nullptr;
 };
 
 namespace texture_detail {
@@ -52,7 +56,12 @@ PS_INLINE int wrap_index(int i, int n, TextureWrap wrap) {
 }  // namespace texture_detail
 
 PS_INLINE Rgb texture_texel(const TextureView& t, int x, int y) {
-  return t.texels[size_t(y) * size_t(t.width) + size_t(x)];
+  const size_t i = size_t(y) * size_t(t.width) + size_t(x);
+  if (t.bytes) {
+    const uint8_t* b = t.bytes + 3 * i;
+    return Rgb(t.byte_values[b[0]], t.byte_values[b[1]], t.byte_values[b[2]]);
+  }
+  return t.texels[i];
 }
 
 // Bilinear lookup: texel (i, j) has its centre at ((i + 0.5) / width, 1 - (j + 0.5) / height).

@@ -99,7 +99,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   if (is_area_light(light)) {
     CameraProjection pr;
     if (cam.connect(e.p, connection_lens_sample(cam, sampler, 0), &pr)) {
-      const Rgb le = area_light_radiance(light, e.ng, pr.wi);
+      const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
@@ -368,7 +368,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     if (hit.light != kNoLight) {
       // s = 0 (eq. 43). Directly seen, its only rival is the emitter splat s = 1, t = 1.
       const Light& light = scene.lights[hit.light];
-      const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
+      const Rgb le = area_light_radiance(scene, light, hit.ng, -ray.d, hit.uv);
       if (!is_black(le)) {
         const float pick = scene.light_selection.probability(uint32_t(hit.light));
         float pa, pw;

@@ -113,7 +113,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   if (!settings.skip_emitter && is_area_light(light)) {
     Projection pr;
     if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
-      const Rgb le = area_light_radiance(light, e.ng, pr.wi);
+      const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;

@@ -181,7 +181,7 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
     }
     // EL is the light tracer's emitter splat; emission behind >= 1 non-diffuse bounce is ES+L.
     if (hit.light != kNoLight && bounces > 0 && settings.specular_emission)
-      out->direct += beta * area_light_radiance(scene.lights[hit.light], hit.ng, -ray.d);
+      out->direct += beta * area_light_radiance(scene, scene.lights[hit.light], hit.ng, -ray.d, hit.uv);
     if (segments >= max_segments) return;  // a light path needs at least one more segment
 
     Material textured;
@@ -308,7 +308,7 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
   if (is_area_light(light)) {  // EL, as LT
     Projection pr;
     if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
-      const Rgb le = area_light_radiance(light, e.ng, pr.wi);
+      const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le) && (++lc->visibility_tests, projection_visible(scene, tracer, lv, e.p, e.ng, pr, counters))) {
         ++lc->projections;
         const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * lv.inv_paths;

@@ -203,7 +203,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
 
   if (hit.light != kNoLight && s->caustic_chain != 2) {
     const Light& light = scene.lights[hit.light];
-    const Rgb le = area_light_radiance(light, hit.ng, -ray.d);
+    const Rgb le = area_light_radiance(scene, light, hit.ng, -ray.d, hit.uv);
     if (!is_black(le)) {
       if (s->after_delta || !settings.nee) {
         s->radiance() += s->beta * le;

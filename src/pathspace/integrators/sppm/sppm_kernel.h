@@ -96,7 +96,7 @@ PS_HD void sppm_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
       break;
     }
     // Without next event estimation emission always counts with weight 1.
-    if (hit.light != kNoLight) radiance += beta * area_light_radiance(scene.lights[hit.light], hit.ng, -ray.d);
+    if (hit.light != kNoLight) radiance += beta * area_light_radiance(scene, scene.lights[hit.light], hit.ng, -ray.d, hit.uv);
     if (segments >= max_segments) break;  // a photon needs at least one more segment
 
     Material textured;

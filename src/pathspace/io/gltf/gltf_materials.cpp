@@ -114,13 +114,10 @@ Surface Materials::build(int index) {
   const float strength = extension_number(c_, mt.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.f, name);
   if (strength < 0.f) c_.fail(name + ".extensions.KHR_materials_emissive_strength.emissiveStrength is negative");
   s.emission = s.emission * strength;
-  if (mt.emissiveTexture.index >= 0 && !is_black(s.emission)) {
-    const std::string what = name + ".emissiveTexture";
-    if (const auto mean = textures_.mean(mt.emissiveTexture.index, LdrEncoding::srgb, what)) {
-      s.emission = s.emission * *mean;
-      c_.warn(what + " replaced by its mean colour (emission is constant per triangle)");
-    }
-  }
+  // The emission map multiplies emissiveFactor at the surface's uv (an unreadable image: the factor
+  // alone, with textures_' warning).
+  if (mt.emissiveTexture.index >= 0 && !is_black(s.emission))
+    s.emission_texture = textures_.texture(mt.emissiveTexture, LdrEncoding::srgb, name + ".emissiveTexture");
   if (!(std::min({s.emission.r, s.emission.g, s.emission.b}) >= 0.f)) c_.fail(name + ".emissiveFactor is negative");
 
   if (mt.normalTexture.index >= 0) c_.warn(name + ".normalTexture ignored");

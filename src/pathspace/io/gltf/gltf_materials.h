@@ -22,6 +22,7 @@ namespace pathspace::gltf {
 struct Surface {
   uint32_t material = 0;  // index into Scene::materials
   Rgb emission;           // area light radiance; black: no light
+  int32_t emission_texture = -1;  // its emission map (emissiveTexture, sRGB), a scene texture; -1: none
   bool two_sided = false; // doubleSided: emits (and, for diffuse and Phong lobes, reflects) on both sides
 };
 

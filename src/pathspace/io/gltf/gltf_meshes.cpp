@@ -94,6 +94,7 @@ void add_primitive(const Context& c, const tinygltf::Primitive& p, const std::st
       l.type = LightType::area_triangle;
       l.shape = uint32_t(scene->triangles.size());
       l.value = surface.emission;
+      l.texture = surface.emission_texture;
       l.two_sided = surface.two_sided;
       tri.light = int32_t(scene->lights.size());
       scene->lights.push_back(l);

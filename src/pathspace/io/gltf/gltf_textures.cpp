@@ -1,6 +1,8 @@
 // glTF textures and images (see gltf_textures.h).
 #include "pathspace/io/gltf/gltf_textures.h"
 
+#include "pathspace/scene/texture_bytes.h"
+
 #include <filesystem>
 
 namespace pathspace::gltf {
@@ -22,6 +24,16 @@ std::string decode_uri(const std::string& uri) {
   return out;
 }
 
+// A sampler's addressing and magnification (no MIP maps: minFilter is not used).
+void apply_sampler(const tinygltf::Model& m, const tinygltf::Texture& t, ImageTexture* out) {
+  if (t.sampler < 0 || size_t(t.sampler) >= m.samplers.size()) return;  // glTF's default: repeat, linear
+  const tinygltf::Sampler& s = m.samplers[size_t(t.sampler)];
+  out->wrap = s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::clamp
+              : s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::mirror
+                                                                 : TextureWrap::repeat;
+  out->nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+}
+
 }  // namespace
 
 const Image* Textures::image(int texture_index, LdrEncoding ldr, const std::string& what) {
@@ -35,8 +47,8 @@ const Image* Textures::image(int texture_index, LdrEncoding ldr, const std::stri
   if (t.sampler >= 0) {
     check_index(c_, t.sampler, m.samplers.size(), tname + ".sampler");
     const tinygltf::Sampler& s = m.samplers[size_t(t.sampler)];
-    if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-      c_.warn(element("samplers", size_t(t.sampler)) + ": wrap modes other than REPEAT are approximated by REPEAT");
+    if (s.wrapS != s.wrapT)
+      c_.warn(element("samplers", size_t(t.sampler)) + ": wrapS and wrapT differ; wrapS is used for both (one mode a texture)");
   }
   if (t.source < 0) {
     c_.warn(tname + " has no source image (image extensions such as KHR_texture_basisu are not supported); constant factor used");
@@ -74,7 +86,12 @@ int32_t Textures::texture(const tinygltf::TextureInfo& info, LdrEncoding ldr, co
     t.name = c_.path + " " + element("textures", size_t(info.index));
     t.width = img->width;
     t.height = img->height;
-    t.texels = img->pixels;
+    // The decoded floats move into the texture and leave the cache (a later mean() decodes again):
+    // a 2048^2 image is not held twice while the scene loads.
+    t.texels = std::move(images_[key]->pixels);
+    images_.erase(key);
+    apply_sampler(c_.model, c_.model.textures[size_t(info.index)], &t);
+    compact_to_bytes(&t, ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear);  // 8-bit images stay 8-bit
     index = int32_t(scene_->add_texture(std::move(t)));
   }
   scene_textures_[key] = index;
@@ -82,11 +99,15 @@ int32_t Textures::texture(const tinygltf::TextureInfo& info, LdrEncoding ldr, co
 }
 
 std::optional<Rgb> Textures::mean(int texture_index, LdrEncoding ldr, const std::string& what) {
+  const auto key = std::make_pair(texture_index, ldr);
+  if (const auto it = means_.find(key); it != means_.end()) return it->second;
   const Image* img = image(texture_index, ldr, what);
   if (!img) return std::nullopt;
   Rgb sum;
   for (const Rgb& p : img->pixels) sum += p;
-  return sum * (1.f / float(img->pixels.size()));
+  const Rgb m = sum * (1.f / float(img->pixels.size()));
+  images_.erase(key);  // only its mean is kept (a texture() of it decodes again)
+  return means_[key] = m;
 }
 
 }  // namespace pathspace::gltf

@@ -33,7 +33,10 @@ class Textures {
 
   const Context& c_;
   Scene* scene_;
+  // Decoded images wait here only until texture() or mean() uses them: a scene's float images are
+  // never all in memory at once.
   std::map<std::pair<int, LdrEncoding>, std::optional<Image>> images_;
+  std::map<std::pair<int, LdrEncoding>, Rgb> means_;
   std::map<std::pair<int, LdrEncoding>, int32_t> scene_textures_;
 };
 
