@@ -9,6 +9,7 @@
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/io/ply_reader.h"
 #include "pathspace/io/scene_loader.h"
+#include "pathspace/scene/image_texture.h"
 #if PATHSPACE_HAS_MITSUBA
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
 #endif
@@ -72,6 +73,16 @@ Scene load(Format format, std::string_view bytes, const std::string& folder) {
           throw std::logic_error("the scalar read of an image has another size");
         for (const Rgb& t : scalar.pixels)
           if ((t.r == t.r) && (t.g != t.r || t.b != t.r)) throw std::logic_error("a scalar texel differs between channels");
+        // An 8-bit file read as bytes (textures kept as 8 bits) is the same image: each byte's table
+        // value is the float the colour read gave.
+        if (const auto b = decode_image_bytes(name, std::string(bytes.substr(1)))) {
+          if (b->width != image.width || b->height != image.height || b->rgb.size() != 3 * image.pixels.size())
+            throw std::logic_error("the byte read of an image has another size");
+          const float* value = texture_byte_values(ByteEncoding::srgb);
+          for (size_t i = 0; i < image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+              if (value[b->rgb[3 * i + size_t(c)]] != image.pixels[i][c]) throw std::logic_error("the byte read differs from the float read");
+        }
       } catch (const Error& e) {
         // The readers name the file at the start of the message; the fuzz contract wants it as a location.
         if (std::string_view(e.what()).substr(0, name.size()) != name) throw std::logic_error(std::string("image error without its file: ") + e.what());

@@ -1,60 +1,41 @@
-// 8-bit textures kept as 8 bits (scene/texture_bytes.h): a texture of 8-bit values compacts to
-// 3 bytes a texel and looks up the very same floats (bit for bit) at every point; a texture with any
-// other value stays float; a PNG read as a scene texture is compacted, a float file is not.
+// 8-bit textures kept as 8 bits (scene/image_texture.h): a byte texture looks up the very same
+// floats (bit for bit) as the float texture of its decoded values, at every point and in every
+// addressing mode; files read as scene textures are bytes when 8-bit (PNG) and floats otherwise
+// (EXR), and their bytes decode to exactly what the float reader gives.
 #include <gtest/gtest.h>
 
 #include <cstring>
 
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/texture_file.h"
-#include "pathspace/math/srgb.h"
-#include "pathspace/scene/texture_bytes.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
 namespace {
 
-ImageTexture decoded_8bit(ByteEncoding e) {
-  ImageTexture t;
-  t.width = 5;
-  t.height = 3;
-  for (int i = 0; i < 15; ++i) {
-    const int b[3] = {(i * 37) % 256, (i * 91 + 7) % 256, 255 - (i * 13) % 256};
-    Rgb c;
-    for (int k = 0; k < 3; ++k) c[k] = e == ByteEncoding::srgb ? linear_from_srgb(float(b[k]) / 255.f) : float(b[k]) / 255.f;
-    t.texels.push_back(c);
-  }
-  return t;
-}
-
 bool same_bits(const Rgb& a, const Rgb& b) { return std::memcmp(&a, &b, sizeof(Rgb)) == 0; }
 
-TEST(TextureBytes, CompactedLookupsAreBitIdentical) {
+TEST(TextureBytes, LookupsAreTheFloatTexturesBitForBit) {
   for (const ByteEncoding e : {ByteEncoding::srgb, ByteEncoding::linear})
-    for (const TextureWrap wrap : {TextureWrap::repeat, TextureWrap::mirror, TextureWrap::clamp}) {
-      ImageTexture floats = decoded_8bit(e);
-      floats.wrap = wrap;
-      ImageTexture bytes = floats;
-      ASSERT_TRUE(compact_to_bytes(&bytes, e));
-      EXPECT_TRUE(bytes.texels.empty());
-      EXPECT_EQ(bytes.memory_bytes(), 15u * 3u);
-      EXPECT_EQ(bytes.texel_count(), 15u);
-      for (size_t i = 0; i < 15; ++i) EXPECT_TRUE(same_bits(bytes.texel(i), floats.texels[i])) << i;
-      for (float u = -1.3f; u < 2.f; u += 0.173f)
-        for (float v = -0.7f; v < 1.6f; v += 0.131f)
-          ASSERT_TRUE(same_bits(texture_lookup(bytes.view(), {u, v}), texture_lookup(floats.view(), {u, v}))) << u << " " << v;
-      EXPECT_TRUE(same_bits(bytes.mean(), floats.mean()));
-    }
-}
-
-TEST(TextureBytes, OtherValuesStayFloat) {
-  ImageTexture t = decoded_8bit(ByteEncoding::srgb);
-  t.texels[7].g = 0.123456f;  // no byte decodes to it
-  EXPECT_FALSE(compact_to_bytes(&t, ByteEncoding::srgb));
-  EXPECT_TRUE(t.bytes.empty());
-  EXPECT_EQ(t.texels.size(), 15u);
-  ImageTexture linear = decoded_8bit(ByteEncoding::linear);
-  EXPECT_FALSE(compact_to_bytes(&linear, ByteEncoding::srgb));  // linear values under the sRGB table
+    for (const TextureWrap wrap : {TextureWrap::repeat, TextureWrap::mirror, TextureWrap::clamp})
+      for (const bool nearest : {false, true}) {
+        ImageTexture bytes, floats;
+        for (ImageTexture* t : {&bytes, &floats}) t->width = 5, t->height = 3, t->wrap = wrap, t->nearest = nearest;
+        bytes.byte_encoding = e;
+        const float* value = texture_byte_values(e);
+        for (int i = 0; i < 15; ++i) {
+          const uint8_t b[3] = {uint8_t((i * 37) % 256), uint8_t((i * 91 + 7) % 256), uint8_t(255 - (i * 13) % 256)};
+          bytes.bytes.insert(bytes.bytes.end(), b, b + 3);
+          floats.texels.push_back(Rgb(value[b[0]], value[b[1]], value[b[2]]));
+        }
+        EXPECT_EQ(bytes.memory_bytes(), 15u * 3u);
+        EXPECT_EQ(bytes.texel_count(), 15u);
+        for (size_t i = 0; i < 15; ++i) EXPECT_TRUE(same_bits(bytes.texel(i), floats.texels[i])) << i;
+        for (float u = -1.3f; u < 2.f; u += 0.173f)
+          for (float v = -0.7f; v < 1.6f; v += 0.131f)
+            ASSERT_TRUE(same_bits(texture_lookup(bytes.view(), {u, v}), texture_lookup(floats.view(), {u, v}))) << u << " " << v;
+        EXPECT_TRUE(same_bits(bytes.mean(), floats.mean()));
+      }
 }
 
 TEST(TextureBytes, PngTexturesAreKeptAsBytesExrAsFloats) {
@@ -65,12 +46,15 @@ TEST(TextureBytes, PngTexturesAreKeptAsBytesExrAsFloats) {
   write_image(dir.file("t.exr"), img);
   Scene scene;
   TextureFiles files;
-  const ImageTexture png = scene.textures[files.add(&scene, dir.file("t.png"), LdrEncoding::srgb)];
-  EXPECT_EQ(png.memory_bytes(), 6u * 3u);
-  const Image decoded = read_image(dir.file("t.png"), LdrEncoding::srgb);
-  for (size_t i = 0; i < 6; ++i) EXPECT_TRUE(same_bits(png.texel(i), decoded.pixels[i])) << i;
+  for (const LdrEncoding ldr : {LdrEncoding::srgb, LdrEncoding::linear}) {
+    const ImageTexture png = scene.textures[files.add(&scene, dir.file("t.png"), ldr)];
+    EXPECT_EQ(png.memory_bytes(), 6u * 3u);
+    const Image decoded = read_image(dir.file("t.png"), ldr);
+    for (size_t i = 0; i < 6; ++i) EXPECT_TRUE(same_bits(png.texel(i), decoded.pixels[i])) << i;
+  }
   const ImageTexture exr = scene.textures[files.add(&scene, dir.file("t.exr"), LdrEncoding::srgb)];
   EXPECT_EQ(exr.memory_bytes(), 6u * sizeof(Rgb));
+  EXPECT_FALSE(read_image_bytes(dir.file("t.exr")).has_value());
 }
 
 }  // namespace

@@ -451,6 +451,35 @@ Image read_image(const std::string& path, LdrEncoding ldr, ImageContent content)
 
 void set_max_image_pixels(uint64_t pixels) { max_image_pixels() = pixels; }
 
+std::optional<ByteImage> decode_image_bytes(const std::string& path, const std::string& bytes) {
+  const std::string ext = lower_extension(path);
+  const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
+  const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
+  if (exr_magic || pfm_magic || ext == ".exr" || ext == ".pfm" || bytes.size() > size_t(INT_MAX)) return std::nullopt;
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int len = int(bytes.size());
+  // decode_stb's checks and errors, then the bytes that its table would have looked up.
+  check_png_chunk_lengths(path, bytes);
+  check_jpeg_huffman_tables(path, bytes);
+  if (stbi_is_hdr_from_memory(data, len) || stbi_is_16_bit_from_memory(data, len)) return std::nullopt;
+  int w = 0, h = 0, n = 0;
+  if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
+  std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
+  if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+  if (w <= 0 || h <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", w, h));
+  ByteImage out;
+  out.width = w;
+  out.height = h;
+  out.rgb.resize(size_t(w) * size_t(h) * 3);
+  for (size_t i = 0; i < size_t(w) * size_t(h); ++i) {
+    const stbi_uc* p = px.get() + i * size_t(n);
+    for (int c = 0; c < 3; ++c) out.rgb[3 * i + size_t(c)] = p[n >= 3 ? c : 0];  // grey replicated, alpha dropped
+  }
+  return out;
+}
+
+std::optional<ByteImage> read_image_bytes(const std::string& path) { return decode_image_bytes(path, read_file_as_stored(path)); }
+
 Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
   const std::string ext = lower_extension(path);
   // The content decides where it can; the extension picks the decoder whose error message fits.

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
+#include <optional>
 
 #include "pathspace/film/image.h"
 
@@ -48,5 +50,16 @@ Image read_image(const std::string& path, LdrEncoding ldr = LdrEncoding::srgb, I
 // errors, and its extension (if any) picks the decoder where the content does not.
 Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr = LdrEncoding::srgb,
                    ImageContent content = ImageContent::color);
+
+// An 8-bit file's colour channels as stored, 3 bytes a pixel (grey replicated, alpha dropped): the
+// bytes read_image's colour decoding looks up in its table, for textures kept as 8 bits
+// (scene/image_texture.h) without a float image in between. nullopt for a file that is not 8-bit
+// (EXR, PFM, HDR, 16-bit PNG); the same checks and errors as decode_image otherwise.
+struct ByteImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;
+};
+std::optional<ByteImage> read_image_bytes(const std::string& path);
+std::optional<ByteImage> decode_image_bytes(const std::string& path, const std::string& bytes);
 
 }  // namespace pathspace

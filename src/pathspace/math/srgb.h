@@ -1,5 +1,5 @@
 // The exact piecewise sRGB transfer function (IEC 61966-2-1) between linear and sRGB-encoded
-// values: film/tonemap.h encodes images with it, io/image_io and scene/texture_bytes decode 8-bit
+// values: film/tonemap.h encodes images with it, io/image_io and scene/texture_bytes.cpp decode 8-bit
 // files with it.
 #pragma once
 

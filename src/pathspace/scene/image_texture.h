@@ -1,5 +1,6 @@
 // The host-side owner of one image texture in a Scene: linear RGB texels (or, from an 8-bit file,
-// 3 bytes a texel: scene/texture_bytes.h) plus the uv transform and addressing. Loaders fill it
+// 3 bytes a texel and a table of their 256 linear values, texture_bytes.cpp: a quarter of the
+// memory, the same floats at lookup) plus the uv transform and addressing. Loaders fill it
 // (io/texture_file.h reads files); Scene::view() exposes it as a TextureView.
 #pragma once
 
@@ -14,7 +15,8 @@ namespace pathspace {
 
 enum class ByteEncoding : uint8_t { srgb, linear };
 
-// The linear value of each byte under the encoding (256 entries, static storage; texture_bytes.cpp).
+// The linear value of each byte under the encoding (256 entries, static storage), exactly as
+// io/image_io decodes 8-bit files (texture_bytes.cpp).
 const float* texture_byte_values(ByteEncoding encoding);
 
 struct ImageTexture {

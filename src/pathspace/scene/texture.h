@@ -24,7 +24,7 @@ struct TextureView {
   float udelta = 0.f, vdelta = 0.f;  // pbrt's udelta / vdelta
   bool nearest = false;              // nearest texel instead of bilinear
   TextureWrap wrap = TextureWrap::repeat;
-  // An 8-bit texture (scene/texture_bytes.h): 3 bytes a texel and each byte's linear value, used
+  // An 8-bit texture (scene/image_texture.h): 3 bytes a texel and each byte's linear value, used
   // instead of `texels` when set.
   const uint8_t* bytes = nullptr;
   const float* byte_values = nullptr;

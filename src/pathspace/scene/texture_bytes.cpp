@@ -1,15 +1,16 @@
-#include "pathspace/scene/texture_bytes.h"
-
-#include <algorithm>
+// 8-bit textures kept as 8 bits (scene/image_texture.h): 3 bytes a texel instead of 12, looked up
+// through a table of each byte's linear value. The tables are built with the very expressions
+// io/image_io decodes 8-bit files with, so a byte texture returns the same floats, bit for bit, as
+// the decoded float image would.
 #include <array>
 
 #include "pathspace/math/srgb.h"
+#include "pathspace/scene/image_texture.h"
 
 namespace pathspace {
 
 namespace {
 
-// The same expressions as io/image_io's 8-bit decoding (decode_stb): equal floats, not close ones.
 std::array<float, 256> table(ByteEncoding encoding) {
   std::array<float, 256> t{};
   for (int i = 0; i < 256; ++i) t[size_t(i)] = encoding == ByteEncoding::srgb ? linear_from_srgb(float(i) / 255.f) : float(i) / 255.f;
@@ -21,24 +22,6 @@ std::array<float, 256> table(ByteEncoding encoding) {
 const float* texture_byte_values(ByteEncoding encoding) {
   static const std::array<float, 256> srgb = table(ByteEncoding::srgb), linear = table(ByteEncoding::linear);
   return encoding == ByteEncoding::srgb ? srgb.data() : linear.data();
-}
-
-bool compact_to_bytes(ImageTexture* t, ByteEncoding encoding) {
-  if (t->texels.empty() || !t->bytes.empty()) return false;
-  const float* values = texture_byte_values(encoding);
-  std::vector<uint8_t> bytes(t->texels.size() * 3);
-  for (size_t i = 0; i < t->texels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const float v = t->texels[i][c];
-      const float* at = std::lower_bound(values, values + 256, v);  // the table increases strictly
-      if (at == values + 256 || *at != v) return false;
-      bytes[3 * i + size_t(c)] = uint8_t(at - values);
-    }
-  t->bytes = std::move(bytes);
-  t->byte_encoding = encoding;
-  t->texels.clear();
-  t->texels.shrink_to_fit();
-  return true;
 }
 
 }  // namespace pathspace

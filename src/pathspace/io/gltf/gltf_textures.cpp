@@ -1,7 +1,8 @@
 // glTF textures and images (see gltf_textures.h).
 #include "pathspace/io/gltf/gltf_textures.h"
 
-#include "pathspace/scene/texture_bytes.h"
+#include "pathspace/base/regular_file.h"
+#include "pathspace/io/texture_file.h"
 
 #include <filesystem>
 
@@ -36,12 +37,8 @@ void apply_sampler(const tinygltf::Model& m, const tinygltf::Texture& t, ImageTe
 
 }  // namespace
 
-const Image* Textures::image(int texture_index, LdrEncoding ldr, const std::string& what) {
+std::optional<Textures::Encoded> Textures::encoded(int texture_index) {
   const tinygltf::Model& m = c_.model;
-  check_index(c_, texture_index, m.textures.size(), what + ".index");
-  const auto key = std::make_pair(texture_index, ldr);
-  if (const auto it = images_.find(key); it != images_.end()) return it->second ? &*it->second : nullptr;
-  std::optional<Image>& slot = images_[key];
   const std::string tname = element("textures", size_t(texture_index));
   const tinygltf::Texture& t = m.textures[size_t(texture_index)];
   if (t.sampler >= 0) {
@@ -52,26 +49,44 @@ const Image* Textures::image(int texture_index, LdrEncoding ldr, const std::stri
   }
   if (t.source < 0) {
     c_.warn(tname + " has no source image (image extensions such as KHR_texture_basisu are not supported); constant factor used");
-    return nullptr;
+    return std::nullopt;
   }
   check_index(c_, t.source, m.images.size(), tname + ".source");
   const tinygltf::Image& im = m.images[size_t(t.source)];
   const std::string iname = element("images", size_t(t.source));
   try {
-    if (!im.image.empty()) {  // embedded (data uri or bufferView): bytes kept by the load callback
-      slot = decode_image(c_.path + " " + iname, std::string(im.image.begin(), im.image.end()), ldr);
-    } else if (!im.uri.empty()) {
+    if (!im.image.empty())  // embedded (data uri or bufferView): bytes kept by the load callback
+      return Encoded{c_.path + " " + iname, iname, std::string(im.image.begin(), im.image.end())};
+    if (!im.uri.empty()) {
       std::filesystem::path file(decode_uri(im.uri));
       if (file.is_relative()) file = std::filesystem::path(c_.folder) / file;
-      slot = read_image(file.string(), ldr);
-    } else {
-      c_.warn(iname + " holds no data; constant factor used");
+      return Encoded{file.string(), iname, read_file_as_stored(file.string())};
     }
+    c_.warn(iname + " holds no data; constant factor used");
   } catch (const Error& e) {
     c_.warn(iname + " not used (" + e.what() + "); constant factor used");
   }
-  if (slot && (slot->width <= 0 || slot->height <= 0)) slot.reset();
-  return slot ? &*slot : nullptr;
+  return std::nullopt;
+}
+
+std::optional<Image> Textures::decoded(const Encoded& e, LdrEncoding ldr) {
+  try {
+    Image image = decode_image(e.name, e.bytes, ldr);
+    if (image.width > 0 && image.height > 0) return image;
+  } catch (const Error& err) {
+    c_.warn(e.element + " not used (" + err.what() + "); constant factor used");
+  }
+  return std::nullopt;
+}
+
+bool Textures::decoded_bytes(const Encoded& e, std::optional<ByteImage>* out) {
+  try {
+    *out = decode_image_bytes(e.name, e.bytes);
+    return true;
+  } catch (const Error& err) {
+    c_.warn(e.element + " not used (" + err.what() + "); constant factor used");
+    return false;
+  }
 }
 
 int32_t Textures::texture(const tinygltf::TextureInfo& info, LdrEncoding ldr, const std::string& what) {
@@ -79,35 +94,49 @@ int32_t Textures::texture(const tinygltf::TextureInfo& info, LdrEncoding ldr, co
   if (info.extensions.count("KHR_texture_transform")) c_.warn(what + ".extensions.KHR_texture_transform ignored");
   const auto key = std::make_pair(info.index, ldr);
   if (const auto it = scene_textures_.find(key); it != scene_textures_.end()) return it->second;
-  const Image* img = image(info.index, ldr, what);
-  int32_t index = -1;
-  if (img) {
-    ImageTexture t;
-    t.name = c_.path + " " + element("textures", size_t(info.index));
-    t.width = img->width;
-    t.height = img->height;
-    // The decoded floats move into the texture and leave the cache (a later mean() decodes again):
-    // a 2048^2 image is not held twice while the scene loads.
-    t.texels = std::move(images_[key]->pixels);
-    images_.erase(key);
-    apply_sampler(c_.model, c_.model.textures[size_t(info.index)], &t);
-    compact_to_bytes(&t, ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear);  // 8-bit images stay 8-bit
-    index = int32_t(scene_->add_texture(std::move(t)));
+  check_index(c_, info.index, c_.model.textures.size(), what + ".index");
+  int32_t& index = scene_textures_[key] = -1;
+  const std::optional<Encoded> e = encoded(info.index);
+  if (!e) return index;
+  ImageTexture t;
+  t.name = c_.path + " " + element("textures", size_t(info.index));
+  apply_sampler(c_.model, c_.model.textures[size_t(info.index)], &t);
+  // An 8-bit image stays 8-bit (scene/image_texture.h), decoded without a float image in between.
+  std::optional<ByteImage> bytes;
+  if (!decoded_bytes(*e, &bytes)) return index;
+  if (bytes) {
+    take_texels(&t, std::move(*bytes), ldr);
+  } else {
+    std::optional<Image> image = decoded(*e, ldr);
+    if (!image) return index;
+    take_texels(&t, std::move(*image));
   }
-  scene_textures_[key] = index;
-  return index;
+  return index = int32_t(scene_->add_texture(std::move(t)));
 }
 
 std::optional<Rgb> Textures::mean(int texture_index, LdrEncoding ldr, const std::string& what) {
+  check_index(c_, texture_index, c_.model.textures.size(), what + ".index");
   const auto key = std::make_pair(texture_index, ldr);
   if (const auto it = means_.find(key); it != means_.end()) return it->second;
-  const Image* img = image(texture_index, ldr, what);
-  if (!img) return std::nullopt;
+  std::optional<Rgb>& mean = means_[key];
+  const std::optional<Encoded> e = encoded(texture_index);
+  if (!e) return mean;
+  // An 8-bit image is averaged through its bytes' table: no float image in memory.
+  std::optional<ByteImage> bytes;
+  if (!decoded_bytes(*e, &bytes)) return mean;
   Rgb sum;
-  for (const Rgb& p : img->pixels) sum += p;
-  const Rgb m = sum * (1.f / float(img->pixels.size()));
-  images_.erase(key);  // only its mean is kept (a texture() of it decodes again)
-  return means_[key] = m;
+  size_t n = 0;
+  if (bytes) {
+    const float* value = texture_byte_values(ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear);
+    n = bytes->rgb.size() / 3;
+    for (size_t i = 0; i < n; ++i) sum += Rgb(value[bytes->rgb[3 * i]], value[bytes->rgb[3 * i + 1]], value[bytes->rgb[3 * i + 2]]);
+  } else {
+    const std::optional<Image> image = decoded(*e, ldr);
+    if (!image) return mean;
+    n = image->pixels.size();
+    for (const Rgb& p : image->pixels) sum += p;
+  }
+  return mean = sum * (1.f / float(n));
 }
 
 }  // namespace pathspace::gltf

@@ -28,15 +28,23 @@ class Textures {
   std::optional<Rgb> mean(int texture_index, LdrEncoding ldr, const std::string& what);
 
  private:
-  // The decoded image of texture `texture_index` (cached), or nullptr with a warning.
-  const Image* image(int texture_index, LdrEncoding ldr, const std::string& what);
+  // A texture's image as stored: `name` for errors, `element` ("images[2]") for warnings.
+  struct Encoded {
+    std::string name, element, bytes;
+  };
+  // The encoded image of texture `texture_index`, or nullopt with a warning.
+  std::optional<Encoded> encoded(int texture_index);
+  // Its float decoding, or nullopt with a warning.
+  std::optional<Image> decoded(const Encoded& e, LdrEncoding ldr);
+  // Its bytes when it is an 8-bit image (*out nullopt for another kind); false with a warning when
+  // it cannot be decoded.
+  bool decoded_bytes(const Encoded& e, std::optional<ByteImage>* out);
 
   const Context& c_;
   Scene* scene_;
-  // Decoded images wait here only until texture() or mean() uses them: a scene's float images are
-  // never all in memory at once.
-  std::map<std::pair<int, LdrEncoding>, std::optional<Image>> images_;
-  std::map<std::pair<int, LdrEncoding>, Rgb> means_;
+  // Images are decoded when bound or averaged, one at a time, and not kept: an 8-bit one goes to
+  // its texture's bytes (or its mean) without a float image in between.
+  std::map<std::pair<int, LdrEncoding>, std::optional<Rgb>> means_;  // nullopt: unreadable (warned once)
   std::map<std::pair<int, LdrEncoding>, int32_t> scene_textures_;
 };
 
