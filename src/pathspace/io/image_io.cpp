@@ -16,6 +16,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,13 @@
 // stb reads only the formats docs/cli.md lists (PNG, JPG, TGA, HDR, BMP): its PNM reader overflows
 // an int on a long header number (undefined; found by fuzz_image, tests/fuzz/corpus/image/
 // crash_pnm_header_int_overflow), and PSD, PIC and GIF are formats no scene of ours uses.
+// A truncated uncompressed TGA leaves the rows stb could not read unwritten (stbi__getn's result is
+// not checked there), so the image held whatever the allocator returned: a different image at each
+// read (found by fuzz_image's byte-versus-float check, tests/fuzz/corpus/image/crash_tga_truncated_rows).
+// Zeroed allocations make such rows black, as stb's RLE reader already reads bytes past the end.
+#define STBI_MALLOC(size) calloc(1, size)
+#define STBI_REALLOC(p, size) realloc(p, size)
+#define STBI_FREE(p) free(p)
 #define STBI_NO_PNM
 #define STBI_NO_PSD
 #define STBI_NO_PIC
