@@ -33,25 +33,38 @@ InputFileLog::~InputFileLog() {
 }
 
 std::vector<InputFile> InputFileLog::files() const {
-  const std::lock_guard<std::mutex> lock(logs_mutex());
-  return files_;
+  std::vector<Entry> entries;
+  {
+    const std::lock_guard<std::mutex> lock(logs_mutex());
+    entries = entries_;
+  }
+  std::vector<InputFile> files;
+  for (const Entry& e : entries) {
+    if (e.fnv1a64) {
+      files.push_back({e.path, *e.fnv1a64});
+      continue;
+    }
+    const std::string bytes = read_file_as_stored_unlogged(e.path);  // a stream reader's file
+    files.push_back({e.path, fnv1a64(bytes.data(), bytes.size())});
+  }
+  return files;
 }
 
-void InputFileLog::add(const std::string& path, uint64_t hash) {
-  for (const InputFile& f : files_)
-    if (f.path == path) return;
-  files_.push_back({path, hash});
+void InputFileLog::add(const std::string& path, std::optional<uint64_t> hash) {
+  for (Entry& e : entries_)
+    if (e.path == path) {
+      if (!e.fnv1a64) e.fnv1a64 = hash;
+      return;
+    }
+  entries_.push_back({path, hash});
 }
 
 void InputFileLog::note(const std::string& path, const std::string* bytes) {
   {
     const std::lock_guard<std::mutex> lock(logs_mutex());
-    if (open_logs().empty()) return;
+    if (open_logs().empty()) return;  // no log open: no fingerprint to take
   }
-  // A stream reader's file: its stored bytes, read here (outside the lock: this read notes nothing).
-  const std::string stored = bytes ? std::string() : read_file_as_stored_unlogged(path);
-  const std::string& b = bytes ? *bytes : stored;
-  const uint64_t hash = fnv1a64(b.data(), b.size());
+  const std::optional<uint64_t> hash = bytes ? std::optional<uint64_t>(fnv1a64(bytes->data(), bytes->size())) : std::nullopt;
   const std::lock_guard<std::mutex> lock(logs_mutex());
   for (InputFileLog* log : open_logs()) log->add(path, hash);
 }

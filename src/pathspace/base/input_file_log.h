@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,18 @@ class InputFileLog {
   // The files read so far, each path once, in the order first read.
   std::vector<InputFile> files() const;
 
-  // Called by the input check for every file read (or, for a stream reader, opened: `bytes` null;
-  // the file's stored bytes are then read once here for the fingerprint).
+  // Called by the input check for every file read (or, for a stream reader, opened: `bytes` null).
+  // A file only opened is fingerprinted when files() is asked, unless a read of it comes first: a
+  // scene file is checked before its reader reads it, and is read once.
   static void note(const std::string& path, const std::string* bytes);
 
  private:
-  void add(const std::string& path, uint64_t hash);
-  std::vector<InputFile> files_;
+  struct Entry {
+    std::string path;
+    std::optional<uint64_t> fnv1a64;  // none yet: only opened so far
+  };
+  void add(const std::string& path, std::optional<uint64_t> hash);
+  std::vector<Entry> entries_;
 };
 
 }  // namespace pathspace

@@ -382,40 +382,75 @@ void check_jpeg_huffman_tables(const std::string& path, const std::string& bytes
   }
 }
 
-// Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
-// unless the caller says they hold linear data (v / max).
-// (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
-Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
+// stb's input after the checks every stb decode starts with: size, PNG chunk lengths, JPEG Huffman
+// tables and the pixel count its header declares.
+struct StbInput {
+  const stbi_uc* data;
+  int len;
+};
+StbInput checked_stb_input(const std::string& path, const std::string& bytes) {
   if (bytes.size() > size_t(INT_MAX)) fail(path, "file too large");
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int len = int(bytes.size());
+  const StbInput in{reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size())};
   check_png_chunk_lengths(path, bytes);
   check_jpeg_huffman_tables(path, bytes);
   int w = 0, h = 0, n = 0;
-  if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
-  auto check = [&](const void* px) {
-    if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
-  };
-  if (stbi_is_hdr_from_memory(data, len)) {
-    std::unique_ptr<float, void (*)(void*)> px(stbi_loadf_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
-    check(px.get());
+  if (stbi_info_from_memory(in.data, in.len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
+  return in;
+}
+
+template <typename T>
+using StbBuffer = std::unique_ptr<T, void (*)(void*)>;
+
+void check_decoded(const std::string& path, const void* px) {
+  if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
+}
+
+// An 8-bit file's pixels as stored: n channels each.
+StbBuffer<stbi_uc> load_8bit(const std::string& path, const StbInput& in, int* w, int* h, int* n) {
+  StbBuffer<stbi_uc> px(stbi_load_from_memory(in.data, in.len, w, h, n, 0), stbi_image_free);
+  check_decoded(path, px.get());
+  return px;
+}
+
+// Everything stb reads. HDR (Radiance) is linear already; 8- and 16-bit formats are sRGB-decoded
+// unless the caller says they hold linear data (v / max); 8-bit values through the same table as
+// 8-bit textures kept as bytes (scene/image_texture.h).
+// (stbi_loadf is not used for LDR files because it applies a plain 2.2 gamma, not sRGB.)
+Image decode_stb(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
+  const StbInput in = checked_stb_input(path, bytes);
+  int w = 0, h = 0, n = 0;
+  if (stbi_is_hdr_from_memory(in.data, in.len)) {
+    StbBuffer<float> px(stbi_loadf_from_memory(in.data, in.len, &w, &h, &n, 0), stbi_image_free);
+    check_decoded(path, px.get());
     const auto same = [](float v) { return v; };
     return image_from_channels(px.get(), w, h, n, same, same, content);
   }
-  if (stbi_is_16_bit_from_memory(data, len)) {
-    std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w, &h, &n, 0),
-                                                 stbi_image_free);
-    check(px.get());
+  if (stbi_is_16_bit_from_memory(in.data, in.len)) {
+    StbBuffer<stbi_us> px(stbi_load_16_from_memory(in.data, in.len, &w, &h, &n, 0), stbi_image_free);
+    check_decoded(path, px.get());
     const bool srgb = ldr == LdrEncoding::srgb;
     return image_from_channels(
         px.get(), w, h, n, [&](stbi_us v) { return srgb ? linear_from_srgb(v / 65535.f) : v / 65535.f; },
         [](stbi_us v) { return v / 65535.f; }, content);
   }
-  std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
-  check(px.get());
-  float lut[256];
-  for (int i = 0; i < 256; ++i) lut[i] = ldr == LdrEncoding::srgb ? linear_from_srgb(float(i) / 255.f) : float(i) / 255.f;
-  return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return lut[v]; }, [](stbi_uc v) { return v / 255.f; }, content);
+  const StbBuffer<stbi_uc> px = load_8bit(path, in, &w, &h, &n);
+  const float* value = byte_values(ldr);
+  return image_from_channels(px.get(), w, h, n, [&](stbi_uc v) { return value[v]; }, [](stbi_uc v) { return v / 255.f; }, content);
+}
+
+enum class Decoder { exr, pfm, stb };
+
+// The content decides where it can; the extension picks the decoder whose error message fits.
+Decoder decoder_for(const std::string& path, const std::string& bytes) {
+  const std::string ext = lower_extension(path);
+  const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
+  const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
+  if (exr_magic || (ext == ".exr" && !pfm_magic)) return Decoder::exr;
+  return pfm_magic || ext == ".pfm" ? Decoder::pfm : Decoder::stb;
+}
+
+void check_not_empty(const std::string& path, int w, int h) {
+  if (w <= 0 || h <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", w, h));
 }
 
 }  // namespace
@@ -460,21 +495,13 @@ Image read_image(const std::string& path, LdrEncoding ldr, ImageContent content)
 void set_max_image_pixels(uint64_t pixels) { max_image_pixels() = pixels; }
 
 std::optional<ByteImage> decode_image_bytes(const std::string& path, const std::string& bytes) {
-  const std::string ext = lower_extension(path);
-  const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
-  const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
-  if (exr_magic || pfm_magic || ext == ".exr" || ext == ".pfm" || bytes.size() > size_t(INT_MAX)) return std::nullopt;
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int len = int(bytes.size());
-  // decode_stb's checks and errors, then the bytes that its table would have looked up.
-  check_png_chunk_lengths(path, bytes);
-  check_jpeg_huffman_tables(path, bytes);
-  if (stbi_is_hdr_from_memory(data, len) || stbi_is_16_bit_from_memory(data, len)) return std::nullopt;
+  if (decoder_for(path, bytes) != Decoder::stb) return std::nullopt;
+  // decode_stb's checks and errors, then the bytes its 8-bit table would have looked up.
+  const StbInput in = checked_stb_input(path, bytes);
+  if (stbi_is_hdr_from_memory(in.data, in.len) || stbi_is_16_bit_from_memory(in.data, in.len)) return std::nullopt;
   int w = 0, h = 0, n = 0;
-  if (stbi_info_from_memory(data, len, &w, &h, &n) && w > 0 && h > 0) check_pixel_count(path, uint64_t(w), uint64_t(h));
-  std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w, &h, &n, 0), stbi_image_free);
-  if (!px) fail(path, std::string("cannot decode image: ") + stbi_failure_reason());
-  if (w <= 0 || h <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", w, h));
+  const StbBuffer<stbi_uc> px = load_8bit(path, in, &w, &h, &n);
+  check_not_empty(path, w, h);
   ByteImage out;
   out.width = w;
   out.height = h;
@@ -489,16 +516,13 @@ std::optional<ByteImage> decode_image_bytes(const std::string& path, const std::
 std::optional<ByteImage> read_image_bytes(const std::string& path) { return decode_image_bytes(path, read_file_as_stored(path)); }
 
 Image decode_image(const std::string& path, const std::string& bytes, LdrEncoding ldr, ImageContent content) {
-  const std::string ext = lower_extension(path);
-  // The content decides where it can; the extension picks the decoder whose error message fits.
-  const bool exr_magic = bytes.size() >= 4 && bytes.compare(0, 4, "\x76\x2f\x31\x01") == 0;
-  const bool pfm_magic = bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f');
-  Image image = exr_magic || (ext == ".exr" && !pfm_magic) ? decode_exr(path, bytes, content)
-                : pfm_magic || ext == ".pfm" ? (content == ImageContent::scalar ? scalar_image(decode_pfm(path, bytes), {})
-                                                                                 : decode_pfm(path, bytes))
-                                             : decode_stb(path, bytes, ldr, content);
+  const Decoder decoder = decoder_for(path, bytes);
+  Image image = decoder == Decoder::exr   ? decode_exr(path, bytes, content)
+                : decoder == Decoder::pfm ? (content == ImageContent::scalar ? scalar_image(decode_pfm(path, bytes), {})
+                                                                             : decode_pfm(path, bytes))
+                                          : decode_stb(path, bytes, ldr, content);
   // stb accepts a Radiance header of height 0 (found by the image fuzzer): no image is empty.
-  if (image.width <= 0 || image.height <= 0) fail(path, fmt::format("{}x{} pixels: the image is empty", image.width, image.height));
+  check_not_empty(path, image.width, image.height);
   return image;
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "pathspace/film/image.h"
+#include "pathspace/scene/image_texture.h"  // ByteEncoding, texture_byte_values
 
 namespace pathspace {
 
@@ -60,6 +61,9 @@ struct ByteImage {
   std::vector<uint8_t> rgb;
 };
 std::optional<ByteImage> read_image_bytes(const std::string& path);
+// The table a ByteImage's bytes are decoded with (scene/image_texture.h's, one table for both).
+inline ByteEncoding byte_encoding(LdrEncoding ldr) { return ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear; }
+inline const float* byte_values(LdrEncoding ldr) { return texture_byte_values(byte_encoding(ldr)); }
 std::optional<ByteImage> decode_image_bytes(const std::string& path, const std::string& bytes);
 
 }  // namespace pathspace

@@ -1,6 +1,7 @@
 // Image files as scene textures: read through image_io (EXR, PFM, PNG, JPG, TGA, HDR, BMP) into a
-// Scene's texture store. A file shared by several materials with the same encoding and uv transform
-// is read and stored once; an 8-bit file's colours are kept as 8 bits (scene/image_texture.h). Read errors are image_io's pathspace::Error naming the file.
+// Scene's texture store. A file shared by several materials with the same encoding, uv transform
+// and addressing is read and stored once; an 8-bit file's colours are kept as 8 bits
+// (scene/image_texture.h). Read errors are image_io's pathspace::Error naming the file.
 #pragma once
 
 #include <map>
@@ -30,7 +31,7 @@ inline void take_texels(ImageTexture* t, ByteImage&& bytes, LdrEncoding ldr) {
   t->width = bytes.width;
   t->height = bytes.height;
   t->bytes = std::move(bytes.rgb);
-  t->byte_encoding = ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear;
+  t->byte_encoding = byte_encoding(ldr);
 }
 inline void take_texels(ImageTexture* t, Image&& image) {
   t->width = image.width;

@@ -1,6 +1,6 @@
 // The exact piecewise sRGB transfer function (IEC 61966-2-1) between linear and sRGB-encoded
-// values: film/tonemap.h encodes images with it, io/image_io and scene/texture_bytes.cpp decode 8-bit
-// files with it.
+// values: film/tonemap.h encodes images with it, scene/texture_bytes.cpp builds the 8-bit decoding
+// table with it.
 #pragma once
 
 #include "pathspace/math/scalar.h"

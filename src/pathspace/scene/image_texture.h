@@ -15,8 +15,8 @@ namespace pathspace {
 
 enum class ByteEncoding : uint8_t { srgb, linear };
 
-// The linear value of each byte under the encoding (256 entries, static storage), exactly as
-// io/image_io decodes 8-bit files (texture_bytes.cpp).
+// The linear value of each byte under the encoding (256 entries, static storage; texture_bytes.cpp):
+// the one table 8-bit files are decoded with, as floats by io/image_io and at lookup for textures.
 const float* texture_byte_values(ByteEncoding encoding);
 
 struct ImageTexture {

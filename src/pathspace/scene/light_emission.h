@@ -15,7 +15,7 @@ struct EmissionSample {
   Vec3 ng;                // the light's geometric normal at p (area lights), for two-sided emitters
   Vec3 d;                 // unit propagation direction
   Rgb le;                 // emitted radiance at (p, d) for area/environment lights; I or E for delta lights
-  Point2 uv;              // area triangles: the surface's texture coordinates at p (an emission map's)
+  Point2 uv;              // area triangles with an emission map: the surface's texture coordinates at p
   Rgb weight;             // le |cos| / (pdf_a pdf_w): the light-path throughput after emission
   float pdf_a = 0.f;      // area density of p (1 for a point light)
   float pdf_w = 0.f;      // solid-angle density of d (1 for a directional light)
@@ -74,7 +74,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
         p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
         n = triangle_normal(p0, p1, p2);
         area = triangle_area(p0, p1, p2);
-        e->uv = triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y);
+        e->uv = emission_map_uv(scene, l, b);
       } else {
         const Sphere& sp = scene.spheres[l.shape];
         p = sp.center + square_to_uniform_sphere(u_pos) * sp.radius;

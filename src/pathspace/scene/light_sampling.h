@@ -32,6 +32,13 @@ PS_INLINE Rgb area_light_radiance(const SceneView& scene, const Light& l, const 
   return le * texture_lookup(scene.textures[l.texture], uv);
 }
 
+// Where an area triangle's emission map is read for a point sampled at barycentrics b (as
+// square_to_triangle_barycentric gives them: b.x for vertex 0, b.y for vertex 1). Lights without a
+// map skip the interpolation (every next-event estimate passes here).
+PS_INLINE Point2 emission_map_uv(const SceneView& scene, const Light& l, Point2 b) {
+  return l.texture >= 0 ? triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y) : Point2{};
+}
+
 namespace detail {
 PS_INLINE float solid_angle_from_area(float pdf_a, const Vec3& ref, const Vec3& p, const Vec3& n) {
   const Vec3 d = p - ref;
@@ -56,7 +63,7 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       s->wi = d / dist;
       s->dist = dist;
       s->p = p;
-      s->li = area_light_radiance(scene, l, n, -s->wi, triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y));
+      s->li = area_light_radiance(scene, l, n, -s->wi, emission_map_uv(scene, l, b));
       s->pdf_w = detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
       s->delta = false;
       return s->pdf_w > 0.f && !is_black(s->li);

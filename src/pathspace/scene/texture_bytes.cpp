@@ -1,7 +1,6 @@
 // 8-bit textures kept as 8 bits (scene/image_texture.h): 3 bytes a texel instead of 12, looked up
-// through a table of each byte's linear value. The tables are built with the very expressions
-// io/image_io decodes 8-bit files with, so a byte texture returns the same floats, bit for bit, as
-// the decoded float image would.
+// through a table of each byte's linear value. io/image_io decodes 8-bit files to floats through the
+// same tables, so a byte texture returns the same floats, bit for bit, as the decoded image would.
 #include <array>
 
 #include "pathspace/math/srgb.h"

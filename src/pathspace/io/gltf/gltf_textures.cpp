@@ -127,7 +127,7 @@ std::optional<Rgb> Textures::mean(int texture_index, LdrEncoding ldr, const std:
   Rgb sum;
   size_t n = 0;
   if (bytes) {
-    const float* value = texture_byte_values(ldr == LdrEncoding::srgb ? ByteEncoding::srgb : ByteEncoding::linear);
+    const float* value = byte_values(ldr);
     n = bytes->rgb.size() / 3;
     for (size_t i = 0; i < n; ++i) sum += Rgb(value[bytes->rgb[3 * i]], value[bytes->rgb[3 * i + 1]], value[bytes->rgb[3 * i + 2]]);
   } else {

@@ -22,9 +22,9 @@ class Document {
  public:
   // Parses `bytes` (the text of file `name` in `folder`); an XML syntax error is an Error at
   // file:line:column. `defines` are parameters given from outside: they take the place of the
-  // file's <default>s, and each must name a <default> or a $name of the file. Top-level <include filename="..."/> elements are replaced by the children of
-  // the included file's <scene> (found like any file name, resolve_file), whose nodes keep their own
-  // file:line:column.
+  // file's <default>s, and each must name a <default> or a $name of the file. Top-level
+  // <include filename="..."/> elements are replaced by the children of the included file's <scene>
+  // (found like any file name, resolve_file), whose nodes keep their own file:line:column.
   Document(const std::string& bytes, std::string name, const std::vector<std::pair<std::string, std::string>>& defines = {},
            std::string folder = ".");
   Document(const Document&) = delete;
