@@ -60,8 +60,8 @@ int run_compare_command(const CompareOptions& o) {
   } else {
     fmt::print("MSE {:.6g}  relMSE {:.6g}  mean {:.6g} (reference {:.6g})\n", e.mse, e.rel_mse, e.mean_image,
                e.mean_reference);
-    fmt::print("block {}x{}: relMSE {:.6g}  blotched {:.6g} of {} blocks\n", o.block, o.block, b.block_rel_mse,
-               b.blotched_share, b.blocks);
+    fmt::print("block {}x{}: relMSE {:.6g}  blotched {:.3g}% of {} blocks\n", o.block, o.block, b.block_rel_mse,
+               100.0 * b.blotched_share, b.blocks);
     fmt::print("FLIP {:.6g} ({:g} pixels per degree)\n", flip_mean, o.flip_ppd);
   }
   return 0;

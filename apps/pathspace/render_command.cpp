@@ -11,6 +11,7 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/printable.h"
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/device_registry.h"
@@ -72,6 +73,12 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(checked_real("lens-radius", 0.0, kMaxSceneCoordinate));
   cmd->add_option("--focus-distance", o->focus_distance, "Distance of the plane in focus along the view axis (default: the scene's)")
       ->check(checked_real("focus-distance", 1e-30, kMaxSceneCoordinate));
+  cmd->add_option("--pixel-filter", o->pixel_filter,
+                  "The film's reconstruction filter: box, tent, gaussian or mitchell (default: the scene's, else a box of one pixel)")
+      ->check(CLI::IsMember(pixel_filter_names()));
+  cmd->add_option("--pixel-filter-radius", o->pixel_filter_radius,
+                  "Its radius in pixels (default: the scene file's, else box 0.5, tent 2, gaussian 1.5 with sigma radius/3, mitchell 2)")
+      ->check(checked_real("pixel-filter-radius", 0.01, kMaxPixelFilterRadius));
   cmd->add_option("-D,--define", o->defines,
                   "Mitsuba scene files: the scene parameter NAME ($NAME in the file) is VALUE, in place of the file's <default> (repeatable)")
       ->type_name("NAME=VALUE")

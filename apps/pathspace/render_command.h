@@ -22,6 +22,8 @@ struct RenderOptions {
   float fov = 0.f;  // degrees, shorter image axis; 0: the file's
   float lens_radius = -1.f;    // thin lens radius in scene units (0: pinhole); < 0: the scene's
   float focus_distance = 0.f;  // distance of the focus plane; 0: the scene's
+  std::string pixel_filter;    // camera/pixel_filter_table.h names; empty: the scene's
+  float pixel_filter_radius = 0.f;  // pixels; 0: the filter's usual radius (or the scene's, same kind)
   bool substitute_missing_textures = false;  // pbrt: neutral stand-ins for missing images (warnings)
   std::vector<std::string> defines;          // Mitsuba: "NAME=VALUE" scene parameters (-D)
   std::string animation;                     // glTF: the animation played (index or name); empty: the first

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "pathspace/base/printable.h"
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/checkpoint/checkpoint_file.h"
 #include "pathspace/io/file_bytes.h"
 #include "pathspace/io/scene_loader.h"
@@ -106,7 +107,28 @@ std::vector<NamedFile> scene_inputs(const PreparedScene& prepared) {
   return inputs;
 }
 
+namespace {
+
+// --pixel-filter and its radius over the scene's filter: a new kind starts from its usual radius (the
+// gaussian's sigma a third of the radius, Mitchell's B = C = 1/3); the same kind keeps the scene's
+// parameters except the radius given.
+void apply_pixel_filter_options(const RenderOptions& o, PerspectiveCamera* camera) {
+  const PixelFilter& scene_filter = camera->filter;
+  const PixelFilterKind kind = o.pixel_filter.empty() ? scene_filter.kind : *parse_pixel_filter_kind(o.pixel_filter);
+  const bool same_kind = kind == scene_filter.kind;
+  const float radius = o.pixel_filter_radius > 0.f ? o.pixel_filter_radius : same_kind ? scene_filter.radius : default_pixel_filter_radius(kind);
+  const float sigma = same_kind && !(o.pixel_filter_radius > 0.f) ? scene_filter.sigma : radius / 3.f;
+  try {
+    camera->filter = same_kind ? make_pixel_filter(kind, radius, sigma, scene_filter.b, scene_filter.c) : make_pixel_filter(kind, radius, sigma);
+  } catch (const Error& e) {
+    throw UsageError(std::string("--pixel-filter: ") + e.what());
+  }
+}
+
+}  // namespace
+
 void apply_scene_options(const RenderOptions& o, Scene* scene) {
+  if (!o.pixel_filter.empty() || o.pixel_filter_radius > 0.f) apply_pixel_filter_options(o, &scene->camera);
   if (o.lens_radius >= 0.f || o.focus_distance > 0.f) {
     const PerspectiveCamera& c = scene->camera;
     const float radius = o.lens_radius >= 0.f ? o.lens_radius : c.lens_radius;

@@ -11,6 +11,7 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/base/printable.h"
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/scene.h"
@@ -82,7 +83,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
                                                              : nlohmann::json{scene.environment_image.width, scene.environment_image.height};
     j["lights"] = lights;
     j["materials"] = materials;
-    j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}, {"moves", scene.camera_moves}};
+    j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}, {"moves", scene.camera_moves},
+                   {"pixel_filter", describe_pixel_filter(c.filter)}};
     j["file_spp"] = settings.spp;
     j["max_path_segments"] = scene.max_path_segments;
     j["warnings"] = warnings;
@@ -107,7 +109,8 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const auto& [kind, n] : lights) fmt::print("    {:<26} {}\n", kind, n);
   fmt::print("  materials    {}\n", scene.materials.size());
   for (const auto& [kind, n] : materials) fmt::print("    {:<26} {}\n", kind, n);
-  fmt::print("  camera       {}x{}{}\n", c.width, c.height, c.is_pinhole() ? "" : fmt::format(", thin lens radius {:g}", c.lens_radius));
+  fmt::print("  camera       {}x{}{}, pixel filter {}\n", c.width, c.height,
+             c.is_pinhole() ? "" : fmt::format(", thin lens radius {:g}", c.lens_radius), describe_pixel_filter(c.filter));
   fmt::print("  path length  at most {} segments{}\n", scene.max_path_segments,
              settings.spp > 0 ? fmt::format("; the file suggests {} spp", settings.spp) : std::string());
   fmt::print("  approximated or ignored ({} warning{}):\n", warnings.size(), warnings.size() == 1 ? "" : "s");

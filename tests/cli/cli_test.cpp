@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -131,6 +132,28 @@ TEST_F(CliTest, ThinLensOptions) {
   const CliResult r = run(std::string("render -i bpt --lens-radius 0.2 --focus-distance 4 -o lens.pfm ") + kSmall);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir_ / "lens.pfm"));
+}
+
+// --pixel-filter and its radius replace the scene's filter (camera/pixel_filter.h): unknown kinds and
+// radii out of range are usage errors; `info` names the filter; a filtered render differs from the box.
+TEST_F(CliTest, PixelFilterOptions) {
+  expect_usage_error(std::string("render --pixel-filter sinc ") + kSmall, "--pixel-filter");
+  expect_usage_error(std::string("render --pixel-filter tent --pixel-filter-radius 0 ") + kSmall, "pixel-filter-radius");
+  expect_usage_error(std::string("render --pixel-filter-radius 17 ") + kSmall, "pixel-filter-radius");
+  CliResult r = run(std::string("render -o box.pfm ") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run(std::string("render --pixel-filter gaussian -o gaussian.pfm ") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run(std::string("render --pixel-filter-radius 1 -o wide-box.pfm ") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto bytes = [&](const char* name) {
+    std::ifstream in(dir_ / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(bytes("box.pfm"), bytes("gaussian.pfm"));
+  EXPECT_NE(bytes("box.pfm"), bytes("wide-box.pfm"));
+  r = run("info cornell-box");
+  EXPECT_NE(r.out.find("pixel filter box 0.5"), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, UnsupportedOutputFormatIsAUsageError) { expect_usage_error(std::string("render -o out.jpg ") + kSmall, "out.jpg"); }

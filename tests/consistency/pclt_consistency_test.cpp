@@ -23,6 +23,7 @@
 #include <set>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/integrators/pclt/pclt_integrator.h"
 #include "pathspace/integrators/sppm/sppm_settings.h"
@@ -46,15 +47,15 @@ Rendered render_with(const Scene& scene, const Accel& accel, RenderConfig config
 }
 
 TEST(PcltDeterminism, BitIdenticalForOneAndTwoThreads) {
-  const Scene scene = make_builtin_scene("gbs_c", 32, 32);
+  Scene scene = make_builtin_scene("gbs_c", 32, 32);
   const Accel accel(scene);
   PcltSettings s;
   s.light_paths = 20000;
   for (int variant = 0; variant < 2; ++variant) {
-    if (variant == 1) {  // the other map, a shortcut, a wide filter and a stochastic store
+    if (variant == 1) {  // the other map, a shortcut, a wide pixel filter and a stochastic store
       s.hash_map = PcltHashMap::stochastic;
       s.visibility = PcltVisibility::plane;
-      s.filter = LtFilter::gaussian;
+      scene.camera.filter = make_pixel_filter(PixelFilterKind::gaussian, 1.5f);
       s.cache_capacity = 100;
       s.stochastic_store = true;
     }

@@ -49,14 +49,6 @@ Scene make_lens_cornell(float lens_radius) {
   return scene;
 }
 
-// The z-test with its numbers printed (for the record), then the shared assertion with evidence.
-void expect_same(const Rendered& a, const Rendered& b, const std::string& what, const char* na, const char* nb) {
-  const testing::ImageZTest z = testing::image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, kAlphaImage);
-  std::printf("%s: %zu of %zu pixels fail (allowed %zu); image means %.5f vs %.5f (z = %.2f)\n", what.c_str(), z.failed,
-              z.pixels, z.allowed, z.mean_a, z.mean_b, z.mean_z);
-  testing::expect_same_image(a, b, what, kAlphaImage, na, nb);
-}
-
 Rendered bpt_reference(const Scene& scene, const Accel& accel, uint64_t seed) {
   return testing::render_integrator(scene, accel, testing::default_config("bpt", testing::test_seed(seed)), 512);
 }
@@ -66,7 +58,7 @@ TEST(ThinLensAgree, PtAndBpt) {
   const Accel accel(scene);
   const Rendered pt = testing::render_integrator(scene, accel, testing::default_config("pt", testing::test_seed(401)), 2048);
   const Rendered bpt = bpt_reference(scene, accel, 402);
-  expect_same(pt, bpt, "thin-lens-pt-vs-bpt", "pt", "bpt");
+  testing::expect_same_image(pt, bpt, "thin-lens-pt-vs-bpt", kAlphaImage, "pt", "bpt");
 
   // The comparison can see the lens: the pinhole render of the same scene is rejected.
   const Scene pinhole = make_lens_cornell(0.f);
@@ -84,7 +76,7 @@ TEST(ThinLensAgree, LtAndBpt) {
   lt.light_paths = 8192;
   const Rendered a = testing::render_integrator(scene, accel, make_render_config("lt", lt, testing::test_seed(411)), 256);
   const Rendered b = bpt_reference(scene, accel, 412);
-  expect_same(a, b, "thin-lens-lt-vs-bpt", "lt", "bpt");
+  testing::expect_same_image(a, b, "thin-lens-lt-vs-bpt", kAlphaImage, "lt", "bpt");
 }
 
 // SPPM or PCLT against BPT on the lens-aware smooth-pixel mask.
@@ -113,7 +105,7 @@ void expect_gathering_agrees(const char* integrator, uint64_t seed) {
   const Rendered ca{compact_pixels(a.mean, keep), compact_pixels(a.variance, keep)};
   const Rendered cb{compact_pixels(b.mean, keep), compact_pixels(b.variance, keep)};
   std::printf("%s: kept %zu of %zu pixels\n", integrator, kept, keep.size());
-  expect_same(ca, cb, std::string("thin-lens-") + integrator + "-vs-bpt", integrator, "bpt");
+  testing::expect_same_image(ca, cb, std::string("thin-lens-") + integrator + "-vs-bpt", kAlphaImage, integrator, "bpt");
 }
 
 TEST(ThinLensAgree, SppmAndBpt) { expect_gathering_agrees("sppm", 421); }

@@ -1,6 +1,6 @@
 // Furnace tests for light tracing: closed scenes with known radiance (support/test_scenes.h), with
-// the box pixel filter, the wider tent / gaussian projection kernels (PCLT sec. 5.2, which must keep
-// a constant image constant) and without the emitter splat; plus the emission weights of every
+// the box pixel filter, the wider tent / gaussian / mitchell pixel filters (the projection kernels of
+// PCLT sec. 5.2, which must keep a constant image constant) and without the emitter splat; plus the emission weights of every
 // light type integrating to the light's flux. Pixels of one LT pass share light paths (they are
 // correlated), so the samples of each t-test are whole-pass image means (independent seeds), as in
 // filter/hashed_filter_furnace_test.cpp. alpha = 0.01, Sidak-corrected over the tests in this file.
@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/integrators/lt/lt_integrator.h"
 #include "support/statistics.h"
 #include "support/test_scenes.h"
@@ -16,7 +17,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kTestsInFile = 12;
+constexpr int kTestsInFile = 13;
 const double kAlpha = testing::sidak(0.01, kTestsInFile);
 
 // Image means (red channel; the scenes are grey) of `passes` independent LT passes.
@@ -72,20 +73,27 @@ TEST(LtFurnace, ClosedBoxWithoutEmitterSplat) {
   expect_pass_means(testing::make_furnace_box(le, albedo), s, 40, 3, le / (1.0 - albedo) - le);
 }
 
+Scene with_filter(Scene scene, const PixelFilter& filter) {
+  scene.camera.filter = filter;
+  return scene;
+}
+
 TEST(LtFurnace, ClosedBoxTentFilter) {
   const float le = 0.8f, albedo = 0.6f;
-  LtSettings s = many_paths();
-  s.filter = LtFilter::tent;
-  s.filter_radius = 1.5f;
-  expect_pass_means(testing::make_furnace_box(le, albedo), s, 40, 4, le / (1.0 - albedo));
+  const Scene scene = with_filter(testing::make_furnace_box(le, albedo), make_pixel_filter(PixelFilterKind::tent, 1.5f));
+  expect_pass_means(scene, many_paths(), 40, 4, le / (1.0 - albedo));
 }
 
 TEST(LtFurnace, ClosedBoxGaussianFilter) {
   const float le = 0.8f, albedo = 0.6f;
-  LtSettings s = many_paths();
-  s.filter = LtFilter::gaussian;
-  s.filter_radius = 2.f;
-  expect_pass_means(testing::make_furnace_box(le, albedo), s, 40, 5, le / (1.0 - albedo));
+  const Scene scene = with_filter(testing::make_furnace_box(le, albedo), make_pixel_filter(PixelFilterKind::gaussian, 2.f, 2.f / 3.f));
+  expect_pass_means(scene, many_paths(), 40, 5, le / (1.0 - albedo));
+}
+
+TEST(LtFurnace, ClosedBoxMitchellFilter) {
+  const float le = 0.8f, albedo = 0.6f;
+  const Scene scene = with_filter(testing::make_furnace_box(le, albedo), make_pixel_filter(PixelFilterKind::mitchell, 2.f));
+  expect_pass_means(scene, many_paths(), 40, 13, le / (1.0 - albedo));
 }
 
 TEST(LtFurnace, SphereWithPointLight) {

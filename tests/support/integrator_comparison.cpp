@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include <fmt/format.h>
@@ -34,6 +35,8 @@ void apply_mask(Rendered* r, const std::vector<bool>& mask) {
 void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what, double alpha_image,
                        const std::string& name_a, const std::string& name_b) {
   const ImageZTest z = image_z_test(a.mean, a.variance, b.mean, b.variance, 1e-3, alpha_image);
+  std::printf("%s: %zu of %zu pixels fail (allowed %zu); image means %.5f vs %.5f (z = %.2f)\n", what.c_str(), z.failed,
+              z.pixels, z.allowed, z.mean_a, z.mean_b, z.mean_z);
   if (z.passed()) return;
   const std::string dir = evidence_dir();
   std::string worst;

@@ -49,8 +49,9 @@ inline RenderConfig with_threads(RenderConfig config, int threads) {
 // Zeroes mean and variance where mask[i] is set (those pixels cannot fail a comparison).
 void apply_mask(Rendered* r, const std::vector<bool>& mask);
 
-// Per-pixel z-test of two renders (support/statistics.h image_z_test, alpha_pixel 1e-3); on
-// failure writes both images to the evidence folder and lists the worst pixels.
+// Per-pixel z-test of two renders (support/statistics.h image_z_test, alpha_pixel 1e-3), its numbers
+// printed for the record; on failure writes both images to the evidence folder and lists the worst
+// pixels.
 void expect_same_image(const Rendered& a, const Rendered& b, const std::string& what, double alpha_image,
                        const std::string& name_a = "a", const std::string& name_b = "b");
 

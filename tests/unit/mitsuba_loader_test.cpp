@@ -210,6 +210,36 @@ TEST(MitsubaLoader, DefinesFromOutside) {
   EXPECT_THROW(load_with({{"a b", "1"}}), Error);
 }
 
+// <rfilter> becomes the camera's pixel filter with Mitsuba 3's parameters and defaults; Mitchell
+// warns that its negative lobes are dropped, lanczos is not built (box, with a warning), and a bad
+// radius is an error at the filter.
+TEST(MitsubaLoader, ReconstructionFilters) {
+  const auto with_filter = [](const std::string& rfilter) {
+    return scene3("<sensor type=\"perspective\"><film type=\"hdrfilm\">" + rfilter + "</film></sensor>");
+  };
+  Loaded r = load(with_filter("<rfilter type=\"tent\"/>"));
+  EXPECT_TRUE(r.warnings.empty()) << ::testing::PrintToString(r.warnings);
+  EXPECT_EQ(r.scene.camera.filter.kind, PixelFilterKind::tent);
+  EXPECT_EQ(r.scene.camera.filter.radius, 1.f);
+  r = load(with_filter("<rfilter type=\"gaussian\"><float name=\"stddev\" value=\"0.25\"/></rfilter>"));
+  EXPECT_EQ(r.scene.camera.filter.kind, PixelFilterKind::gaussian);
+  EXPECT_EQ(r.scene.camera.filter.sigma, 0.25f);
+  EXPECT_EQ(r.scene.camera.filter.radius, 1.f);  // 4 stddev
+  r = load(with_filter("<rfilter type=\"catmullrom\"/>"));
+  EXPECT_EQ(r.scene.camera.filter.kind, PixelFilterKind::mitchell);
+  EXPECT_EQ(r.scene.camera.filter.b, 0.f);
+  EXPECT_EQ(r.scene.camera.filter.c, 0.5f);
+  EXPECT_NE(find_warning(r.warnings, "negative lobes are dropped"), "");
+  r = load(with_filter("<rfilter type=\"lanczos\"/>"));
+  EXPECT_TRUE(r.scene.camera.filter.is_unit_box());
+  EXPECT_NE(find_warning(r.warnings, "'lanczos' not supported"), "");
+  r = load(with_filter("<rfilter type=\"box\"/>"));
+  EXPECT_TRUE(r.scene.camera.filter.is_unit_box());
+  EXPECT_TRUE(r.warnings.empty()) << ::testing::PrintToString(r.warnings);
+  expect_error(with_filter("<rfilter type=\"tent\"><float name=\"radius\" value=\"-1\"/></rfilter>"), "scene.xml:2:",
+               "radius -1 must be in (0, 16]");
+}
+
 // The thinlens sensor in both namings sets the camera's lens without a warning; both parameters are
 // required (Mitsuba 0.6 requires them; Mitsuba 3's focus_distance default 0 is degenerate).
 TEST(MitsubaLoader, ThinLensSensor) {
@@ -248,7 +278,8 @@ TEST(MitsubaLoader, SensorFilmSamplerIntegrator) {
   const double tan_diag = std::hypot(36.0, 24.0) / 70.0;
   EXPECT_NEAR(r.scene.camera.tan_y, tan_diag * 20.0 / std::hypot(30.0, 20.0), 1e-5);
   EXPECT_NE(find_warning(r.warnings, "scene.xml:2:63: warning: hide_emitters"), "") << ::testing::PrintToString(r.warnings);
-  EXPECT_NE(find_warning(r.warnings, "scene.xml:4:91: warning: reconstruction filter 'gaussian'"), "");
+  EXPECT_EQ(r.scene.camera.filter.kind, PixelFilterKind::gaussian);  // Mitsuba's stddev 0.5, radius 2
+  EXPECT_EQ(r.scene.camera.filter.radius, 2.f);
   // Options override the file's resolution.
   SceneLoadOptions o;
   o.width = 8;

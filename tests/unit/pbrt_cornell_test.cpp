@@ -47,8 +47,9 @@ TEST(PbrtCornellBox, GeometryLightsCamera) {
   EXPECT_EQ(s.max_path_segments, 66);  // maxdepth 65 bounces
   EXPECT_EQ(settings.spp, 64);
   EXPECT_EQ(settings.image_name, "cornell-box.png");
-  ASSERT_EQ(warnings.size(), 1u);  // only the triangle pixel filter is unsupported
-  EXPECT_NE(warnings[0].find("scene-v4.pbrt:6:1: warning: PixelFilter \"triangle\""), std::string::npos) << warnings[0];
+  EXPECT_TRUE(warnings.empty()) << ::testing::PrintToString(warnings);
+  EXPECT_EQ(s.camera.filter.kind, PixelFilterKind::tent);  // PixelFilter "triangle", radius 1 (Tungsten's tent)
+  EXPECT_EQ(s.camera.filter.radius, 1.f);
 }
 
 TEST(PbrtCornellBox, RenderMatchesTungstenOnDiffuseWalls) {

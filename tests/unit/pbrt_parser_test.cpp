@@ -314,6 +314,43 @@ TEST(PbrtParser, UnsupportedFeaturesWarnWithLocation) {
 
 }
 
+// PixelFilter becomes the camera's pixel filter with pbrt-v4's parameters and defaults ("triangle" is
+// the tent); an --fov override keeps it; sinc is not built (box, warned); a bad radius is an error
+// at the statement.
+TEST(PbrtParser, PixelFilters) {
+  auto load_filter = [](const std::string& filter, std::vector<std::string>* w, SceneLoadOptions o = {}) {
+    LoadWarnings lw(w);
+    return pbrt::load_pbrt_string(filter + "\nCamera \"perspective\"\nWorldBegin\nShape \"sphere\"\n", "filter.pbrt", "", o, &lw, nullptr);
+  };
+  std::vector<std::string> w;
+  Scene s = load_filter("PixelFilter \"triangle\" \"float xradius\" 1 \"float yradius\" 1", &w);
+  EXPECT_TRUE(w.empty()) << ::testing::PrintToString(w);
+  EXPECT_EQ(s.camera.filter.kind, PixelFilterKind::tent);
+  EXPECT_EQ(s.camera.filter.radius, 1.f);
+  SceneLoadOptions fov;
+  fov.fov_degrees = 30.f;
+  s = load_filter("PixelFilter \"gaussian\" \"float sigma\" 0.4", &w, fov);
+  EXPECT_EQ(s.camera.filter.kind, PixelFilterKind::gaussian);
+  EXPECT_EQ(s.camera.filter.radius, 1.5f);
+  EXPECT_EQ(s.camera.filter.sigma, 0.4f);
+  s = load_filter("PixelFilter \"mitchell\" \"float B\" 0.5 \"float C\" 0.25", &w);
+  EXPECT_EQ(s.camera.filter.kind, PixelFilterKind::mitchell);
+  EXPECT_EQ(s.camera.filter.b, 0.5f);
+  EXPECT_TRUE(has_warning(w, "filter.pbrt:1:1: warning: the mitchell filter's negative lobes are dropped"));
+  w.clear();
+  s = load_filter("PixelFilter \"sinc\"", &w);
+  EXPECT_TRUE(s.camera.filter.is_unit_box());
+  EXPECT_TRUE(has_warning(w, "PixelFilter \"sinc\" not supported"));
+  s = load_filter("", &w);
+  EXPECT_TRUE(s.camera.filter.is_unit_box());
+  try {
+    load_filter("PixelFilter \"box\" \"float xradius\" 0", &w);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("filter.pbrt:1:1"), std::string::npos) << e.what();
+  }
+}
+
 // pbrt-v4's thin lens: lensradius and focaldistance (default 1e6) set the camera, without warnings;
 // an --fov override keeps the lens; bad values are errors at the Camera statement.
 TEST(PbrtParser, ThinLensCamera) {

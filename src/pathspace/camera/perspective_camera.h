@@ -25,6 +25,7 @@
 //    and distances measured from the sampled x0 enter the weights. Light paths cannot hit the lens.
 #pragma once
 
+#include "pathspace/camera/pixel_filter.h"
 #include "pathspace/geometry/ray.h"
 #include "pathspace/sampling/warps.h"
 
@@ -53,6 +54,7 @@ struct PerspectiveCamera {
   int width = 0, height = 0;
   float lens_radius = 0.f;     // 0: pinhole (no depth of field)
   float focus_distance = 1.f;  // distance of the plane in focus along forward (thin lens only)
+  PixelFilter filter;          // the film's reconstruction filter (camera/pixel_filter.h)
 
   PS_HD bool is_pinhole() const { return !(lens_radius > 0.f); }
   PS_HD CameraPose pose() const { return {position, forward, right, up}; }

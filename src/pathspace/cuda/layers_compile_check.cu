@@ -26,6 +26,7 @@
 #include "pathspace/geometry/shapes.h"
 #include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/camera/perspective_camera.h"
+#include "pathspace/camera/pixel_filter.h"
 #include "pathspace/filters/hashed/voxel_hash_table_view.h"
 #include "pathspace/filters/hashed/voxel_key.h"
 #include "pathspace/hashgrid/grid_cell.h"
@@ -87,6 +88,9 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
   CameraProjection projection;
   if (cam.project(ray.at(1.f), v, &projection)) acc += projection.factor;
   if (cam.connect(ray.at(2.f), v, &projection)) acc += projection.factor;
+  const Point2 offset = sample_filter_raster(cam.filter, i % uint32_t(cam.width), 0, u.x, u.y);
+  if (filter_reaches_image(cam.filter, cam.width, cam.height, offset.x, offset.y))
+    for_each_filter_pixel(cam.filter, cam.width, cam.height, offset.x, offset.y, [&](uint32_t pixel, float w) { acc += w * float(pixel); });
   float tree_prob = 0.f;
   const uint32_t picked = select_light_at(scene, ray.o, ray.d, v.x, &tree_prob);
   if (picked != LightTreeView::kNone) acc += tree_prob - light_selection_probability_at(scene, ray.o, ray.d, picked);

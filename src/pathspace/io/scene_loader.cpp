@@ -73,10 +73,11 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   const float fov = o.fov_degrees.value_or(kDefaultFov);
   if (!(fov > 0.f && fov < 180.f)) throw Error("--fov must be between 0 and 180 degrees");
   PerspectiveCamera& c = scene->camera;
-  const PerspectiveCamera file_camera = c;  // its thin lens survives the override
+  const PerspectiveCamera file_camera = c;  // its thin lens and pixel filter survive the override
   if (!place) {  // only the field of view changes
     c = make_file_camera(c.position, c.forward, c.right, c.up, fov, width, height);
     set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
+    c.filter = file_camera.filter;
     return;
   }
   const Bounds3 b = scene->geometry_bounds();
@@ -92,6 +93,7 @@ void apply_camera_options(const SceneLoadOptions& o, bool frame_bounds, int widt
   if (!(length(right) > 1e-6f)) throw Error("camera up vector is parallel to the view direction");
   c = make_file_camera(pos, forward, right, cross(normalize(right), normalize(forward)), fov, width, height);
   set_thin_lens(&c, file_camera.lens_radius, file_camera.focus_distance);
+  c.filter = file_camera.filter;
   scene->camera_moves = false;  // a camera placed on the command line stands still
 }
 

@@ -68,9 +68,24 @@ PS_INLINE void record(const BptFilms& films, int s, int t, uint32_t pixel, const
   films.strategies[bpt_strategy_index(s, t)].add(pixel, v);
 }
 
-PS_INLINE void splat(const BptFilms& films, int s, uint32_t pixel, const Rgb& v) {
-  films.splats.add(pixel, v);
-  record(films, s, 1, pixel, v);
+// A t = 1 contribution at raster (rx, ry), spread by the camera's pixel filter (camera/pixel_filter.h).
+PS_INLINE void splat(const BptFilms& films, const PixelFilter& filter, int s, float rx, float ry, const Rgb& v) {
+  for_each_filter_pixel(filter, films.splats.width, films.splats.height, rx, ry, [&](uint32_t pixel, float w) {
+    const Rgb wv = w == 1.f ? v : v * w;
+    films.splats.add(pixel, wv);
+    record(films, s, 1, pixel, wv);
+  });
+}
+
+// The camera connection (t = 1) of point p: projected through the lens sample, kept when the pixel
+// filter reaches the image from there (unclipped for a wide filter, as LT's).
+PS_INLINE bool connect_to_film(const PerspectiveCamera& cam, const Vec3& p, Point2 lens_u, CameraProjection* pr) {
+  return cam.project(p, lens_u, pr) && filter_reaches_image(cam.filter, cam.width, cam.height, pr->rx, pr->ry);
+}
+
+// Prefetches the splat film's pixel of a unit-box splat (the only single-pixel one).
+PS_INLINE void prefetch_splat(const BptFilms& films, const PerspectiveCamera& cam, float rx, float ry) {
+  if (cam.filter.is_unit_box()) films.splats.prefetch(raster_pixel(cam, rx, ry));
 }
 
 // Traces the light subpath, splats its camera connections (t = 1, including the emitter itself:
@@ -98,17 +113,16 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   // point, density camera_pdf_a per camera sample) against n_light light paths.
   if (is_area_light(light)) {
     CameraProjection pr;
-    if (cam.connect(e.p, connection_lens_sample(cam, sampler, 0), &pr)) {
+    if (connect_to_film(cam, e.p, connection_lens_sample(cam, sampler, 0), &pr)) {
       const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        const uint32_t pixel = raster_pixel(cam, pr.rx, pr.ry);
-        films.splats.prefetch(pixel);
+        prefetch_splat(films, cam, pr.rx, pr.ry);
         if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
           const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
-          splat(films, 1, pixel, le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
+          splat(films, cam.filter, 1, pr.rx, pr.ry, le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
         }
       }
     }
@@ -157,21 +171,20 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
     if (bsdf_has_non_delta(mat)) {
       // t = 1 (PCLT eq. 4 with the LT kernel's adjoint factor), weighted against all camera-side strategies.
       CameraProjection pr;
-      if (cam.connect(hit.p, connection_lens_sample(cam, sampler, uint32_t(segments)), &pr)) {
+      if (connect_to_film(cam, hit.p, connection_lens_sample(cam, sampler, uint32_t(segments)), &pr)) {
         const Vec3 wi = frame.to_local(pr.wi);
         const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          const uint32_t pixel = raster_pixel(cam, pr.rx, pr.ry);
-          films.splats.prefetch(pixel);
+          prefetch_splat(films, cam, pr.rx, pr.ry);
           if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
             const float cos_cam = fabsf(dot(pr.wi, hit.ng));
             const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
             const float w_light = mis(h, pr.factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
             const float scale = fabsf(wo.z) * cos_cam / cos_in * pr.factor * inv_paths / (1.f + w_light);
-            splat(films, segments + 1, pixel, beta * f * scale);
+            splat(films, cam.filter, segments + 1, pr.rx, pr.ry, beta * f * scale);
           }
         }
       }

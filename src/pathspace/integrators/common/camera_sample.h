@@ -17,12 +17,13 @@ PS_HD inline Point2 camera_lens_sample(const PerspectiveCamera& cam, const Sampl
   return {sampler.at(dim), sampler.at(dim + 1)};
 }
 
-// The camera ray of the camera path through `pixel` (box filter: uniform in the pixel and the lens),
-// at `time` (scene/motion.h; camera_path_time).
+// The camera ray of the camera path through `pixel` at `time` (scene/motion.h; camera_path_time):
+// its raster position drawn from the camera's pixel filter around the pixel's centre (filter
+// importance sampling, camera/pixel_filter.h), its lens point uniform on the lens.
 PS_HD inline Ray sample_camera_ray(const PerspectiveCamera& cam, const Sampler& sampler, uint32_t pixel, float time) {
-  const float rx = float(pixel % uint32_t(cam.width)) + sampler.at(dims::kPixelX);
-  const float ry = float(pixel / uint32_t(cam.width)) + sampler.at(dims::kPixelY);
-  Ray ray = cam.generate_ray(rx, ry, camera_lens_sample(cam, sampler, dims::kLensU));
+  const Point2 r = sample_filter_raster(cam.filter, pixel % uint32_t(cam.width), pixel / uint32_t(cam.width),
+                                        sampler.at(dims::kPixelX), sampler.at(dims::kPixelY));
+  Ray ray = cam.generate_ray(r.x, r.y, camera_lens_sample(cam, sampler, dims::kLensU));
   ray.time = time;
   return ray;
 }

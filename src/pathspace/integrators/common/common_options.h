@@ -21,9 +21,4 @@ void add_mis_option(OptionTable<Settings>& table, Field field) {
                "MIS heuristic", "Veach 1997, sec. 9.2");
 }
 
-// The reconstruction filters of a camera projection (LT, PCLT: PCLT paper sec. 5.2).
-inline std::vector<std::pair<std::string, LtFilter>> reconstruction_filter_choices() {
-  return {{"box", LtFilter::box}, {"tent", LtFilter::tent}, {"gaussian", LtFilter::gaussian}};
-}
-
 }  // namespace pathspace

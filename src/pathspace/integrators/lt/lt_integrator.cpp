@@ -11,10 +11,7 @@ namespace pathspace {
 
 LtIntegrator::LtIntegrator(const Scene& scene, const Accel& accel, const LtSettings& settings, uint64_t seed)
     : view_(scene.view()), accel_(accel), settings_(settings), seed_(seed),
-      splats_(scene.camera.width, scene.camera.height, settings.splat_scale > 0.0 ? settings.splat_scale : SplatFilm::kDefaultScale) {
-  if (settings.filter != LtFilter::box && !(settings.filter_radius > 0.f && settings.filter_radius <= 16.f))
-    throw Error(fmt::format("lt filter radius {} must be in (0, 16] pixels", settings.filter_radius));
-}
+      splats_(scene.camera.width, scene.camera.height, settings.splat_scale > 0.0 ? settings.splat_scale : SplatFilm::kDefaultScale) {}
 
 void LtIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counters) {
   lt_render_pass(view_, accel_, settings_, seed_, pass, splats_, film, counters);

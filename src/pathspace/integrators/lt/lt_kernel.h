@@ -2,8 +2,8 @@
 // emit from a light (scene/light_emission.h), scatter with the adjoint BSDF (TransportMode::
 // importance) and connect every vertex to the camera by projection (PCLT paper eq. 4; through a
 // sampled lens point for a thin lens, PerspectiveCamera::project),
-// splatting into a SplatFilmView through the box pixel filter or a wider reconstruction kernel
-// (PCLT sec. 5.2). Shading normals use Veach's adjoint correction (Veach 1997 §5.3, eq. 5.17):
+// splatting into a SplatFilmView through the camera's pixel filter (camera/pixel_filter.h; the
+// reconstruction kernels of PCLT sec. 5.2). Shading normals use Veach's adjoint correction (Veach 1997 §5.3, eq. 5.17):
 // a light-path vertex scales by |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|) on top of f |wi.ns|.
 #pragma once
 
@@ -28,65 +28,23 @@ namespace lt_detail {
 // position is not clipped to the image, so a wide filter lets points just outside reach border pixels.
 using Projection = CameraProjection;
 
-// The filter's 1D profile at offset x (pixels) and its integral over [-r, r]; the 2D kernel is
-// the separable product, normalised to integrate to one pixel area so that a constant image stays
-// constant. The gaussian has sigma = r / 2 and is truncated at r.
-PS_INLINE float filter_1d(LtFilter f, float x, float r) {
-  const float a = fabsf(x);
-  if (a >= r) return 0.f;
-  if (f == LtFilter::tent) return 1.f - a / r;
-  const float sigma = 0.5f * r;
-  return expf(-a * a / (2.f * sigma * sigma));
-}
-PS_INLINE float filter_1d_integral(LtFilter f, float r) {
-  if (f == LtFilter::tent) return r;
-  const float sigma = 0.5f * r;
-  return sigma * sqrtf(kTwoPi) * erff(r / (sigma * 1.41421356f));
-}
-
 // Distributes value (already divided by the path count; box-filter units) over the pixels whose
-// filter support contains (rx, ry).
-// The pixel a box-filtered splat at (rx, ry) adds to; false outside the image.
-PS_INLINE bool box_splat_pixel(const SplatFilmView& film, float rx, float ry, uint32_t* pixel) {
-  if (!(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return false;
-  const int i = min_int(int(rx), film.width - 1), j = min_int(int(ry), film.height - 1);
-  *pixel = uint32_t(i) + uint32_t(j) * uint32_t(film.width);
-  return true;
+// pixel filter support contains (rx, ry) (camera/pixel_filter.h: the same filter camera paths sample).
+PS_INLINE void splat(const SplatFilmView& film, const PixelFilter& filter, float rx, float ry, const Rgb& value) {
+  for_each_filter_pixel(filter, film.width, film.height, rx, ry, [&](uint32_t pixel, float w) {
+    film.add(pixel, w == 1.f ? value : value * w);
+  });
 }
 
-PS_INLINE void splat(const SplatFilmView& film, const LtSettings& s, float rx, float ry, const Rgb& value) {
-  if (s.filter == LtFilter::box) {
-    uint32_t pixel;
-    if (box_splat_pixel(film, rx, ry, &pixel)) film.add(pixel, value);
-    return;
-  }
-  const float r = s.filter_radius;
-  const float norm = filter_1d_integral(s.filter, r);
-  const float inv_norm2 = 1.f / (norm * norm);
-  // Pixel centres (i + 0.5) strictly within r of the sample.
-  const int i0 = max_int(0, int(ceilf(rx - r - 0.5f))), i1 = min_int(film.width - 1, int(floorf(rx + r - 0.5f)));
-  const int j0 = max_int(0, int(ceilf(ry - r - 0.5f))), j1 = min_int(film.height - 1, int(floorf(ry + r - 0.5f)));
-  for (int j = j0; j <= j1; ++j) {
-    const float wy = filter_1d(s.filter, float(j) + 0.5f - ry, r);
-    if (wy <= 0.f) continue;
-    for (int i = i0; i <= i1; ++i) {
-      const float wx = filter_1d(s.filter, float(i) + 0.5f - rx, r);
-      if (wx <= 0.f) continue;
-      film.add(uint32_t(i) + uint32_t(j) * uint32_t(film.width), value * (wx * wy * inv_norm2));
-    }
-  }
-}
-
-// Prefetches the pixel a box-filtered splat at (rx, ry) would add to (SplatFilmView::prefetch).
-PS_INLINE void prefetch_splat(const SplatFilmView& film, const LtSettings& s, float rx, float ry) {
-  uint32_t pixel;
-  if (s.filter == LtFilter::box && box_splat_pixel(film, rx, ry, &pixel)) film.prefetch(pixel);
+// Prefetches the pixel a unit-box splat at (rx, ry) would add to (SplatFilmView::prefetch).
+PS_INLINE void prefetch_splat(const SplatFilmView& film, const PixelFilter& filter, float rx, float ry) {
+  if (!filter.is_unit_box() || !(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return;
+  film.prefetch(uint32_t(min_int(int(rx), film.width - 1)) + uint32_t(min_int(int(ry), film.height - 1)) * uint32_t(film.width));
 }
 
 // Whether any pixel can receive a splat at (rx, ry): saves the shadow ray for points far outside.
-PS_INLINE bool reaches_image(const SplatFilmView& film, const LtSettings& s, float rx, float ry) {
-  const float r = s.filter == LtFilter::box ? 0.f : s.filter_radius;
-  return rx > -r && rx < float(film.width) + r && ry > -r && ry < float(film.height) + r;
+PS_INLINE bool reaches_image(const SplatFilmView& film, const PixelFilter& filter, float rx, float ry) {
+  return filter_reaches_image(filter, film.width, film.height, rx, ry);
 }
 
 }  // namespace lt_detail
@@ -112,15 +70,15 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   // directional and environment lights are never hit by camera rays either (PT agrees).
   if (!settings.skip_emitter && is_area_light(light)) {
     Projection pr;
-    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(film, cam.filter, pr.rx, pr.ry)) {
       const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        prefetch_splat(film, settings, pr.rx, pr.ry);
+        prefetch_splat(film, cam.filter, pr.rx, pr.ry);
         if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time))) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
-          splat(film, settings, pr.rx, pr.ry, le * scale);
+          splat(film, cam.filter, pr.rx, pr.ry, le * scale);
         }
       }
     }
@@ -149,16 +107,16 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     // shading-normal factor times |wi.ns| (Veach eq. 5.17).
     if (bsdf_has_non_delta(mat)) {
       Projection pr;
-      if (cam.project(hit.p, connection_lens_sample(cam, sampler, v + 1), &pr) && reaches_image(film, settings, pr.rx, pr.ry)) {
+      if (cam.project(hit.p, connection_lens_sample(cam, sampler, v + 1), &pr) && reaches_image(film, cam.filter, pr.rx, pr.ry)) {
         const Vec3 wi = frame.to_local(pr.wi);
         const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::importance);
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          prefetch_splat(film, settings, pr.rx, pr.ry);
+          prefetch_splat(film, cam.filter, pr.rx, pr.ry);
           if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time))) {
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
-            splat(film, settings, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));
+            splat(film, cam.filter, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));
           }
         }
       }

@@ -13,9 +13,6 @@ OptionTable<LtSettings> lt_options() {
   add_max_depth_option(t, &S::max_segments);
   t.number("light-paths", &S::light_paths, 0, double(uint64_t(1) << 32), "Light paths per pass").shows_default("one per pixel");
   t.flag("lt-skip-emitter", &S::skip_emitter, true, "Do not splat the light sources themselves (SmallVCM's LT)");
-  t.choice("lt-filter", &S::filter, reconstruction_filter_choices(), "Reconstruction filter of the camera projection",
-           "PCLT paper sec. 5.2");
-  t.number("lt-filter-radius", &S::filter_radius, 0.01, 16.0, "Tent / gaussian radius in pixels");
   t.number("lt-splat-scale", &S::splat_scale, 0.0, 1e18, "Fixed-point units per unit pixel value").shows_default("2^32");
   return t;
 }

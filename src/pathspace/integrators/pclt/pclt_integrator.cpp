@@ -36,8 +36,6 @@ PcltIntegrator::PcltIntegrator(const Scene& scene, const Accel& accel, const Pcl
     : view_(scene.view()), accel_(accel), s_(settings), seed_(seed),
       splats_(scene.camera.width, scene.camera.height, settings.splat_scale > 0.0 ? settings.splat_scale : SplatFilm::kDefaultScale) {
   if (!(s_.alpha > 0.f && s_.alpha <= 1.f)) throw Error(fmt::format("PCLT alpha must be in (0, 1], not {}", s_.alpha));
-  if (s_.filter != LtFilter::box && !(s_.filter_radius > 0.f && s_.filter_radius <= 16.f))
-    throw Error(fmt::format("pclt filter radius {} must be in (0, 16] pixels", s_.filter_radius));
   if (!(s_.epsilon >= 0.f && s_.epsilon < 1.f)) throw Error(fmt::format("pclt epsilon {} must be in [0, 1)", s_.epsilon));
   // The z-buffer and plane shortcuts (sec. 5.3) compare with the first hit of one camera ray per
   // pixel, i.e. they assume every projection goes through the same pinhole. With a thin lens each
@@ -164,8 +162,6 @@ void PcltIntegrator::render_pass(uint32_t pass, Film& film, PathCounters& counte
   // (c) Light pass.
   t = std::chrono::steady_clock::now();
   PcltLightView lv;  // lv.film: each worker's own (below)
-  lv.projection.filter = s_.filter;
-  lv.projection.filter_radius = s_.filter_radius;
   lv.visibility = s_.visibility;
   lv.epsilon = s_.epsilon;
   lv.zbuffer = zbuffer_.data();

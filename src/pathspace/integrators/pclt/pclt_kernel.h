@@ -224,7 +224,6 @@ PS_HD void pclt_trace_eye(const SceneView& scene, const Tracer& tracer, const Sa
 // land there, fixed point), this iteration's cache and its search structure, the visibility buffers.
 struct PcltLightView {
   SplatFilmView film;
-  LtSettings projection;   // filter kernel (sec. 5.2) for lt_detail::splat
   PcltVisibility visibility = PcltVisibility::shadow_ray;
   float epsilon = 5e-4f;
   const float* zbuffer = nullptr;  // per pixel, kInfinity where the camera ray escaped
@@ -307,12 +306,12 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
 
   if (is_area_light(light)) {  // EL, as LT
     Projection pr;
-    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
+    if (cam.project(e.p, connection_lens_sample(cam, sampler, 0), &pr) && reaches_image(lv.film, cam.filter, pr.rx, pr.ry)) {
       const Rgb le = area_light_radiance(scene, light, e.ng, pr.wi, e.uv);
       if (!is_black(le) && (++lc->visibility_tests, projection_visible(scene, tracer, lv, e.p, e.ng, pr, counters))) {
         ++lc->projections;
         const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * lv.inv_paths;
-        splat(lv.film, lv.projection, pr.rx, pr.ry, le * scale);
+        splat(lv.film, cam.filter, pr.rx, pr.ry, le * scale);
       }
     }
   }
@@ -342,14 +341,14 @@ PS_HD void pclt_trace_light(const SceneView& scene, const Tracer& tracer, const 
     if (pclt_detail::has_diffuse(mat)) {
       Projection pr;
       if (cam.project(hit.p, connection_lens_sample(cam, sampler, v + 1), &pr) &&
-          reaches_image(lv.film, lv.projection, pr.rx, pr.ry)) {
+          reaches_image(lv.film, cam.filter, pr.rx, pr.ry)) {
         const Rgb f = pclt_detail::diffuse_eval(mat, wo, frame.to_local(pr.wi));
         if (!is_black(f)) {
           ++lc->visibility_tests;
           if (projection_visible(scene, tracer, lv, hit.p, hit.ng, pr, counters)) {
             ++lc->projections;
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
-            splat(lv.film, lv.projection, pr.rx, pr.ry, beta * f * (cosines * pr.factor * lv.inv_paths));
+            splat(lv.film, cam.filter, pr.rx, pr.ry, beta * f * (cosines * pr.factor * lv.inv_paths));
           }
         }
       }

@@ -19,8 +19,6 @@ OptionTable<PcltSettings> pclt_options() {
   t.number("pclt-alpha", &S::alpha, 1e-3, 1.0, "Knaus-Zwicker radius reduction; the paper recommends [1/3, 2/3]", "eq. 1");
   t.number("pclt-radius", &S::initial_radius, 0.0, 1e30, "Initial gathering radius in scene units")
       .shows_default("1% of the scene's bounding radius");
-  t.choice("pclt-filter", &S::filter, reconstruction_filter_choices(), "Reconstruction filter of the camera projection", "sec. 5.2");
-  t.number("pclt-filter-radius", &S::filter_radius, 0.01, 16.0, "Tent / gaussian radius in pixels", "sec. 5.2");
   t.choice("pclt-visibility", &S::visibility,
            std::vector<std::pair<std::string, PcltVisibility>>{{"shadow-ray", PcltVisibility::shadow_ray},
                                                                {"z-buffer", PcltVisibility::z_buffer},

@@ -6,8 +6,6 @@
 
 #include <cstdint>
 
-#include "pathspace/integrators/lt/lt_settings.h"
-
 namespace pathspace {
 
 // How a projected light vertex is tested for visibility from the camera (sec. 5.3).
@@ -27,8 +25,6 @@ struct PcltSettings {
   float alpha = 2.f / 3.f;
   float initial_radius = 0.f;   // scene units; <= 0: radius_fraction * bounding-sphere radius
   float radius_fraction = 0.01f;  // as SPPM (sppm_settings.h: ~4 pixel footprints at 512^2)
-  LtFilter filter = LtFilter::box;  // projection kernel (sec. 5.2)
-  float filter_radius = 1.5f;
   int roulette_start = 3;       // Russian roulette for eye and light paths from this many segments on
   PcltVisibility visibility = PcltVisibility::shadow_ray;
   float epsilon = 5e-4f;        // z-buffer / plane tolerance relative to the view depth (sec. 5.3)

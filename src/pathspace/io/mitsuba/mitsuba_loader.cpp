@@ -16,6 +16,7 @@
 #include "pathspace/io/mitsuba/mitsuba_object.h"
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
+#include "pathspace/io/scene_pixel_filter.h"
 #include "pathspace/scene/scene_validation.h"
 
 namespace pathspace::mitsuba {
@@ -111,6 +112,7 @@ class Builder {
     };
     scene_.camera = camera_for(camera_to_world_);
     set_thin_lens(&scene_.camera, aperture_radius_, focus_distance_);  // validated in sensor()
+    scene_.camera.filter = pixel_filter_;
     if (!(camera_to_world_ == camera_to_world_end_)) {  // an animated sensor: motion blur (scene/motion.h)
       scene_.camera_moves = true;
       scene_.camera_end = camera_for(camera_to_world_end_).pose();
@@ -219,13 +221,41 @@ class Builder {
     film_height_ = o.get_int("height", 576);
     if (film_width_ < 1 || film_height_ < 1 || film_width_ > kMaxImageSide || film_height_ > kMaxImageSide)
       throw Error(o.loc(), "film width and height must be between 1 and " + std::to_string(kMaxImageSide));
-    for (const pugi::xml_node& n : o.children("rfilter")) {
-      const Object f(doc_, n);
-      if (f.type() != "box") w_->add(f.loc(), "reconstruction filter '" + f.type() + "' not supported: pathspace uses a box filter of one pixel");
-      f.ignore_all();
-    }
+    for (const pugi::xml_node& n : o.children("rfilter")) rfilter(Object(doc_, n));
     o.ignore({"file_format", "pixel_format", "component_format", "banner", "high_quality_edges", "tonemap_method", "gamma", "exposure"});
     o.warn_unused(w_);
+  }
+
+  // Mitsuba 3's filters with their parameters: box (radius 0.5), tent (radius), gaussian (stddev,
+  // radius 4 stddev), mitchell (B, C; radius 2) and catmullrom (mitchell with B 0, C 0.5).
+  void rfilter(const Object& f) {
+    const std::string& type = f.type();
+    PixelFilterKind kind = PixelFilterKind::box;
+    double radius = 0.5, sigma = 0.5, b = 1.0 / 3.0, c = 1.0 / 3.0;
+    if (type == "tent") {
+      kind = PixelFilterKind::tent;
+      radius = f.get_float("radius", 1.0);
+    } else if (type == "gaussian") {
+      kind = PixelFilterKind::gaussian;
+      sigma = f.get_float("stddev", 0.5);
+      radius = 4.0 * sigma;
+    } else if (type == "mitchell" || type == "catmullrom") {
+      kind = PixelFilterKind::mitchell;
+      radius = 2.0;
+      if (type == "catmullrom") {
+        b = 0.0;
+        c = 0.5;
+      } else {
+        b = f.get_float("B", b);
+        c = f.get_float("C", c);
+      }
+    } else if (type != "box") {
+      w_->add(f.loc(), "reconstruction filter '" + type + "' not supported: pathspace uses a box filter of one pixel");
+      f.ignore_all();
+      return;
+    }
+    pixel_filter_ = scene_pixel_filter(kind, radius, sigma, b, c, f.loc(), w_);
+    f.warn_unused(w_);
   }
 
   void sampler(const Object& o) {
@@ -448,6 +478,7 @@ class Builder {
   float aperture_radius_ = 0.f, focus_distance_ = 1.f;  // thinlens sensor; 0: pinhole
   std::map<std::string, pugi::xml_node> groups_;  // shapegroups by id, for the instances after them
   int film_width_ = 768, film_height_ = 576, spp_ = 0, max_segments_ = kUnboundedSegments;
+  PixelFilter pixel_filter_;  // <rfilter>; without one the unit box, not Mitsuba's default gaussian
 };
 
 }  // namespace

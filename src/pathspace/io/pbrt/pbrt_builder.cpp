@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
+#include "pathspace/camera/pixel_filter_table.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
+#include "pathspace/io/scene_pixel_filter.h"
 #include "pathspace/io/spectrum/white_balance.h"
 #include "pathspace/scene/scene_validation.h"
 
@@ -40,6 +43,7 @@ Scene SceneBuilder::finish(SceneFileSettings* settings) {
   at_shutter(camera_from_world_, camera_from_world_end_, camera_time_start_, camera_time_end_, camera_loc_, &open, &close);
   scene_.camera = file_camera_at(open, w, h);
   set_thin_lens(&scene_.camera, lens_radius_, focal_distance_);  // validated in camera()
+  scene_.camera.filter = pixel_filter_;
   if (!(open == close)) {  // motion blur of the camera (scene/motion.h)
     scene_.camera_moves = true;
     scene_.camera_end = file_camera_at(close, w, h).pose();
@@ -177,8 +181,7 @@ void SceneBuilder::dispatch(const Statement& st) {
     st.ignore({"lightsampler"});
     if (st.strings[0] != "path" && st.strings[0] != "volpath") mark_all(st);
   } else if (d == "PixelFilter") {
-    if (st.strings[0] != "box") warn(st.loc, "PixelFilter \"" + st.strings[0] + "\" not supported: pathspace uses a box filter of one pixel");
-    mark_all(st);
+    pixel_filter(st);
   } else if (d == "Accelerator") {
     mark_all(st);
   } else if (d == "Texture") {
@@ -274,6 +277,25 @@ void SceneBuilder::apply_imaging_ratio() {
   const float ratio = exposure_time_ * iso_ / 100.f;
   if (ratio == 1.f) return;
   for (Light& l : scene_.lights) l.value = l.value * ratio;
+}
+
+// PixelFilter: box, triangle (pathspace's tent), gaussian and mitchell with pbrt-v4's parameters and
+// defaults; one radius for both axes.
+void SceneBuilder::pixel_filter(const Statement& st) {
+  const std::string& name = st.strings[0];
+  const std::optional<PixelFilterKind> kind = name == "triangle" ? PixelFilterKind::tent : parse_pixel_filter_kind(name);
+  if (!kind || name == "tent") {
+    warn(st.loc, "PixelFilter \"" + name + "\" not supported: pathspace uses a box filter of one pixel");
+    mark_all(st);
+    return;
+  }
+  const double fallback = default_pixel_filter_radius(*kind);
+  const double xradius = st.get_float("xradius", fallback), yradius = st.get_float("yradius", fallback);
+  if (xradius != yradius) warn(st.loc, fmt::format("PixelFilter: xradius {} and yradius {} differ; pathspace uses xradius on both axes", xradius, yradius));
+  const double sigma = *kind == PixelFilterKind::gaussian ? st.get_float("sigma", 0.5) : 0.5;
+  const double b = *kind == PixelFilterKind::mitchell ? st.get_float("B", 1.0 / 3.0) : 1.0 / 3.0;
+  const double c = *kind == PixelFilterKind::mitchell ? st.get_float("C", 1.0 / 3.0) : 1.0 / 3.0;
+  pixel_filter_ = scene_pixel_filter(*kind, xradius, sigma, b, c, st.loc, warnings_);
 }
 
 void SceneBuilder::camera(const Statement& st) {

@@ -95,6 +95,7 @@ class SceneBuilder {
   // the image, for every integrator alike.
   void apply_imaging_ratio();
   void camera(const Statement& st);
+  void pixel_filter(const Statement& st);
   void light(const Statement& st);
   // A point-like light under an animated transform: its position at shutter open and close, the
   // transforms interpolated as for shapes; it keeps its orientation at the start time (warning if it turns).
@@ -157,6 +158,8 @@ class SceneBuilder {
   FileLoc camera_loc_;
   float fov_ = 90.f;
   float lens_radius_ = 0.f, focal_distance_ = 1e6f;
+  PixelFilter pixel_filter_;  // PixelFilter; pbrt-v4's default would be a gaussian, but a file without
+                              // one keeps the unit box (the images of older pathspace versions)
   float exposure_time_ = 1.f, iso_ = 100.f;  // the film's imaging ratio (film_sensor)
   int film_width_ = 1280, film_height_ = 720, spp_ = 16, max_depth_ = 5;
   std::string image_name_;
