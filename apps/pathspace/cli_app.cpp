@@ -91,6 +91,9 @@ CliApp::CliApp() : app("pathspace: path space filtering and pixel cache light tr
   info_cmd = add_info_command(app, &info_options);
   compare_cmd = add_compare_command(app, &compare_options);
   study_cmd = add_study_command(app, &study_options);
+#if PATHSPACE_HAVE_VIEWER
+  view_cmd = add_view_command(app, &view_options);
+#endif
 }
 
 void CliApp::parse(int argc, char** argv) {
@@ -107,6 +110,9 @@ int CliApp::run() {
   if (info_cmd->parsed()) return run_info_command(info_options);
   if (compare_cmd->parsed()) return run_compare_command(compare_options);
   if (study_cmd->parsed()) return run_study_command(study_options);
+#if PATHSPACE_HAVE_VIEWER
+  if (view_cmd->parsed()) return run_view_command(view_options, *view_cmd);
+#endif
   return 0;
 }
 
@@ -115,6 +121,9 @@ std::string CliApp::command_name() const {
   if (info_cmd->parsed()) return "pathspace info";
   if (compare_cmd->parsed()) return "pathspace compare";
   if (study_cmd->parsed()) return "pathspace study " + study_options.study;
+#if PATHSPACE_HAVE_VIEWER
+  if (view_cmd->parsed()) return "pathspace view";
+#endif
   return "pathspace";
 }
 
@@ -131,11 +140,14 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return cli.app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const std::string sub = cli.render_cmd->parsed()    ? " render"
-                            : cli.info_cmd->parsed()    ? " info"
-                            : cli.compare_cmd->parsed() ? " compare"
-                            : cli.study_cmd->parsed()   ? " study"
-                                                        : "";
+    std::string sub = cli.render_cmd->parsed()    ? " render"
+                      : cli.info_cmd->parsed()    ? " info"
+                      : cli.compare_cmd->parsed() ? " compare"
+                      : cli.study_cmd->parsed()   ? " study"
+                                                  : "";
+#if PATHSPACE_HAVE_VIEWER
+    if (cli.view_cmd->parsed()) sub = " view";
+#endif
     fmt::print(stderr, "pathspace{}: error: {} (run 'pathspace{} --help' for usage)\n", sub, one_line(e.what()), sub);
     return kExitUsage;
   } catch (const UsageError& e) {

@@ -12,6 +12,9 @@
 #include "info_command.h"
 #include "render_command.h"
 #include "study_command.h"
+#if PATHSPACE_HAVE_VIEWER
+#include "view_command.h"
+#endif
 
 namespace pathspace::cli {
 
@@ -36,6 +39,10 @@ struct CliApp {
   CLI::App* info_cmd = nullptr;
   CLI::App* compare_cmd = nullptr;
   CLI::App* study_cmd = nullptr;
+#if PATHSPACE_HAVE_VIEWER
+  ViewOptions view_options;
+  CLI::App* view_cmd = nullptr;
+#endif
 };
 
 // Parses and runs argv; every error becomes its exit status and one line on stderr.

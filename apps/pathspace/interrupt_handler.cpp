@@ -16,9 +16,13 @@ namespace {
 std::atomic<int> g_signal{0};
 std::atomic<RenderSession*> g_session{nullptr};
 std::atomic<bool> g_speaks{true};  // false on the ranks of a distributed render other than 0
+constexpr const char* kRenderMessage =
+    "\npathspace render: interrupted: finishing the pass in flight, then writing the outputs (again to stop at once)\n";
+std::atomic<const char*> g_first_message{kRenderMessage};
 struct sigaction g_previous_int, g_previous_term;
 
-static_assert(std::atomic<int>::is_always_lock_free && std::atomic<RenderSession*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<RenderSession*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free &&
+                  std::atomic<const char*>::is_always_lock_free,
               "the signal handler may only touch lock-free atomics");
 
 void say(const char* text) {
@@ -32,7 +36,7 @@ extern "C" void on_signal(int sig) {
   int none = 0;
   if (g_signal.compare_exchange_strong(none, sig)) {
     if (RenderSession* s = g_session.load()) s->cancel();
-    say("\npathspace render: interrupted: finishing the pass in flight, then writing the outputs (again to stop at once)\n");
+    say(g_first_message.load());
     return;
   }
   remove_unfinished_temporaries();
@@ -42,8 +46,9 @@ extern "C" void on_signal(int sig) {
 
 }  // namespace
 
-InterruptHandler::InterruptHandler(bool speaks) {
+InterruptHandler::InterruptHandler(bool speaks, const char* first_signal_message) {
   g_speaks.store(speaks);
+  g_first_message.store(first_signal_message ? first_signal_message : kRenderMessage);
   g_signal.store(0);
   g_session.store(nullptr);
   struct sigaction action;

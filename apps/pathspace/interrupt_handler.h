@@ -15,7 +15,8 @@ class InterruptHandler {
  public:
   // Installs the handlers (one InterruptHandler at a time); the destructor restores the previous ones.
   // `speaks`: print what a signal does (rank 0 of a distributed render only: mpirun signals every rank).
-  explicit InterruptHandler(bool speaks = true);
+  // `first_signal_message`: what the first signal prints (a string literal); nullptr: the render's.
+  explicit InterruptHandler(bool speaks = true, const char* first_signal_message = nullptr);
   ~InterruptHandler();
   InterruptHandler(const InterruptHandler&) = delete;
   InterruptHandler& operator=(const InterruptHandler&) = delete;

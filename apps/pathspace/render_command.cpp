@@ -54,8 +54,7 @@ const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGT
 
 }  // namespace
 
-CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
+void add_scene_options(CLI::App* cmd, RenderOptions* o) {
   cmd->add_option("scene", o->scene, "Built-in scene name or id (see 'pathspace info --scenes'), or a .pbrt/.xml/.gltf/.glb/.ply/.obj file")
       ->default_str(kDefaultSceneName);
   cmd->add_option("-i,--integrator", o->integrator,
@@ -65,10 +64,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
       ->check(CLI::IsMember(filter_choices()))
       ->capture_default_str();
   cmd->add_option("-r,--resolution", o->resolution, run_option(RunOption::resolution).help)->type_name("WxH");
-  cmd->add_option("--camera-pos", o->camera_pos, "Scene files: camera position x,y,z");
-  cmd->add_option("--camera-target", o->camera_target, "Scene files, with --camera-pos: point the camera looks at x,y,z (default: the scene centre)");
-  cmd->add_option("--camera-up", o->camera_up, "Scene files, with --camera-pos: camera up vector x,y,z (default 0,1,0)");
-  cmd->add_option("--fov", o->fov, "Scene files: field of view of the shorter image axis in degrees")->check(checked_real("fov", 0.01, 179.0));
+  cmd->add_option("--camera-pos", o->camera_pos, "Camera position x,y,z (any scene)");
+  cmd->add_option("--camera-target", o->camera_target, "With --camera-pos: point the camera looks at x,y,z (default: the scene centre)");
+  cmd->add_option("--camera-up", o->camera_up, "With --camera-pos: camera up vector x,y,z (default 0,1,0)");
+  cmd->add_option("--fov", o->fov, "Field of view of the shorter image axis in degrees (any scene; a placed camera has square pixels)")->check(checked_real("fov", 0.01, 179.0));
   cmd->add_option("--lens-radius", o->lens_radius, "Thin lens radius in scene units for depth of field (0: pinhole; default: the scene's)")
       ->check(checked_real("lens-radius", 0.0, kMaxSceneCoordinate));
   cmd->add_option("--focus-distance", o->focus_distance, "Distance of the plane in focus along the view axis (default: the scene's)")
@@ -104,6 +103,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
                   "How lights are picked: uniform, power, or bvh (light paths by power, next event estimation by the light tree)")
       ->check(CLI::IsMember(light_selection_names()))
       ->capture_default_str();
+}
+
+CLI::App* add_render_command(CLI::App& app, RenderOptions* o) {
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene to EXR/PFM/PNG");
+  add_scene_options(cmd, o);
   // What does not change the image: free to change when a render is resumed (render_resume.h).
   // The run options' help and ranges: session/run_options.h.
   const OptionSpec& spp_spec = run_option(RunOption::spp);

@@ -58,6 +58,10 @@ struct RenderOptions {
 
 // Adds the `render` subcommand to app; the options are stored in *options.
 CLI::App* add_render_command(CLI::App& app, RenderOptions* options);
+// The options that choose what is rendered (scene, integrator, filter, resolution, camera, lens,
+// pixel filter, scene parameters, device, seed, light selection), shared by `render` and `view`;
+// the registry's integrator and filter options are added by options->registry.add_to(cmd).
+void add_scene_options(CLI::App* cmd, RenderOptions* options);
 // Runs the command parsed by `cmd` (the subcommand add_render_command returned). Returns the exit
 // status (0, or 128 + signal when interrupted). Throws UsageError for invalid options,
 // pathspace::Error for failures.

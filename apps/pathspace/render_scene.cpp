@@ -63,10 +63,8 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     load_options.defines.emplace_back(name, d.substr(eq + 1));
   }
   load_options.animation = o.animation;
-  if (!from_file && (load_options.camera_position || load_options.camera_target || load_options.camera_up || load_options.fov_degrees ||
-                     o.substitute_missing_textures || !o.defines.empty() || !o.animation.empty()))
-    throw UsageError(
-        "--camera-pos, --camera-target, --camera-up, --fov, --substitute-missing-textures, -D and --animation apply to scene files only");
+  if (!from_file && (o.substitute_missing_textures || !o.defines.empty() || !o.animation.empty()))
+    throw UsageError("--substitute-missing-textures, -D and --animation apply to scene files only");
   const Resolution res = image_size(o.resolution);
   if (from_file && !o.resolution.empty()) load_options.width = res.width, load_options.height = res.height;
   if (from_file) {
@@ -92,6 +90,8 @@ PreparedScene prepare_scene(const RenderOptions& o) {
     p.id = info->id;
     p.key = std::string("builtin:") + info->name;
     p.scene = make_builtin_scene(info->name, res.width, res.height);
+    // A placed camera (`pathspace view`'s CLI options reproduce any view) has square pixels.
+    apply_camera_options(load_options, false, res.width, res.height, &p.scene);
   }
   apply_scene_options(o, &p.scene);
   // Every scene, built-in or from any file format, with the command line's camera changes applied.

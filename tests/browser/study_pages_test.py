@@ -19,9 +19,7 @@ import sys
 import tempfile
 import time
 
-CHROMIUM = "/usr/bin/chromium"
-CHROMEDRIVER = "/usr/bin/chromedriver"
-SKIP = 77
+from browser_support import make_driver
 
 # Small enough for about a minute on 2 cores; every section of both pages still renders.
 STUDIES = {
@@ -58,38 +56,13 @@ Promise.all(Array.from(urls.keys()).map(u => new Promise(resolve => {
 """
 
 
-def missing(what):
-    message = f"browser test: {what} is missing (scripts/install-deps installs chromium chromium-driver python3-selenium)"
-    if os.environ.get("PATHSPACE_ALLOW_MISSING_BROWSER") == "1":
-        print(message + "; skipped (PATHSPACE_ALLOW_MISSING_BROWSER=1)")
-        sys.exit(SKIP)
-    print(message)
-    sys.exit(1)
-
-
-def make_driver():
-    try:
-        from selenium import webdriver
-        from selenium.webdriver.chrome.service import Service
-    except ImportError:
-        missing("python3-selenium")
-    for path in (CHROMIUM, CHROMEDRIVER):
-        if not os.access(path, os.X_OK):
-            missing(path)
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1000",
-                "--no-first-run", "--disable-extensions", "--disable-background-networking", "--disable-sync",
-                "--disable-component-update", "--disable-default-apps"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+def make_offline_driver():
+    driver = make_driver(window="1400,1000", log_console=True, script_timeout=60)
     # No network: offline, and any request that is not file: or data: is blocked outright.
     driver.execute_cdp_cmd("Network.enable", {})
     driver.execute_cdp_cmd("Network.emulateNetworkConditions",
                            {"offline": True, "latency": 0, "downloadThroughput": 0, "uploadThroughput": 0})
     driver.execute_cdp_cmd("Network.setBlockedURLs", {"urls": ["http://*", "https://*", "ws://*", "wss://*", "ftp://*"]})
-    driver.set_script_timeout(60)
     return driver
 
 
@@ -145,7 +118,7 @@ def main():
     parser.add_argument("--pathspace", required=True, help="the pathspace binary")
     parser.add_argument("--keep", help="write the studies into this folder and keep them")
     args = parser.parse_args()
-    driver = make_driver()
+    driver = make_offline_driver()
     failures = []
     try:
         with tempfile.TemporaryDirectory(prefix="pathspace-browser-") as tmp:

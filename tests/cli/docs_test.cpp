@@ -57,7 +57,7 @@ using pathspace::testing::Run;
 const fs::path kRoot = PATHSPACE_SOURCE_DIR;
 
 // Help texts whose --options the documentation may name.
-const char* const kHelpCommands[] = {"--help", "render --help", "info --help", "compare --help", "study --help",
+const char* const kHelpCommands[] = {"--help", "render --help", "view --help", "info --help", "compare --help", "study --help",
                                      "study pclt --help", "study psf --help"};
 
 // Options of other tools that the documentation shows in commands. Exact names, or prefixes
@@ -93,6 +93,8 @@ const std::set<std::string> kOtherToolsOptions = {
     "--nodes",                   // srun
     "--system-site-packages",    // python3 -m venv (docs/python.md)
     "--no-build-isolation",      // pip install (docs/python.md)
+    "--interactive",             // pbrt-v4 (docs/viewer.md: the viewer's key conventions)
+    "--keep",                    // tests/browser/*.py
 };
 
 // Folders at the repository root: a token starting with one of them is a repository path

@@ -1,0 +1,83 @@
+#include "view_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "pathspace/accel/accel.h"
+#include "pathspace/session/render_session.h"
+#include "interrupt_handler.h"
+#include "number_options.h"
+#include "render_scene.h"
+#include "viewer/live_view.h"
+#include "viewer/viewer_server.h"
+
+namespace pathspace::cli {
+
+namespace {
+
+// 128 random bits as hex: the token a viewer bound beyond the loopback demands.
+std::string random_token() {
+  std::random_device device;
+  std::string token;
+  for (int i = 0; i < 4; ++i) token += fmt::format("{:08x}", device());
+  return token;
+}
+
+}  // namespace
+
+CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
+  CLI::App* cmd = app.add_subcommand("view", "Render progressively and watch it live in a browser (camera from the keyboard)");
+  add_scene_options(cmd, &o->render);
+  cmd->add_option("--port", o->port, "TCP port of the page (default: a free one)")->check(CLI::Range(0, 65535));
+  cmd->add_option("--listen", o->listen,
+                  "Address to bind instead of 127.0.0.1 (e.g. 0.0.0.0); then the page needs the random token in the printed URL");
+  cmd->add_option("--max-spp", o->max_spp, "Passes per view, after which the viewer idles until the camera moves (default: no limit)")
+      ->check(checked_integer("max-spp", 0, 1 << 24));
+  cmd->add_option("-j,--threads", o->render.threads, "Worker threads; 0 = all cores")->check(checked_integer("threads", 0, 4096));
+  o->render.registry.add_to(cmd);
+  return cmd;
+}
+
+int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
+  RenderConfig config = check_render_options(o.render, cmd);
+  PreparedScene prepared = prepare_scene(o.render);
+  auto scene = std::make_shared<Scene>(std::move(prepared.scene));
+  scene->camera_moves = false;  // the page moves the camera
+  auto accel = std::make_shared<const Accel>(*scene);
+  const PerspectiveCamera home = scene->camera;
+  const Bounds3 bounds = scene->geometry_bounds();
+  const float step = bounds.empty() ? 0.1f : 0.02f * length(bounds.hi - bounds.lo);
+
+  RenderSession session(scene, accel, config);
+  auto live = std::make_shared<viewer::LiveView>(home, step, &session);
+  const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
+  viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());
+  fmt::print("pathspace view: {} ({}x{}, {}): open {}\n", prepared.display_name, home.width, home.height, config.integrator, server.url());
+  fmt::print("  from another machine: ssh -L {0}:localhost:{0} HOST, then http://localhost:{0}/ here; Ctrl-C ends\n", server.port());
+  std::fflush(stdout);
+
+  InterruptHandler interrupt(true, "\npathspace view: interrupted: finishing the pass in flight, then stopping\n");
+  interrupt.watch(&session);
+  uint64_t view = 0;
+  while (interrupt.signal() == 0) {
+    if (const std::optional<PerspectiveCamera> camera = live->take_camera()) {
+      auto moved = std::make_shared<Scene>(*scene);
+      moved->camera = *camera;
+      session.begin_frame(moved, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
+    }
+    if (o.max_spp > 0 && session.passes_done() >= o.max_spp) {
+      if (live->wait_for_change(std::chrono::milliseconds(100)))
+        live->publish(session.snapshot(SnapshotImages::mean).mean, session.stats(), view);  // a new exposure
+      continue;
+    }
+    const RunResult r = session.run(RunLimit::for_passes(1));
+    if (r.passes > 0) live->publish(session.snapshot(SnapshotImages::mean).mean, session.stats(), view);
+  }
+  return interrupt.exit_code();
+}
+
+}  // namespace pathspace::cli

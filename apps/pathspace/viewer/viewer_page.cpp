@@ -1,0 +1,95 @@
+#include "viewer/viewer_page.h"
+
+namespace pathspace::viewer {
+
+// The page asks for one frame at a time ({"cmd":"frame"}), so a slow client receives fewer frames
+// and never holds the renderer back; camera keys follow pbrt-v4's --interactive (docs/viewer.md).
+const char* const kViewerPage = R"PAGE(<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>pathspace view</title>
+<style>
+body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
+#bar { padding: 6px 10px; display: flex; gap: 14px; align-items: center; flex-wrap: wrap; }
+#frame { display: block; margin: 0 10px; image-rendering: pixelated; outline: none; }
+#error { color: #f28b82; }
+#cli { width: 40em; }
+</style></head>
+<body>
+<div id="bar">
+  <span id="status">connecting</span>
+  <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
+  <span>speed <span id="speed">1</span>x (+/-)</span>
+  <button id="copy">CLI options</button>
+  <input id="cli" readonly>
+  <span id="error"></span>
+</div>
+<img id="frame" tabindex="0" alt="render">
+<p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view.</p>
+<script>
+"use strict";
+const params = new URLSearchParams(location.search);
+const token = params.get("token");
+const ws = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + "/ws" + (token ? "?token=" + encodeURIComponent(token) : ""));
+ws.binaryType = "blob";
+const img = document.getElementById("frame"), status = document.getElementById("status"), error = document.getElementById("error");
+let speed = 1, frames = 0, lastUrl = null, stats = null;
+const send = o => { if (ws.readyState === WebSocket.OPEN) ws.send(JSON.stringify(o)); };
+ws.onopen = () => { status.textContent = "connected"; send({cmd: "frame"}); };
+ws.onclose = () => { status.textContent = "disconnected"; };
+ws.onmessage = e => {
+  if (typeof e.data === "string") {
+    const m = JSON.parse(e.data);
+    if (m.error) error.textContent = m.error;
+    if (m.stats) {
+      stats = m.stats;
+      status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
+      document.getElementById("cli").value = stats.camera_options;
+    }
+    return;
+  }
+  const url = URL.createObjectURL(e.data);
+  img.onload = () => {
+    if (lastUrl) URL.revokeObjectURL(lastUrl);
+    lastUrl = url;
+    // Small renders are shown enlarged by a whole factor (sharp pixels), up to 512 wide.
+    img.style.width = img.naturalWidth * Math.max(1, Math.floor(512 / img.naturalWidth)) + "px";
+  };
+  img.src = url;
+  img.dataset.frames = String(++frames);
+  send({cmd: "frame"});
+};
+const keys = {w: [0, 0, 1], s: [0, 0, -1], a: [-1, 0, 0], d: [1, 0, 0], q: [0, -1, 0], e: [0, 1, 0]};
+document.addEventListener("keydown", ev => {
+  const k = ev.key.toLowerCase();
+  if (keys[k]) { const [r, u, f] = keys[k]; send({cmd: "move", right: r * speed, up: u * speed, forward: f * speed}); }
+  else if (ev.key === "ArrowLeft") send({cmd: "turn", yaw: 5});
+  else if (ev.key === "ArrowRight") send({cmd: "turn", yaw: -5});
+  else if (ev.key === "ArrowUp") send({cmd: "turn", pitch: 5});
+  else if (ev.key === "ArrowDown") send({cmd: "turn", pitch: -5});
+  else if (k === "r") send({cmd: "reset"});
+  else if (ev.key === "+" || ev.key === "=") speed *= 2;
+  else if (ev.key === "-") speed /= 2;
+  else return;
+  document.getElementById("speed").textContent = String(speed);
+  ev.preventDefault();
+});
+let drag = null;
+img.addEventListener("mousedown", ev => { drag = [ev.clientX, ev.clientY]; ev.preventDefault(); });
+document.addEventListener("mouseup", () => { drag = null; });
+document.addEventListener("mousemove", ev => {
+  if (!drag) return;
+  const dx = ev.clientX - drag[0], dy = ev.clientY - drag[1];
+  if (Math.abs(dx) + Math.abs(dy) < 4) return;
+  drag = [ev.clientX, ev.clientY];
+  send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
+});
+document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));
+document.getElementById("copy").addEventListener("click", () => {
+  const cli = document.getElementById("cli");
+  cli.select();
+  if (navigator.clipboard) navigator.clipboard.writeText(cli.value).catch(() => {});
+});
+</script>
+</body></html>
+)PAGE";
+
+}  // namespace pathspace::viewer

@@ -1,0 +1,63 @@
+#include "viewer/viewer_protocol.h"
+
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "pathspace/base/error.h"
+
+namespace pathspace::viewer {
+
+namespace {
+
+using json = nlohmann::json;
+
+// A finite number within [-limit, limit] under `key` (0 when absent).
+double number(const json& j, const char* key, double limit) {
+  if (!j.contains(key)) return 0.0;
+  const json& v = j.at(key);
+  if (!v.is_number()) throw Error(fmt::format("\"{}\" must be a number", key));
+  const double x = v.get<double>();
+  if (!std::isfinite(x) || std::fabs(x) > limit) throw Error(fmt::format("\"{}\" must be a finite number within +-{}", key, limit));
+  return x;
+}
+
+void only_fields(const json& j, const std::set<std::string>& allowed) {
+  for (const auto& item : j.items())
+    if (!allowed.count(item.key())) throw Error(fmt::format("unknown field \"{}\"", item.key()));
+}
+
+}  // namespace
+
+Command parse_command(const std::string& message) {
+  if (message.size() > kMaxMessageBytes) throw Error(fmt::format("message of {} bytes (at most {})", message.size(), kMaxMessageBytes));
+  const json j = json::parse(message, nullptr, false, true);
+  if (j.is_discarded() || !j.is_object()) throw Error("a message is one JSON object");
+  if (!j.contains("cmd") || !j.at("cmd").is_string()) throw Error("a message needs \"cmd\": a string");
+  const std::string cmd = j.at("cmd").get<std::string>();
+  if (cmd == "frame") {
+    only_fields(j, {"cmd"});
+    return FrameRequest{};
+  }
+  if (cmd == "move") {
+    only_fields(j, {"cmd", "right", "up", "forward"});
+    return Move{number(j, "right", 1e3), number(j, "up", 1e3), number(j, "forward", 1e3)};
+  }
+  if (cmd == "turn") {
+    only_fields(j, {"cmd", "yaw", "pitch"});
+    return Turn{number(j, "yaw", 360.0), number(j, "pitch", 360.0)};
+  }
+  if (cmd == "reset") {
+    only_fields(j, {"cmd"});
+    return Reset{};
+  }
+  if (cmd == "exposure") {
+    only_fields(j, {"cmd", "stops"});
+    return Exposure{number(j, "stops", 20.0)};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure)", cmd.substr(0, 40)));
+}
+
+}  // namespace pathspace::viewer

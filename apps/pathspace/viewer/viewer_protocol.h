@@ -1,0 +1,36 @@
+// The messages a `pathspace view` page sends over its WebSocket (docs/viewer.md): one JSON object
+// per text message, parsed and checked here before anything acts on it, so that a malformed,
+// oversized or unknown message is an error to that client and nothing else.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <variant>
+
+namespace pathspace::viewer {
+
+inline constexpr size_t kMaxMessageBytes = 4096;
+
+// The next frame, once one newer than the last sent exists.
+struct FrameRequest {};
+// Camera motion in its own frame: right, up and forward steps (units of the move speed).
+struct Move {
+  double right = 0, up = 0, forward = 0;
+};
+// Camera rotation in degrees: yaw about the camera's up, pitch about its right axis.
+struct Turn {
+  double yaw = 0, pitch = 0;
+};
+// Back to the scene's camera.
+struct Reset {};
+// Display exposure in stops (the render is unchanged).
+struct Exposure {
+  double stops = 0;
+};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure>;
+
+// The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
+// "cmd", a missing or non-finite or out-of-range number, an unknown field).
+Command parse_command(const std::string& message);
+
+}  // namespace pathspace::viewer

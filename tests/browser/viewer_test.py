@@ -1,0 +1,167 @@
+#!/usr/bin/python3
+"""Browser test of `pathspace view` (ctest label `browser`, docs/testing.md, docs/viewer.md).
+
+Starts the viewer on a tiny built-in scene, opens its page in headless Debian chromium through
+selenium and checks what a user would see and do: the image appears and changes as passes
+accumulate; a key press moves the camera (a new view) and changes the image; malformed, unknown and
+out-of-range commands from a second WebSocket get an error each while both clients keep receiving
+frames; the server stays healthy after the page closes; bound with --listen, it refuses requests
+without its token. A screenshot of each stage is kept in --keep DIR (or a temporary folder).
+
+Usage: viewer_test.py --pathspace BUILD/apps/pathspace/pathspace [--keep DIR]
+Exit 0 on success, 1 on a failed check, 77 (ctest: skipped) when chromium, chromedriver or selenium
+is missing and PATHSPACE_ALLOW_MISSING_BROWSER=1, else 1 with the missing thing named.
+"""
+import argparse
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.error
+import urllib.request
+
+from browser_support import make_driver
+FAILURES = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        FAILURES.append(what)
+    return condition
+
+
+def start_viewer(pathspace, extra):
+    """The viewer process and the URL it printed."""
+    proc = subprocess.Popen([pathspace, "view", "cornell-box", "-r", "64x48", "-j", "1"] + extra, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    line = proc.stdout.readline()
+    match = re.search(r"open (http://\S+)", line)
+    if not match:
+        proc.kill()
+        print("the viewer printed no URL: " + line + proc.stdout.read())
+        sys.exit(1)
+    return proc, match.group(1)
+
+
+def http_status(url):
+    try:
+        with urllib.request.urlopen(url, timeout=10) as r:
+            return r.status
+    except urllib.error.HTTPError as e:
+        return e.code
+
+
+def wait_for(driver, script, timeout=30.0):
+    """Polls a JavaScript expression until it is truthy; its last value."""
+    end = time.monotonic() + timeout
+    value = None
+    while time.monotonic() < end:
+        value = driver.execute_script("return " + script)
+        if value:
+            return value
+        time.sleep(0.1)
+    return value
+
+
+# The PNG on screen as a data URL, to tell frames apart.
+PIXELS = """
+const img = document.getElementById('frame');
+const c = document.createElement('canvas');
+c.width = img.naturalWidth; c.height = img.naturalHeight;
+c.getContext('2d').drawImage(img, 0, 0);
+return c.toDataURL();
+"""
+
+# A second client: each message in arguments[1] is sent and answered in order; a frame request is
+# answered by a text (statistics) and a binary message (the PNG).
+SECOND_CLIENT = """
+const done = arguments[arguments.length - 1];
+const messages = arguments[0];
+const ws = new WebSocket('ws://' + location.host + '/ws' + location.search);
+ws.binaryType = 'arraybuffer';
+const answers = [];
+ws.onopen = () => { for (const m of messages) ws.send(m); };
+ws.onmessage = e => {
+  answers.push(typeof e.data === 'string' ? e.data : 'binary ' + e.data.byteLength);
+  if (answers.length === messages.length + 1) { ws.close(); done(answers); }
+};
+ws.onerror = () => done(answers.concat(['socket error']));
+setTimeout(() => done(answers.concat(['timeout'])), 20000);
+"""
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--pathspace", required=True)
+    parser.add_argument("--keep", help="keep the screenshots in this folder")
+    args = parser.parse_args()
+    shots = args.keep or tempfile.mkdtemp(prefix="pathspace-viewer-")
+    os.makedirs(shots, exist_ok=True)
+    driver = make_driver(window="800,600", script_timeout=30)
+    viewer, url = start_viewer(args.pathspace, [])
+    try:
+        driver.get(url)
+        check(wait_for(driver, "Number(document.getElementById('frame').dataset.frames || 0) >= 3"), "the page shows frames")
+        check(driver.execute_script("return document.getElementById('frame').naturalWidth") == 64, "the frame is 64 pixels wide")
+        first = driver.execute_script(PIXELS)
+        time.sleep(0.5)
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('spp')"), "the statistics show")
+        later = driver.execute_script(PIXELS)
+        check(first != later, "the image changes as passes accumulate")
+        driver.save_screenshot(os.path.join(shots, "viewer-accumulating.png"))
+
+        from selenium.webdriver.common.action_chains import ActionChains
+        ActionChains(driver).send_keys("w").perform()
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('view 1,')"), "a key press starts a new view")
+        time.sleep(0.5)
+        moved = driver.execute_script(PIXELS)
+        check(moved != later, "the moved camera changes the image")
+        cli = driver.execute_script("return document.getElementById('cli').value")
+        check("--camera-pos" in cli and "--fov" in cli, "the page offers the view's CLI options: " + cli)
+        driver.save_screenshot(os.path.join(shots, "viewer-moved.png"))
+
+        bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
+               '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']
+        answers = driver.execute_async_script(SECOND_CLIENT, bad)
+        print("second client:", answers)
+        check(len(answers) == 7, "the second client is answered every message")
+        errors = [a for a in answers[:5] if '"error"' in a]
+        check(len(errors) == 5, "each bad command gets an error")
+        check(any("must be a number" in a for a in errors) and any("unknown command" in a for a in errors)
+              and any("within" in a for a in errors) and any("unknown field" in a for a in errors), "the errors say what is wrong")
+        check(len(answers) == 7 and '"stats"' in answers[5] and answers[6].startswith("binary "),
+              "two clients at once: the second receives a frame too")
+        frames = driver.execute_script("return Number(document.getElementById('frame').dataset.frames)")
+        check(wait_for(driver, f"Number(document.getElementById('frame').dataset.frames) > {frames}"),
+              "the page keeps receiving frames after the bad commands")
+        driver.save_screenshot(os.path.join(shots, "viewer-after-errors.png"))
+        driver.get("about:blank")
+        check(http_status(url) == 200, "the server is healthy after the page closed")
+    finally:
+        driver.quit()
+        viewer.send_signal(signal.SIGTERM)
+        code = viewer.wait(timeout=30)
+    check(code == 128 + signal.SIGTERM, f"SIGTERM ends the viewer with 143 (got {code})")
+
+    guarded, guarded_url = start_viewer(args.pathspace, ["--listen", "127.0.0.1"])
+    try:
+        check("token=" in guarded_url, "--listen prints a URL with a token")
+        plain = re.sub(r"\?token=.*", "", guarded_url)
+        check(http_status(plain) == 403, "without the token the page is refused")
+        check(http_status(guarded_url) == 200, "with the token the page is served")
+    finally:
+        guarded.send_signal(signal.SIGTERM)
+        guarded.wait(timeout=30)
+    print(f"screenshots in {shots}")
+    if FAILURES:
+        print(f"{len(FAILURES)} check(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,76 @@
+// `pathspace view`'s message decoder and camera motion (apps/pathspace/viewer/, docs/viewer.md): each
+// command parsed with its numbers, every kind of bad message refused with its reason, and the camera
+// axes unit and orthogonal after turns, with motion along them. The page itself: tests/browser.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "pathspace/base/error.h"
+#include "viewer/camera_controls.h"
+#include "viewer/viewer_protocol.h"
+
+namespace pathspace::viewer {
+namespace {
+
+std::string error_of(const std::string& message) {
+  try {
+    parse_command(message);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ViewerProtocol, ParsesEveryCommand) {
+  EXPECT_TRUE(std::holds_alternative<FrameRequest>(parse_command(R"({"cmd":"frame"})")));
+  const Move m = std::get<Move>(parse_command(R"({"cmd":"move","right":1.5,"forward":-2})"));
+  EXPECT_EQ(m.right, 1.5);
+  EXPECT_EQ(m.up, 0.0);
+  EXPECT_EQ(m.forward, -2.0);
+  const Turn t = std::get<Turn>(parse_command(R"({"cmd":"turn","yaw":-5,"pitch":2.5})"));
+  EXPECT_EQ(t.yaw, -5.0);
+  EXPECT_EQ(t.pitch, 2.5);
+  EXPECT_TRUE(std::holds_alternative<Reset>(parse_command(R"({"cmd":"reset"})")));
+  EXPECT_EQ(std::get<Exposure>(parse_command(R"({"cmd":"exposure","stops":-3})")).stops, -3.0);
+}
+
+TEST(ViewerProtocol, RefusesBadMessagesWithTheirReason) {
+  EXPECT_NE(error_of("").find("one JSON object"), std::string::npos);
+  EXPECT_NE(error_of("[1,2]").find("one JSON object"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"frame")").find("one JSON object"), std::string::npos);
+  EXPECT_NE(error_of(R"({"move":1})").find("needs \"cmd\""), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":7})").find("needs \"cmd\""), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"fly"})").find("unknown command \"fly\""), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"move","forward":"1"})").find("must be a number"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"move","forward":1e400})").find("one JSON object"), std::string::npos);  // not JSON's range
+  EXPECT_NE(error_of(R"({"cmd":"move","forward":2000})").find("within"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"turn","yaw":361})").find("within"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"exposure","stops":21})").find("within"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"frame","extra":1})").find("unknown field \"extra\""), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"--camera-pos"})").find("unknown command"), std::string::npos);
+  EXPECT_NE(error_of(std::string(kMaxMessageBytes + 1, ' ')).find("at most 4096"), std::string::npos);
+  // Deeply nested JSON is refused without recursion trouble (size limit first, then the parser).
+  EXPECT_FALSE(error_of(std::string(2000, '[') + std::string(2000, ']')).empty());
+}
+
+TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {
+  PerspectiveCamera c = make_perspective_camera(Vec3(0, 1, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 45.f, 64, 48);
+  turn_camera(&c, 90.0, 0.0);  // a quarter turn left about up: now looking along -x
+  EXPECT_NEAR(c.forward.x, -1.f, 1e-5f);
+  EXPECT_NEAR(c.forward.z, 0.f, 1e-5f);
+  for (int i = 0; i < 100; ++i) turn_camera(&c, 7.0, 3.0);
+  EXPECT_NEAR(length(c.forward), 1.f, 1e-4f);
+  EXPECT_NEAR(length(c.right), 1.f, 1e-4f);
+  EXPECT_NEAR(length(c.up), 1.f, 1e-4f);
+  EXPECT_NEAR(dot(c.forward, c.right), 0.f, 1e-4f);
+  EXPECT_NEAR(dot(c.forward, c.up), 0.f, 1e-4f);
+  const Vec3 before = c.position;
+  move_camera(&c, 0.0, 0.0, 2.0, 0.5f);
+  EXPECT_NEAR(length(c.position - (before + c.forward)), 0.f, 1e-5f);
+  const std::string options = camera_options(make_perspective_camera(Vec3(0, 1, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 45.f, 48, 48));
+  EXPECT_EQ(options, "--camera-pos 0,1,5 --camera-target 0,1,4 --camera-up 0,1,0 --fov 45");
+}
+
+}  // namespace
+}  // namespace pathspace::viewer
