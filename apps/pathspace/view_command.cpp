@@ -43,17 +43,20 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
 }
 
 int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
-  RenderConfig config = check_render_options(o.render, cmd);
+  const RenderConfig config = check_render_options(o.render, cmd);
   PreparedScene prepared = prepare_scene(o.render);
-  auto scene = std::make_shared<Scene>(std::move(prepared.scene));
-  scene->camera_moves = false;  // the page moves the camera
-  auto accel = std::make_shared<const Accel>(*scene);
-  const PerspectiveCamera home = scene->camera;
-  const Bounds3 bounds = scene->geometry_bounds();
+  auto first = std::make_shared<Scene>(std::move(prepared.scene));
+  first->camera_moves = false;  // the page moves the camera
+  auto accel = std::make_shared<const Accel>(*first);
+  std::shared_ptr<const Scene> scene = first;  // the current view's: the first one with the page's camera
+  const PerspectiveCamera home = first->camera;
+  const Bounds3 bounds = first->geometry_bounds();
   const float step = bounds.empty() ? 0.1f : 0.02f * length(bounds.hi - bounds.lo);
 
-  RenderSession session(scene, accel, config);
-  auto live = std::make_shared<viewer::LiveView>(home, step, &session);
+  auto session = std::make_unique<RenderSession>(scene, accel, config);
+  auto live = std::make_shared<viewer::LiveView>(
+      home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device});
+  live->set_session(session.get());
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());
   fmt::print("pathspace view: {} ({}x{}, {}): open {}\n", prepared.display_name, home.width, home.height, config.integrator, server.url());
@@ -61,21 +64,32 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   std::fflush(stdout);
 
   InterruptHandler interrupt(true, "\npathspace view: interrupted: finishing the pass in flight, then stopping\n");
-  interrupt.watch(&session);
+  interrupt.watch(session.get());
   uint64_t view = 0;
   while (interrupt.signal() == 0) {
-    if (const std::optional<PerspectiveCamera> camera = live->take_camera()) {
-      auto moved = std::make_shared<Scene>(*scene);
+    const std::optional<PerspectiveCamera> camera = live->take_camera();
+    if (camera) {
+      auto moved = std::make_shared<Scene>(*first);
       moved->camera = *camera;
-      session.begin_frame(moved, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
+      scene = moved;
     }
-    if (o.max_spp > 0 && session.passes_done() >= o.max_spp) {
+    if (std::optional<RenderConfig> changed = live->take_config()) {
+      // New options: a new session on the same scene and acceleration structure.
+      auto next = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
+      live->set_session(next.get());
+      interrupt.watch(next.get());
+      session = std::move(next);
+      ++view;
+    } else if (camera) {
+      session->begin_frame(scene, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
+    }
+    if (o.max_spp > 0 && session->passes_done() >= o.max_spp) {
       if (live->wait_for_change(std::chrono::milliseconds(100)))
-        live->publish(session.snapshot(SnapshotImages::mean).mean, session.stats(), view);  // a new exposure
+        live->publish(session->snapshot(SnapshotImages::mean).mean, session->stats(), view);  // a new exposure
       continue;
     }
-    const RunResult r = session.run(RunLimit::for_passes(1));
-    if (r.passes > 0) live->publish(session.snapshot(SnapshotImages::mean).mean, session.stats(), view);
+    const RunResult r = session->run(RunLimit::for_passes(1));
+    if (r.passes > 0) live->publish(session->snapshot(SnapshotImages::mean).mean, session->stats(), view);
   }
   return interrupt.exit_code();
 }

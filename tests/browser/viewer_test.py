@@ -124,6 +124,24 @@ def main():
         check("--camera-pos" in cli and "--fov" in cli, "the page offers the view's CLI options: " + cli)
         driver.save_screenshot(os.path.join(shots, "viewer-moved.png"))
 
+        check(wait_for(driver, "document.getElementById('opt-max-depth') !== null"), "the page lists the integrator's options")
+        depth = driver.find_element("id", "opt-max-depth")
+        depth.send_keys("abc\n")
+        check(wait_for(driver, "document.getElementById('error').textContent.includes('max-depth')"),
+              "a bad option value shows the CLI's error: " + driver.execute_script("return document.getElementById('error').textContent"))
+        frames = driver.execute_script("return Number(document.getElementById('frame').dataset.frames)")
+        check(wait_for(driver, f"Number(document.getElementById('frame').dataset.frames) > {frames + 2}"),
+              "the render goes on after the bad value")
+        from selenium.webdriver.support.ui import Select
+        Select(driver.find_element("id", "opt-filter")).select_by_value("hashed")
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('pt + hashed')"),
+              "choosing the hashed filter takes effect")
+        check(wait_for(driver, "document.getElementById('details').textContent.includes('hashed.')"),
+              "the statistics show the filter's counters")
+        check(wait_for(driver, "document.getElementById('opt-psf-voxel-size') !== null || "
+                               "document.querySelectorAll('#options tr').length > 10"), "the filter's options are listed")
+        driver.save_screenshot(os.path.join(shots, "viewer-options.png"))
+
         bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
                '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']
         answers = driver.execute_async_script(SECOND_CLIENT, bad)

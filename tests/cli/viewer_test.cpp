@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "pathspace/base/error.h"
@@ -33,6 +36,23 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_EQ(t.pitch, 2.5);
   EXPECT_TRUE(std::holds_alternative<Reset>(parse_command(R"({"cmd":"reset"})")));
   EXPECT_EQ(std::get<Exposure>(parse_command(R"({"cmd":"exposure","stops":-3})")).stops, -3.0);
+  EXPECT_TRUE(std::holds_alternative<OptionsRequest>(parse_command(R"({"cmd":"options"})")));
+  const SetOption set = std::get<SetOption>(parse_command(R"({"cmd":"set","name":"max-depth","value":"5"})"));
+  EXPECT_EQ(set.name, "max-depth");
+  EXPECT_EQ(set.value, "5");
+  EXPECT_EQ(std::get<SetOption>(parse_command(R"({"cmd":"set","name":"no-nee"})")).value, "");  // a flag
+  EXPECT_EQ(std::get<UnsetOption>(parse_command(R"({"cmd":"unset","name":"no-nee"})")).name, "no-nee");
+}
+
+// Option names reach the registry's lookup only as names: no dashes, spaces or other characters.
+TEST(ViewerProtocol, RefusesOptionNamesThatAreNotNames) {
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"--max-depth","value":"5"})").find("option name without dashes"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"max-depth 5 --seed","value":"5"})").find("option name"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"","value":"5"})").find("option name"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"Max","value":"5"})").find("option name"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"max-depth","value":5})").find("\"value\" must be a string"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","value":"5"})").find("\"name\" must be a string"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"set","name":"a","value":")" + std::string(300, 'x') + R"("})").find("longer than 256"), std::string::npos);
 }
 
 TEST(ViewerProtocol, RefusesBadMessagesWithTheirReason) {
@@ -52,6 +72,26 @@ TEST(ViewerProtocol, RefusesBadMessagesWithTheirReason) {
   EXPECT_NE(error_of(std::string(kMaxMessageBytes + 1, ' ')).find("at most 4096"), std::string::npos);
   // Deeply nested JSON is refused without recursion trouble (size limit first, then the parser).
   EXPECT_FALSE(error_of(std::string(2000, '[') + std::string(2000, ']')).empty());
+}
+
+// The fuzz target's seed corpus and findings (tests/fuzz/corpus/viewer/, fuzz_viewer.cpp): each file
+// parses or is refused with pathspace::Error, nothing else.
+TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
+  namespace fs = std::filesystem;
+  int files = 0, parsed = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(PATHSPACE_SOURCE_DIR) / "tests/fuzz/corpus/viewer")) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    ++files;
+    try {
+      parse_command(bytes.str());
+      ++parsed;
+    } catch (const Error&) {
+    }
+  }
+  EXPECT_GE(files, 10);
+  EXPECT_GE(parsed, 9) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

@@ -4,13 +4,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/device_registry.h"
+#include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/io/image_io.h"
+#include "pathspace/session/option_catalog.h"
+#include "pathspace/session/render_stats_json.h"
 #include "viewer/camera_controls.h"
 
 namespace pathspace::viewer {
 
-LiveView::LiveView(const PerspectiveCamera& home, float step, RenderSession* session)
-    : home_(home), step_(step), session_(session), camera_(home) {}
+LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice)
+    : home_(home), step_(step), camera_(home), choice_(std::move(choice)) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -18,26 +23,94 @@ std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseco
   return frame_;
 }
 
-void LiveView::apply(const Command& command) {
+std::string LiveView::options_json() const {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const CatalogOption& o : options_of(choice_.integrator, choice_.filter)) {
+    nlohmann::ordered_json j = option_spec_json(o.spec);
+    const std::string* value = choice_.given.find(o.spec.name);
+    j["value"] = value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+    list.push_back(std::move(j));
+  }
+  std::vector<std::string> filters = {FilterChoice::kNone};
+  for (const std::string& f : filter_registry().names()) filters.push_back(f);
+  return nlohmann::ordered_json{{"options",
+                                 {{"integrator", choice_.integrator},
+                                  {"filter", choice_.filter},
+                                  {"integrators", integrator_registry().names()},
+                                  {"filters", filters},
+                                  {"list", list}}}}
+      .dump();
+}
+
+// configure_render is the command line's own check: the page gets the CLI's message for a bad value.
+std::string LiveView::set_choice(RenderChoice next) {
+  RenderConfig config;
+  try {
+    config = configure_render(next.integrator, next.filter, next.given);
+    config.seed = next.seed;
+    config.threads = next.threads;
+    config.device = next.device;
+    check_device(config.device, config.integrator, config.filter.name);
+  } catch (const OptionError& e) {
+    throw Error(e.what());
+  }
+  choice_ = std::move(next);
+  config_changed_ = std::move(config);
+  return options_json();
+}
+
+std::optional<std::string> LiveView::apply(const Command& command) {
+  std::optional<std::string> reply;
+  bool restart = false;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (const auto* m = std::get_if<Move>(&command)) {
       move_camera(&camera_, m->right, m->up, m->forward, step_);
-      camera_changed_ = true;
+      camera_changed_ = restart = true;
     } else if (const auto* t = std::get_if<Turn>(&command)) {
       turn_camera(&camera_, t->yaw, t->pitch);
-      camera_changed_ = true;
+      camera_changed_ = restart = true;
     } else if (std::holds_alternative<Reset>(command)) {
       camera_ = home_;
-      camera_changed_ = true;
+      camera_changed_ = restart = true;
     } else if (const auto* e = std::get_if<Exposure>(&command)) {
       exposure_stops_ = e->stops;
       exposure_changed_ = true;
+    } else if (std::holds_alternative<OptionsRequest>(command)) {
+      reply = options_json();
+    } else if (const auto* s = std::get_if<SetOption>(&command)) {
+      RenderChoice next = choice_;
+      if (s->name == "integrator") {
+        next.integrator = s->value;
+      } else if (s->name == "filter") {
+        next.filter = s->value;
+      } else {
+        OptionValues given;
+        for (const auto& [name, value] : choice_.given.items())
+          if (name != s->name) given.set(name, value);
+        given.set(s->name, s->value);
+        next.given = std::move(given);
+      }
+      reply = set_choice(std::move(next));
+      restart = true;
+    } else if (const auto* u = std::get_if<UnsetOption>(&command)) {
+      RenderChoice next = choice_;
+      OptionValues given;
+      for (const auto& [name, value] : choice_.given.items())
+        if (name != u->name) given.set(name, value);
+      next.given = std::move(given);
+      reply = set_choice(std::move(next));
+      restart = true;
     }
+    if (restart && session_) session_->cancel();  // the pass in flight shows the old view: end it now
   }
   changed_.notify_all();
-  if (std::holds_alternative<Move>(command) || std::holds_alternative<Turn>(command) || std::holds_alternative<Reset>(command))
-    session_->cancel();  // the pass in flight shows the old view: end it now
+  return reply;
+}
+
+void LiveView::set_session(RenderSession* session) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  session_ = session;
 }
 
 std::optional<PerspectiveCamera> LiveView::take_camera() {
@@ -46,6 +119,14 @@ std::optional<PerspectiveCamera> LiveView::take_camera() {
   camera_changed_ = false;
   view_start_ = std::chrono::steady_clock::now();
   return camera_;
+}
+
+std::optional<RenderConfig> LiveView::take_config() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<RenderConfig> config = std::move(config_changed_);
+  config_changed_.reset();
+  if (config) view_start_ = std::chrono::steady_clock::now();
+  return config;
 }
 
 void LiveView::publish(const Image& mean, const RenderStats& stats, uint64_t view) {
@@ -65,13 +146,17 @@ void LiveView::publish(const Image& mean, const RenderStats& stats, uint64_t vie
     for (Rgb& p : shown.pixels) p = p * scale;
   auto png = std::make_shared<const std::string>(encode_image("frame.png", shown, ImageEncoding::fast));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::json j = {{"stats",
-                             {{"width", mean.width},
-                              {"height", mean.height},
-                              {"spp", stats.spp},
-                              {"view", view},
-                              {"passes_per_second", seconds > 0.0 ? double(stats.spp) / seconds : 0.0},
-                              {"camera_options", camera_options(camera)}}}};
+  const nlohmann::ordered_json j = {{"stats",
+                                     {{"width", mean.width},
+                                      {"height", mean.height},
+                                      {"integrator", stats.integrator},
+                                      {"filter", stats.filter},
+                                      {"spp", stats.spp},
+                                      {"view", view},
+                                      {"passes_per_second", seconds > 0.0 ? double(stats.spp) / seconds : 0.0},
+                                      {"rays", stats.rays},
+                                      {"details", statistics_json(stats.details)},
+                                      {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);
     frame_.sequence += 1;
@@ -83,7 +168,7 @@ void LiveView::publish(const Image& mean, const RenderStats& stats, uint64_t vie
 
 bool LiveView::wait_for_change(std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait_for(lock, wait, [&] { return camera_changed_ || exposure_changed_; });
+  changed_.wait_for(lock, wait, [&] { return camera_changed_ || config_changed_ || exposure_changed_; });
   return exposure_changed_;
 }
 

@@ -1,5 +1,6 @@
 // The state `pathspace view` shares between its render loop and its server (viewer_server.h): the
-// camera the page asks for, the display exposure, and the newest encoded frame.
+// camera and the integrator, filter and options the page asks for, the display exposure, and the
+// newest encoded frame.
 #pragma once
 
 #include <condition_variable>
@@ -7,36 +8,58 @@
 #include <optional>
 
 #include "pathspace/film/image.h"
+#include "pathspace/options/option_values.h"
+#include "pathspace/session/render_config.h"
 #include "pathspace/session/render_session.h"
 #include "viewer/viewer_server.h"
 
 namespace pathspace::viewer {
 
+// What chooses the render besides the scene: the integrator, the filter and the options given by
+// name (as on the command line), with the seed, threads and device they run with.
+struct RenderChoice {
+  std::string integrator, filter;
+  OptionValues given;
+  uint64_t seed = 0;
+  int threads = 0;
+  std::string device;
+};
+
 class LiveView final : public ViewerBackend {
  public:
-  // `home`: the scene's camera (Reset); `step`: scene units of one move step; `session`: cancelled
-  // when the camera changes, so that the pass in flight ends and the loop restarts the view.
-  LiveView(const PerspectiveCamera& home, float step, RenderSession* session);
+  // `home`: the scene's camera (Reset); `step`: scene units of one move step; `choice`: what the
+  // session was configured from.
+  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice);
 
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
-  void apply(const Command& command) override;
+  std::optional<std::string> apply(const Command& command) override;
 
-  // For the render loop: the camera to render when it changed since the last call.
+  // For the render loop: the session now running (cancelled when the camera or the options change,
+  // so that the pass in flight ends and the loop restarts the view).
+  void set_session(RenderSession* session);
+  // The camera to render when it changed since the last call.
   std::optional<PerspectiveCamera> take_camera();
+  // The configuration to render with when the options changed since the last call.
+  std::optional<RenderConfig> take_config();
   // Encodes the film's mean (display exposure applied) as the next frame.
   void publish(const Image& mean, const RenderStats& stats, uint64_t view);
-  // Waits until the camera or the exposure changes, or `wait` passes (an idle loop); true when the
-  // exposure changed (the frame is to be shown again).
+  // Waits until the camera, the options or the exposure change, or `wait` passes (an idle loop);
+  // true when the exposure changed (the frame is to be shown again).
   bool wait_for_change(std::chrono::milliseconds wait);
 
  private:
+  std::string options_json() const;       // under mutex_
+  std::string set_choice(RenderChoice next);  // under mutex_: configures it or throws
+
   const PerspectiveCamera home_;
   const float step_;
-  RenderSession* session_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::condition_variable frame_ready_, changed_;
+  RenderSession* session_ = nullptr;
   PerspectiveCamera camera_;
   bool camera_changed_ = false;
+  RenderChoice choice_;
+  std::optional<RenderConfig> config_changed_;
   double exposure_stops_ = 0.0;
   bool exposure_changed_ = false;
   Frame frame_;

@@ -12,6 +12,11 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 #frame { display: block; margin: 0 10px; image-rendering: pixelated; outline: none; }
 #error { color: #f28b82; }
 #cli { width: 40em; }
+#main { display: flex; gap: 16px; align-items: flex-start; }
+#options { font-size: 12px; max-height: 90vh; overflow-y: auto; }
+#options td { padding: 1px 4px; }
+#options input[type=text] { width: 7em; }
+#details { font: 11px monospace; white-space: pre; color: #bdc1c6; }
 </style></head>
 <body>
 <div id="bar">
@@ -22,8 +27,12 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
   <input id="cli" readonly>
   <span id="error"></span>
 </div>
-<img id="frame" tabindex="0" alt="render">
-<p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view.</p>
+<div id="main">
+  <div><img id="frame" tabindex="0" alt="render">
+  <p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view.</p>
+  <div id="details"></div></div>
+  <div id="options"></div>
+</div>
 <script>
 "use strict";
 const params = new URLSearchParams(location.search);
@@ -33,16 +42,61 @@ ws.binaryType = "blob";
 const img = document.getElementById("frame"), status = document.getElementById("status"), error = document.getElementById("error");
 let speed = 1, frames = 0, lastUrl = null, stats = null;
 const send = o => { if (ws.readyState === WebSocket.OPEN) ws.send(JSON.stringify(o)); };
-ws.onopen = () => { status.textContent = "connected"; send({cmd: "frame"}); };
+ws.onopen = () => { status.textContent = "connected"; send({cmd: "options"}); send({cmd: "frame"}); };
+// The integrator's and filter's options from the registry: each change is sent as the command line
+// would give it; the server answers with the options now in force, or with the CLI's error.
+const select = (name, values, current) => {
+  const s = document.createElement("select");
+  s.id = "opt-" + name;
+  for (const v of values) { const o = document.createElement("option"); o.value = o.textContent = v; s.appendChild(o); }
+  s.value = current;
+  s.addEventListener("change", () => send({cmd: "set", name, value: s.value}));
+  return s;
+};
+const showOptions = m => {
+  const panel = document.getElementById("options");
+  panel.textContent = "";
+  const head = document.createElement("div");
+  head.append("integrator ", select("integrator", m.integrators, m.integrator), " filter ", select("filter", m.filters, m.filter));
+  panel.appendChild(head);
+  const table = document.createElement("table");
+  for (const o of m.list) {
+    const row = table.insertRow(), label = row.insertCell(), cell = row.insertCell();
+    label.textContent = "--" + o.name;
+    label.title = o.help + (o.paper ? " (" + o.paper + ")" : "");
+    let input;
+    if (o.type === "flag") {
+      input = document.createElement("input");
+      input.type = "checkbox";
+      input.checked = o.value !== null;
+      input.addEventListener("change", () => send(input.checked ? {cmd: "set", name: o.name, value: ""} : {cmd: "unset", name: o.name}));
+    } else if (o.choices) {
+      input = select(o.name, o.choices, o.value !== null ? o.value : o.default);
+    } else {
+      input = document.createElement("input");
+      input.type = "text";
+      input.value = o.value !== null ? o.value : "";
+      input.placeholder = o.default;
+      input.title = o.min !== undefined ? `${o.min} to ${o.max}` : "";
+      input.addEventListener("change", () => send(input.value === "" ? {cmd: "unset", name: o.name} : {cmd: "set", name: o.name, value: input.value}));
+    }
+    input.id = "opt-" + o.name;
+    cell.appendChild(input);
+  }
+  panel.appendChild(table);
+};
 ws.onclose = () => { status.textContent = "disconnected"; };
 ws.onmessage = e => {
   if (typeof e.data === "string") {
     const m = JSON.parse(e.data);
     if (m.error) error.textContent = m.error;
+    if (m.options) { error.textContent = ""; showOptions(m.options); }
     if (m.stats) {
       stats = m.stats;
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
       document.getElementById("cli").value = stats.camera_options;
+      status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
+      document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
     return;
   }
@@ -59,6 +113,7 @@ ws.onmessage = e => {
 };
 const keys = {w: [0, 0, 1], s: [0, 0, -1], a: [-1, 0, 0], d: [1, 0, 0], q: [0, -1, 0], e: [0, 1, 0]};
 document.addEventListener("keydown", ev => {
+  if (ev.target.tagName === "INPUT" || ev.target.tagName === "SELECT") return;  // typing a value moves nothing
   const k = ev.key.toLowerCase();
   if (keys[k]) { const [r, u, f] = keys[k]; send({cmd: "move", right: r * speed, up: u * speed, forward: f * speed}); }
   else if (ev.key === "ArrowLeft") send({cmd: "turn", yaw: 5});

@@ -1,5 +1,6 @@
 #include "viewer/viewer_protocol.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -22,6 +23,17 @@ double number(const json& j, const char* key, double limit) {
   const double x = v.get<double>();
   if (!std::isfinite(x) || std::fabs(x) > limit) throw Error(fmt::format("\"{}\" must be a finite number within +-{}", key, limit));
   return x;
+}
+
+// A string under `key` of at most `limit` bytes; `name_like`: a lower-case letter, then lower-case
+// letters, digits and '-'.
+std::string text(const json& j, const char* key, size_t limit, bool name_like) {
+  if (!j.contains(key) || !j.at(key).is_string()) throw Error(fmt::format("\"{}\" must be a string", key));
+  const std::string s = j.at(key).get<std::string>();
+  if (s.size() > limit) throw Error(fmt::format("\"{}\" is longer than {} bytes", key, limit));
+  if (name_like && (s.empty() || !(s[0] >= 'a' && s[0] <= 'z') || !std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; })))
+    throw Error(fmt::format("\"{}\" is an option name without dashes: a lower-case letter, then lower-case letters, digits and '-'", key));
+  return s;
 }
 
 void only_fields(const json& j, const std::set<std::string>& allowed) {
@@ -57,7 +69,19 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd", "stops"});
     return Exposure{number(j, "stops", 20.0)};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure)", cmd.substr(0, 40)));
+  if (cmd == "options") {
+    only_fields(j, {"cmd"});
+    return OptionsRequest{};
+  }
+  if (cmd == "set") {
+    only_fields(j, {"cmd", "name", "value"});
+    return SetOption{text(j, "name", 64, true), j.contains("value") ? text(j, "value", 256, false) : std::string()};
+  }
+  if (cmd == "unset") {
+    only_fields(j, {"cmd", "name"});
+    return UnsetOption{text(j, "name", 64, true)};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset)", cmd.substr(0, 40)));
 }
 
 }  // namespace pathspace::viewer

@@ -27,7 +27,18 @@ struct Reset {};
 struct Exposure {
   double stops = 0;
 };
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure>;
+// The options the current integrator and filter take, from the registry (with their values now).
+struct OptionsRequest {};
+// Gives an integrator or filter option (by name, without dashes; a flag's value is ignored), or
+// "integrator" / "filter" themselves; applied as `render` would parse it, or refused with its error.
+struct SetOption {
+  std::string name, value;
+};
+// Takes an option back to its default.
+struct UnsetOption {
+  std::string name;
+};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).

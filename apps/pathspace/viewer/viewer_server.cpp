@@ -134,13 +134,15 @@ struct ViewerServer::Impl {
         continue;
       }
       Command command;
+      std::optional<std::string> reply;
       try {
         command = parse_command(beast::buffers_to_string(buffer.data()));
-        if (!std::holds_alternative<FrameRequest>(command)) backend->apply(command);
+        if (!std::holds_alternative<FrameRequest>(command)) reply = backend->apply(command);
       } catch (const Error& e) {
         send_text(ws, error_message(e.what()));
         continue;
       }
+      if (reply) send_text(ws, *reply);
       if (!std::holds_alternative<FrameRequest>(command)) continue;
       std::optional<Frame> frame;
       while (!stopping && !(frame = backend->next_frame(sent, std::chrono::milliseconds(200)))) {

@@ -27,8 +27,9 @@ class ViewerBackend {
   virtual ~ViewerBackend() = default;
   // The newest frame if its sequence is above `after`, waiting up to `wait` for one; nullopt else.
   virtual std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) = 0;
-  // Acts on a command other than FrameRequest; throws pathspace::Error when it cannot.
-  virtual void apply(const Command& command) = 0;
+  // Acts on a command other than FrameRequest: its reply to the client (a JSON object), if any.
+  // Throws pathspace::Error when it cannot (the client gets {"error": what}).
+  virtual std::optional<std::string> apply(const Command& command) = 0;
 };
 
 class ViewerServer {
