@@ -85,11 +85,11 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     }
     if (o.max_spp > 0 && session->passes_done() >= o.max_spp) {
       if (live->wait_for_change(std::chrono::milliseconds(100)))
-        live->publish(session->snapshot(SnapshotImages::mean).mean, session->stats(), view);  // a new exposure
+        live->publish(session->snapshot(SnapshotImages::mean), view);  // a new exposure
       continue;
     }
     const RunResult r = session->run(RunLimit::for_passes(1));
-    if (r.passes > 0) live->publish(session->snapshot(SnapshotImages::mean).mean, session->stats(), view);
+    if (r.passes > 0) live->publish(session->snapshot(SnapshotImages::mean), view);
   }
   return interrupt.exit_code();
 }

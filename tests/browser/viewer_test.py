@@ -141,6 +141,17 @@ def main():
         check(wait_for(driver, "document.getElementById('opt-psf-voxel-size') !== null || "
                                "document.querySelectorAll('#options tr').length > 10"), "the filter's options are listed")
         driver.save_screenshot(os.path.join(shots, "viewer-options.png"))
+        driver.find_element("id", "opt-aov").click()
+        check(wait_for(driver, "Array.from(document.getElementById('show').options).some(o => o.value === 'voxel')"),
+              "the filter's debug images can be shown")
+        before = driver.execute_script(PIXELS)
+        Select(driver.find_element("id", "show")).select_by_value("voxel")
+        check(wait_for(driver, "document.getElementById('show').value === 'voxel' && "
+                               "document.getElementById('status').textContent.includes('spp')"), "the voxel view is chosen")
+        time.sleep(0.5)
+        check(driver.execute_script(PIXELS) != before, "the voxel view shows another image")
+        driver.save_screenshot(os.path.join(shots, "viewer-debug-voxel.png"))
+        Select(driver.find_element("id", "show")).select_by_value("image")
 
         bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
                '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']

@@ -91,7 +91,7 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 9) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset) parse";
+  EXPECT_GE(parsed, 10) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset, show) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

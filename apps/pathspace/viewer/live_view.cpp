@@ -73,6 +73,9 @@ std::optional<std::string> LiveView::apply(const Command& command) {
     } else if (std::holds_alternative<Reset>(command)) {
       camera_ = home_;
       camera_changed_ = restart = true;
+    } else if (const auto* show = std::get_if<Show>(&command)) {
+      shown_ = show->image;
+      exposure_changed_ = true;  // shown again at once, also when the render idles
     } else if (const auto* e = std::get_if<Exposure>(&command)) {
       exposure_stops_ = e->stops;
       exposure_changed_ = true;
@@ -129,22 +132,31 @@ std::optional<RenderConfig> LiveView::take_config() {
   return config;
 }
 
-void LiveView::publish(const Image& mean, const RenderStats& stats, uint64_t view) {
+void LiveView::publish(const RenderSnapshot& snapshot, uint64_t view) {
   double stops;
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
+  std::string shown;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     camera = camera_;
+    shown = shown_;
     stops = exposure_stops_;
     exposure_changed_ = false;
     start = view_start_;
   }
-  Image shown = mean;
+  const Image& mean = snapshot.mean;
+  const RenderStats& stats = snapshot.stats;
+  nlohmann::ordered_json images = nlohmann::ordered_json::array({"image"});
+  Image image = mean;
+  for (const NamedImage& aov : snapshot.aovs) {
+    images.push_back(aov.name);
+    if (aov.name == shown) image = aov.image;
+  }
   const float scale = float(std::exp2(stops));
   if (scale != 1.f)
-    for (Rgb& p : shown.pixels) p = p * scale;
-  auto png = std::make_shared<const std::string>(encode_image("frame.png", shown, ImageEncoding::fast));
+    for (Rgb& p : image.pixels) p = p * scale;
+  auto png = std::make_shared<const std::string>(encode_image("frame.png", image, ImageEncoding::fast));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json j = {{"stats",
                                      {{"width", mean.width},
@@ -156,6 +168,8 @@ void LiveView::publish(const Image& mean, const RenderStats& stats, uint64_t vie
                                       {"passes_per_second", seconds > 0.0 ? double(stats.spp) / seconds : 0.0},
                                       {"rays", stats.rays},
                                       {"details", statistics_json(stats.details)},
+                                      {"images", images},
+                                      {"shown", shown},
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -41,8 +41,9 @@ class LiveView final : public ViewerBackend {
   std::optional<PerspectiveCamera> take_camera();
   // The configuration to render with when the options changed since the last call.
   std::optional<RenderConfig> take_config();
-  // Encodes the film's mean (display exposure applied) as the next frame.
-  void publish(const Image& mean, const RenderStats& stats, uint64_t view);
+  // Encodes the shown image of the snapshot (the film's mean, or a debug image; display exposure
+  // applied) as the next frame.
+  void publish(const RenderSnapshot& snapshot, uint64_t view);
   // Waits until the camera, the options or the exposure change, or `wait` passes (an idle loop);
   // true when the exposure changed (the frame is to be shown again).
   bool wait_for_change(std::chrono::milliseconds wait);
@@ -60,6 +61,7 @@ class LiveView final : public ViewerBackend {
   bool camera_changed_ = false;
   RenderChoice choice_;
   std::optional<RenderConfig> config_changed_;
+  std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;
   bool exposure_changed_ = false;
   Frame frame_;

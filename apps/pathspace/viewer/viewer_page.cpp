@@ -22,6 +22,7 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 <div id="bar">
   <span id="status">connecting</span>
   <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
+  <label>show <select id="show"><option value="image">image</option></select></label>
   <span>speed <span id="speed">1</span>x (+/-)</span>
   <button id="copy">CLI options</button>
   <input id="cli" readonly>
@@ -95,6 +96,12 @@ ws.onmessage = e => {
       stats = m.stats;
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
       document.getElementById("cli").value = stats.camera_options;
+      const show = document.getElementById("show");
+      if (Array.from(show.options).map(o => o.value).join() !== stats.images.join()) {
+        show.textContent = "";
+        for (const n of stats.images) { const o = document.createElement("option"); o.value = o.textContent = n; show.appendChild(o); }
+      }
+      show.value = stats.shown;
       status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
       document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
@@ -137,6 +144,7 @@ document.addEventListener("mousemove", ev => {
   drag = [ev.clientX, ev.clientY];
   send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
 });
+document.getElementById("show").addEventListener("change", ev => send({cmd: "show", image: ev.target.value}));
 document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));
 document.getElementById("copy").addEventListener("click", () => {
   const cli = document.getElementById("cli");

@@ -38,7 +38,12 @@ struct SetOption {
 struct UnsetOption {
   std::string name;
 };
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption>;
+// Which image the frames show: "image" (the render) or one of the debug images its options asked
+// for (the hashed filter's --aov: voxel, count, level, probes), by name.
+struct Show {
+  std::string image;
+};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).
