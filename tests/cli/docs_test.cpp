@@ -95,6 +95,7 @@ const std::set<std::string> kOtherToolsOptions = {
     "--no-build-isolation",      // pip install (docs/python.md)
     "--interactive",             // pbrt-v4 (docs/viewer.md: the viewer's key conventions)
     "--keep",                    // tests/browser/*.py
+    "--pathspace",               // tests/browser/*.py, bench/viewer_rate.py
 };
 
 // Folders at the repository root: a token starting with one of them is a repository path
