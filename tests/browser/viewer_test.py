@@ -67,9 +67,10 @@ def wait_for(driver, script, timeout=30.0):
     return value
 
 
-# The PNG on screen as a data URL, to tell frames apart.
+# The PNG on screen as a data URL, to tell frames apart (frames counts decoded images only).
 PIXELS = """
 const img = document.getElementById('frame');
+if (!img.complete || img.naturalWidth === 0) return 'not decoded';
 const c = document.createElement('canvas');
 c.width = img.naturalWidth; c.height = img.naturalHeight;
 c.getContext('2d').drawImage(img, 0, 0);
@@ -94,6 +95,27 @@ setTimeout(() => done(answers.concat(['timeout'])), 20000);
 """
 
 
+def pixels(driver):
+    """The decoded frame on screen (waits while a new one is loading)."""
+    for _ in range(300):
+        value = driver.execute_script(PIXELS)
+        if value != "not decoded":
+            return value
+        time.sleep(0.01)
+    return "not decoded"
+
+
+def changed_from(driver, before, timeout=30.0):
+    """Waits for a decoded frame that differs from `before`; whether one came."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        now = pixels(driver)
+        if now != before and now != "not decoded":
+            return now
+        time.sleep(0.05)
+    return None
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--pathspace", required=True)
@@ -106,22 +128,21 @@ def main():
     try:
         driver.get(url)
         check(wait_for(driver, "Number(document.getElementById('frame').dataset.frames || 0) >= 3"), "the page shows frames")
-        check(driver.execute_script("return document.getElementById('frame').naturalWidth") == 64, "the frame is 64 pixels wide")
-        first = driver.execute_script(PIXELS)
-        time.sleep(0.5)
+        check(wait_for(driver, "document.getElementById('frame').naturalWidth === 64"), "the frame is 64 pixels wide")
+        first = pixels(driver)
         check(wait_for(driver, "document.getElementById('status').textContent.includes('spp')"), "the statistics show")
-        later = driver.execute_script(PIXELS)
-        check(first != later, "the image changes as passes accumulate")
+        later = changed_from(driver, first)
+        check(later is not None, "the image changes as passes accumulate")
         driver.save_screenshot(os.path.join(shots, "viewer-accumulating.png"))
 
         from selenium.webdriver.common.action_chains import ActionChains
+        cli_before = driver.execute_script("return document.getElementById('cli').value")
         ActionChains(driver).send_keys("w").perform()
         check(wait_for(driver, "document.getElementById('status').textContent.includes('view 1,')"), "a key press starts a new view")
-        time.sleep(0.5)
-        moved = driver.execute_script(PIXELS)
-        check(moved != later, "the moved camera changes the image")
+        check(changed_from(driver, later) is not None, "the moved camera changes the image")
         cli = driver.execute_script("return document.getElementById('cli').value")
         check("--camera-pos" in cli and "--fov" in cli, "the page offers the view's CLI options: " + cli)
+        check(cli != cli_before, "the key moved the camera (its --camera-pos changed)")
         driver.save_screenshot(os.path.join(shots, "viewer-moved.png"))
 
         check(wait_for(driver, "document.getElementById('opt-max-depth') !== null"), "the page lists the integrator's options")
@@ -144,12 +165,11 @@ def main():
         driver.find_element("id", "opt-aov").click()
         check(wait_for(driver, "Array.from(document.getElementById('show').options).some(o => o.value === 'voxel')"),
               "the filter's debug images can be shown")
-        before = driver.execute_script(PIXELS)
+        before = pixels(driver)
         Select(driver.find_element("id", "show")).select_by_value("voxel")
         check(wait_for(driver, "document.getElementById('show').value === 'voxel' && "
                                "document.getElementById('status').textContent.includes('spp')"), "the voxel view is chosen")
-        time.sleep(0.5)
-        check(driver.execute_script(PIXELS) != before, "the voxel view shows another image")
+        check(changed_from(driver, before) is not None, "the voxel view shows another image")
         driver.save_screenshot(os.path.join(shots, "viewer-debug-voxel.png"))
         Select(driver.find_element("id", "show")).select_by_value("image")
 

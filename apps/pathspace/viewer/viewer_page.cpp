@@ -113,9 +113,9 @@ ws.onmessage = e => {
     lastUrl = url;
     // Small renders are shown enlarged by a whole factor (sharp pixels), up to 512 wide.
     img.style.width = img.naturalWidth * Math.max(1, Math.floor(512 / img.naturalWidth)) + "px";
+    img.dataset.frames = String(++frames);  // frames shown (decoded), for the tests and the benchmark
   };
   img.src = url;
-  img.dataset.frames = String(++frames);
   send({cmd: "frame"});
 };
 const keys = {w: [0, 0, 1], s: [0, 0, -1], a: [-1, 0, 0], d: [1, 0, 0], q: [0, -1, 0], e: [0, 1, 0]};
