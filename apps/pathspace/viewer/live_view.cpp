@@ -19,8 +19,18 @@ LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choic
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
-  if (!frame_ready_.wait_for(lock, wait, [&] { return frame_.sequence > after; })) return std::nullopt;
-  return frame_;
+  if (!frame_ready_.wait_for(lock, wait, [&] { return latest_.sequence > after; })) return std::nullopt;
+  if (encoded_.sequence == latest_.sequence) return encoded_;
+  const Pending pending = latest_;
+  lock.unlock();  // encode without holding up the render thread (two clients may both encode it)
+  Image shown = *pending.image;
+  if (pending.scale != 1.f)
+    for (Rgb& p : shown.pixels) p = p * pending.scale;
+  const Frame frame{pending.sequence, std::make_shared<const std::string>(encode_image("frame.png", shown, ImageEncoding::fast)),
+                    pending.stats_json};
+  lock.lock();
+  if (frame.sequence > encoded_.sequence) encoded_ = frame;
+  return frame;
 }
 
 std::string LiveView::options_json() const {
@@ -132,7 +142,7 @@ std::optional<RenderConfig> LiveView::take_config() {
   return config;
 }
 
-void LiveView::publish(const RenderSnapshot& snapshot, uint64_t view) {
+void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   double stops;
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
@@ -145,22 +155,19 @@ void LiveView::publish(const RenderSnapshot& snapshot, uint64_t view) {
     exposure_changed_ = false;
     start = view_start_;
   }
-  const Image& mean = snapshot.mean;
+  const int width = snapshot.mean.width, height = snapshot.mean.height;
   const RenderStats& stats = snapshot.stats;
   nlohmann::ordered_json images = nlohmann::ordered_json::array({"image"});
-  Image image = mean;
-  for (const NamedImage& aov : snapshot.aovs) {
+  Image* image = &snapshot.mean;
+  for (NamedImage& aov : snapshot.aovs) {
     images.push_back(aov.name);
-    if (aov.name == shown) image = aov.image;
+    if (aov.name == shown) image = &aov.image;
   }
-  const float scale = float(std::exp2(stops));
-  if (scale != 1.f)
-    for (Rgb& p : image.pixels) p = p * scale;
-  auto png = std::make_shared<const std::string>(encode_image("frame.png", image, ImageEncoding::fast));
+  auto frame_image = std::make_shared<const Image>(std::move(*image));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json j = {{"stats",
-                                     {{"width", mean.width},
-                                      {"height", mean.height},
+                                     {{"width", width},
+                                      {"height", height},
                                       {"integrator", stats.integrator},
                                       {"filter", stats.filter},
                                       {"spp", stats.spp},
@@ -173,9 +180,7 @@ void LiveView::publish(const RenderSnapshot& snapshot, uint64_t view) {
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    frame_.sequence += 1;
-    frame_.png = std::move(png);
-    frame_.stats_json = j.dump();
+    latest_ = Pending{latest_.sequence + 1, std::move(frame_image), float(std::exp2(stops)), j.dump()};
   }
   frame_ready_.notify_all();
 }

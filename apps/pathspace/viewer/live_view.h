@@ -41,9 +41,10 @@ class LiveView final : public ViewerBackend {
   std::optional<PerspectiveCamera> take_camera();
   // The configuration to render with when the options changed since the last call.
   std::optional<RenderConfig> take_config();
-  // Encodes the shown image of the snapshot (the film's mean, or a debug image; display exposure
-  // applied) as the next frame.
-  void publish(const RenderSnapshot& snapshot, uint64_t view);
+  // Makes the shown image of the snapshot (the film's mean, or a debug image) the next frame. It is
+  // encoded (display exposure applied) by the first client that asks for it, on its own thread,
+  // so that the render thread only copies it.
+  void publish(RenderSnapshot snapshot, uint64_t view);
   // Waits until the camera, the options or the exposure change, or `wait` passes (an idle loop);
   // true when the exposure changed (the frame is to be shown again).
   bool wait_for_change(std::chrono::milliseconds wait);
@@ -64,7 +65,15 @@ class LiveView final : public ViewerBackend {
   std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;
   bool exposure_changed_ = false;
-  Frame frame_;
+  // The newest frame before encoding, and the newest encoded one.
+  struct Pending {
+    uint64_t sequence = 0;
+    std::shared_ptr<const Image> image;
+    float scale = 1.f;
+    std::string stats_json;
+  };
+  Pending latest_;
+  Frame encoded_;
   std::chrono::steady_clock::time_point view_start_ = std::chrono::steady_clock::now();
 };
 
