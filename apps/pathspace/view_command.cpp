@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <filesystem>
 #include <random>
+
+#include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
 
 #include "pathspace/accel/accel.h"
+#include "pathspace/io/image_io.h"
 #include "pathspace/session/render_session.h"
+#include "distinct_files.h"
 #include "interrupt_handler.h"
 #include "number_options.h"
 #include "render_scene.h"
@@ -18,6 +23,26 @@
 namespace pathspace::cli {
 
 namespace {
+
+// The page's Save: NAME-LABEL.exr (as rendered) and .png (display exposure) in `folder`, written
+// atomically and never over a file the scene read.
+viewer::FrameSaver frame_saver(const std::string& folder, const std::string& name, std::vector<NamedFile> inputs) {
+  return [=](const Image& image, float scale, const std::string& label) {
+    const std::string base = (std::filesystem::path(folder) / (name + "-" + label)).string();
+    const std::vector<NamedFile> outputs = {{"save", base + ".exr"}, {"save", base + ".png"}};
+    try {
+      check_distinct_files(outputs, inputs);
+      std::filesystem::create_directories(folder);
+    } catch (const std::exception& e) {
+      throw Error(e.what());
+    }
+    write_image(outputs[0].path, image);
+    Image shown = image;
+    for (Rgb& p : shown.pixels) p = p * scale;
+    write_image(outputs[1].path, shown);
+    return nlohmann::json{{"saved", {outputs[0].path, outputs[1].path}}}.dump();
+  };
+}
 
 // 128 random bits as hex: the token a viewer bound beyond the loopback demands.
 std::string random_token() {
@@ -37,6 +62,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
                   "Address to bind instead of 127.0.0.1 (e.g. 0.0.0.0); then the page needs the random token in the printed URL");
   cmd->add_option("--max-spp", o->max_spp, "Passes per view, after which the viewer idles until the camera moves (default: no limit)")
       ->check(checked_integer("max-spp", 0, 1 << 24));
+  cmd->add_option("--out-dir", o->out_dir, "Folder of the images the page saves (created when needed)")->capture_default_str();
   cmd->add_option("-j,--threads", o->render.threads, "Worker threads; 0 = all cores")->check(checked_integer("threads", 0, 4096));
   o->render.registry.add_to(cmd);
   return cmd;
@@ -55,7 +81,8 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
 
   auto session = std::make_unique<RenderSession>(scene, accel, config);
   auto live = std::make_shared<viewer::LiveView>(
-      home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device});
+      home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device},
+      frame_saver(o.out_dir, prepared.display_name, scene_inputs(prepared)));
   live->set_session(session.get());
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());

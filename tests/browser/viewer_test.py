@@ -124,7 +124,8 @@ def main():
     shots = args.keep or tempfile.mkdtemp(prefix="pathspace-viewer-")
     os.makedirs(shots, exist_ok=True)
     driver = make_driver(window="800,600", script_timeout=30)
-    viewer, url = start_viewer(args.pathspace, [])
+    out_dir = tempfile.mkdtemp(prefix="pathspace-viewer-out-")
+    viewer, url = start_viewer(args.pathspace, ["--out-dir", out_dir])
     try:
         driver.get(url)
         check(wait_for(driver, "Number(document.getElementById('frame').dataset.frames || 0) >= 3"), "the page shows frames")
@@ -134,6 +135,11 @@ def main():
         later = changed_from(driver, first)
         check(later is not None, "the image changes as passes accumulate")
         driver.save_screenshot(os.path.join(shots, "viewer-accumulating.png"))
+        driver.find_element("id", "save").click()
+        saved = wait_for(driver, "document.getElementById('saved').textContent")
+        files = sorted(os.listdir(out_dir))
+        check(len(files) == 2 and files[0].endswith(".exr") and files[1].endswith(".png") and files[0].startswith("cornell-box-view0-"),
+              f"Save writes the frame as EXR and PNG: {saved} -> {files}")
 
         from selenium.webdriver.common.action_chains import ActionChains
         cli_before = driver.execute_script("return document.getElementById('cli').value")

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "pathspace/filters/filter_registry.h"
@@ -14,8 +15,8 @@
 
 namespace pathspace::viewer {
 
-LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice)
-    : home_(home), step_(step), camera_(home), choice_(std::move(choice)) {}
+LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver)
+    : home_(home), step_(step), saver_(std::move(saver)), camera_(home), choice_(std::move(choice)) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -70,6 +71,15 @@ std::string LiveView::set_choice(RenderChoice next) {
 }
 
 std::optional<std::string> LiveView::apply(const Command& command) {
+  if (std::holds_alternative<Save>(command)) {  // the files are written without holding the lock
+    Pending newest;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      newest = latest_;
+    }
+    if (!newest.image) throw Error("no frame to save yet");
+    return saver_(*newest.image, newest.scale, newest.label);
+  }
   std::optional<std::string> reply;
   bool restart = false;
   {
@@ -159,9 +169,10 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   const RenderStats& stats = snapshot.stats;
   nlohmann::ordered_json images = nlohmann::ordered_json::array({"image"});
   Image* image = &snapshot.mean;
+  std::string shown_found = "image";
   for (NamedImage& aov : snapshot.aovs) {
     images.push_back(aov.name);
-    if (aov.name == shown) image = &aov.image;
+    if (aov.name == shown) image = &aov.image, shown_found = aov.name;
   }
   auto frame_image = std::make_shared<const Image>(std::move(*image));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -180,7 +191,8 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    latest_ = Pending{latest_.sequence + 1, std::move(frame_image), float(std::exp2(stops)), j.dump()};
+    const std::string label = fmt::format("view{}-{}spp{}", view, stats.spp, shown_found == "image" ? "" : "-" + shown_found);
+    latest_ = Pending{latest_.sequence + 1, std::move(frame_image), float(std::exp2(stops)), j.dump(), label};
   }
   frame_ready_.notify_all();
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <optional>
 
@@ -25,11 +26,15 @@ struct RenderChoice {
   std::string device;
 };
 
+// Writes a saved frame (Save): the image as rendered, the display scale, and a label naming the view
+// ("view3-64spp", with the debug image's name when one is shown); returns the reply to the client.
+using FrameSaver = std::function<std::string(const Image& image, float scale, const std::string& label)>;
+
 class LiveView final : public ViewerBackend {
  public:
   // `home`: the scene's camera (Reset); `step`: scene units of one move step; `choice`: what the
   // session was configured from.
-  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice);
+  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver);
 
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
   std::optional<std::string> apply(const Command& command) override;
@@ -55,6 +60,7 @@ class LiveView final : public ViewerBackend {
 
   const PerspectiveCamera home_;
   const float step_;
+  const FrameSaver saver_;
   mutable std::mutex mutex_;
   std::condition_variable frame_ready_, changed_;
   RenderSession* session_ = nullptr;
@@ -71,6 +77,7 @@ class LiveView final : public ViewerBackend {
     std::shared_ptr<const Image> image;
     float scale = 1.f;
     std::string stats_json;
+    std::string label;  // FrameSaver's
   };
   Pending latest_;
   Frame encoded_;

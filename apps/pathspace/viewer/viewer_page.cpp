@@ -24,8 +24,10 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
   <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
   <label>show <select id="show"><option value="image">image</option></select></label>
   <span>speed <span id="speed">1</span>x (+/-)</span>
+  <button id="save">Save</button>
   <button id="copy">CLI options</button>
   <input id="cli" readonly>
+  <span id="saved"></span>
   <span id="error"></span>
 </div>
 <div id="main">
@@ -92,6 +94,7 @@ ws.onmessage = e => {
     const m = JSON.parse(e.data);
     if (m.error) error.textContent = m.error;
     if (m.options) { error.textContent = ""; showOptions(m.options); }
+    if (m.saved) { error.textContent = ""; document.getElementById("saved").textContent = "saved " + m.saved.join(", "); }
     if (m.stats) {
       stats = m.stats;
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
@@ -144,6 +147,7 @@ document.addEventListener("mousemove", ev => {
   drag = [ev.clientX, ev.clientY];
   send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
 });
+document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));
 document.getElementById("show").addEventListener("change", ev => send({cmd: "show", image: ev.target.value}));
 document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));
 document.getElementById("copy").addEventListener("click", () => {

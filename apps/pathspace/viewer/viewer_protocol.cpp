@@ -85,7 +85,11 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd", "image"});
     return Show{text(j, "image", 64, true)};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show)", cmd.substr(0, 40)));
+  if (cmd == "save") {
+    only_fields(j, {"cmd"});
+    return Save{};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save)", cmd.substr(0, 40)));
 }
 
 }  // namespace pathspace::viewer

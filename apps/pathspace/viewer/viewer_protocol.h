@@ -43,7 +43,10 @@ struct UnsetOption {
 struct Show {
   std::string image;
 };
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show>;
+// Saves the newest frame as EXR (linear, as rendered) and PNG (exposure applied) in the viewer's
+// output folder.
+struct Save {};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).
