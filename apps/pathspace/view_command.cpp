@@ -14,6 +14,7 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/session/render_session.h"
 #include "distinct_files.h"
+#include "pathspace/options/usage_error.h"
 #include "interrupt_handler.h"
 #include "number_options.h"
 #include "render_scene.h"
@@ -62,6 +63,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
                   "Address to bind instead of 127.0.0.1 (e.g. 0.0.0.0); then the page needs the random token in the printed URL");
   cmd->add_option("--max-spp", o->max_spp, "Passes per view, after which the viewer idles until the camera moves (default: no limit)")
       ->check(checked_integer("max-spp", 0, 1 << 24));
+  cmd->add_option("--reference", o->reference,
+                  "An image of the render's size (.exr, .pfm, ...) to measure it against live: relMSE, block relMSE, FLIP, error map");
   cmd->add_option("--out-dir", o->out_dir, "Folder of the images the page saves (created when needed)")->capture_default_str();
   cmd->add_option("-j,--threads", o->render.threads, "Worker threads; 0 = all cores")->check(checked_integer("threads", 0, 4096));
   o->render.registry.add_to(cmd);
@@ -70,6 +73,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
 
 int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   const RenderConfig config = check_render_options(o.render, cmd);
+  std::shared_ptr<const Image> reference;
+  if (!o.reference.empty()) reference = std::make_shared<const Image>(read_image(o.reference));
   PreparedScene prepared = prepare_scene(o.render);
   auto first = std::make_shared<Scene>(std::move(prepared.scene));
   first->camera_moves = false;  // the page moves the camera
@@ -78,11 +83,17 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   const PerspectiveCamera home = first->camera;
   const Bounds3 bounds = first->geometry_bounds();
   const float step = bounds.empty() ? 0.1f : 0.02f * length(bounds.hi - bounds.lo);
+  if (reference && (reference->width != home.width || reference->height != home.height))
+    throw UsageError(fmt::format("--reference {} is {}x{}, the render {}x{}", o.reference, reference->width, reference->height, home.width,
+                                 home.height),
+                     "give -r the reference's size");
 
+  std::vector<NamedFile> saved_inputs = scene_inputs(prepared);  // Save never writes over these
+  if (!o.reference.empty()) saved_inputs.push_back({"--reference", o.reference});
   auto session = std::make_unique<RenderSession>(scene, accel, config);
   auto live = std::make_shared<viewer::LiveView>(
       home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device},
-      frame_saver(o.out_dir, prepared.display_name, scene_inputs(prepared)));
+      frame_saver(o.out_dir, prepared.display_name, saved_inputs), reference);
   live->set_session(session.get());
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());

@@ -17,6 +17,7 @@ struct ViewOptions {
   std::string listen;    // address to bind; empty: 127.0.0.1 without a token
   uint32_t max_spp = 0;  // passes per view before the loop idles; 0: no limit
   std::string out_dir = "pathspace-out";  // where the page's Save writes (created when needed)
+  std::string reference;  // an image to measure the render against; empty: none
 };
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions* options);

@@ -202,6 +202,26 @@ def main():
         code = viewer.wait(timeout=30)
     check(code == 128 + signal.SIGTERM, f"SIGTERM ends the viewer with 143 (got {code})")
 
+    # --reference: live metrics, their plot and the error map; a reference of another size is refused.
+    reference = os.path.join(out_dir, "reference.exr")
+    subprocess.run([args.pathspace, "render", "cornell-box", "-r", "64x48", "-s", "64", "-q", "-o", reference], check=True)
+    small = subprocess.run([args.pathspace, "view", "cornell-box", "-r", "32x24", "--reference", reference], capture_output=True, text=True)
+    check(small.returncode == 2 and "64x48" in small.stderr, "a reference of another size is a usage error: " + small.stderr.strip())
+    measured, measured_url = start_viewer(args.pathspace, ["--reference", reference])
+    driver = make_driver(window="800,600", script_timeout=30)
+    try:
+        driver.get(measured_url)
+        check(wait_for(driver, "document.getElementById('metrics').textContent.includes('relMSE')"), "the metrics show: " +
+              str(driver.execute_script("return document.getElementById('metrics').textContent")))
+        check(wait_for(driver, "!document.getElementById('plot').hidden"), "the metrics are plotted")
+        check(wait_for(driver, "Array.from(document.getElementById('show').options).some(o => o.value === 'error')"),
+              "the error map can be shown")
+        driver.save_screenshot(os.path.join(shots, "viewer-reference.png"))
+    finally:
+        driver.quit()
+        measured.send_signal(signal.SIGTERM)
+        measured.wait(timeout=30)
+
     guarded, guarded_url = start_viewer(args.pathspace, ["--listen", "127.0.0.1"])
     try:
         check("token=" in guarded_url, "--listen prints a URL with a token")

@@ -5,6 +5,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "pathspace/film/block_metrics.h"
+#include "pathspace/film/flip.h"
+#include "pathspace/film/image_metrics.h"
 #include "pathspace/filters/filter_registry.h"
 #include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
@@ -15,8 +18,9 @@
 
 namespace pathspace::viewer {
 
-LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver)
-    : home_(home), step_(step), saver_(std::move(saver)), camera_(home), choice_(std::move(choice)) {}
+LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver,
+                   std::shared_ptr<const Image> reference)
+    : home_(home), step_(step), saver_(std::move(saver)), reference_(std::move(reference)), camera_(home), choice_(std::move(choice)) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -167,6 +171,22 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   }
   const int width = snapshot.mean.width, height = snapshot.mean.height;
   const RenderStats& stats = snapshot.stats;
+  // Against --reference: the cheap metrics every frame, FLIP (its filters cost tens of ms at 640x360)
+  // at most once a second; the error map is one more image to show.
+  nlohmann::ordered_json metrics = nullptr;
+  const double view_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (reference_) {
+    const ImageError e = image_error(snapshot.mean, *reference_);
+    const BlockError b = block_error(snapshot.mean, *reference_);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_flip_time_ > std::chrono::seconds(1)) {
+      last_flip_ = flip(snapshot.mean, *reference_).mean;
+      last_flip_time_ = now;
+    }
+    metrics = {{"seconds", view_seconds}, {"spp", stats.spp}, {"rel_mse", e.rel_mse}, {"block_rel_mse", b.block_rel_mse},
+               {"blotched_share", b.blotched_share}, {"flip", last_flip_}};
+    snapshot.aovs.push_back({"error", rel_error_map(snapshot.mean, *reference_)});
+  }
   nlohmann::ordered_json images = nlohmann::ordered_json::array({"image"});
   Image* image = &snapshot.mean;
   std::string shown_found = "image";
@@ -186,6 +206,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
                                       {"passes_per_second", seconds > 0.0 ? double(stats.spp) / seconds : 0.0},
                                       {"rays", stats.rays},
                                       {"details", statistics_json(stats.details)},
+                                      {"metrics", metrics},
                                       {"images", images},
                                       {"shown", shown},
                                       {"camera_options", camera_options(camera)}}}};

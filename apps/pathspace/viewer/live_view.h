@@ -34,7 +34,9 @@ class LiveView final : public ViewerBackend {
  public:
   // `home`: the scene's camera (Reset); `step`: scene units of one move step; `choice`: what the
   // session was configured from.
-  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver);
+  // `reference`: an image of the scene's size to measure the render against (relMSE, block relMSE,
+  // blotched blocks, FLIP; the "error" image), or null.
+  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver, std::shared_ptr<const Image> reference);
 
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
   std::optional<std::string> apply(const Command& command) override;
@@ -61,6 +63,9 @@ class LiveView final : public ViewerBackend {
   const PerspectiveCamera home_;
   const float step_;
   const FrameSaver saver_;
+  const std::shared_ptr<const Image> reference_;
+  double last_flip_ = -1.0;  // FLIP of the last frame it was computed for (at most once a second)
+  std::chrono::steady_clock::time_point last_flip_time_{};
   mutable std::mutex mutex_;
   std::condition_variable frame_ready_, changed_;
   RenderSession* session_ = nullptr;

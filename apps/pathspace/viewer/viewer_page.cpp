@@ -33,6 +33,8 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 <div id="main">
   <div><img id="frame" tabindex="0" alt="render">
   <p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view.</p>
+  <div id="metrics"></div>
+  <canvas id="plot" width="360" height="140" hidden></canvas>
   <div id="details"></div></div>
   <div id="options"></div>
 </div>
@@ -106,6 +108,7 @@ ws.onmessage = e => {
       }
       show.value = stats.shown;
       status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
+      if (stats.metrics) plotMetrics(stats.view, stats.metrics);
       document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
     return;
@@ -120,6 +123,31 @@ ws.onmessage = e => {
   };
   img.src = url;
   send({cmd: "frame"});
+};
+// --reference: the metrics of each frame, and relMSE and block relMSE of the current view against
+// its seconds on a log scale.
+let series = {view: -1, points: []};
+const plotMetrics = (view, m) => {
+  document.getElementById("metrics").textContent =
+    `relMSE ${m.rel_mse.toPrecision(3)}, block relMSE ${m.block_rel_mse.toPrecision(3)}, blotched ${(100 * m.blotched_share).toFixed(2)}%, FLIP ${m.flip.toFixed(4)} at ${m.spp} spp, ${m.seconds.toFixed(1)} s`;
+  if (series.view !== view) series = {view, points: []};
+  series.points.push([m.seconds, m.rel_mse, m.block_rel_mse]);
+  const c = document.getElementById("plot"), g = c.getContext("2d");
+  c.hidden = false;
+  g.fillStyle = "#202124"; g.fillRect(0, 0, c.width, c.height);
+  const pts = series.points, tmax = Math.max(...pts.map(p => p[0]), 1e-3);
+  const logs = pts.flatMap(p => [p[1], p[2]]).filter(v => v > 0).map(Math.log10);
+  const lo = Math.floor(Math.min(...logs)), hi = Math.ceil(Math.max(...logs)) + (logs.length ? 0 : 1);
+  const x = t => 30 + (c.width - 40) * t / tmax, y = v => 10 + (c.height - 30) * (hi - Math.log10(v)) / Math.max(hi - lo, 1);
+  g.fillStyle = "#9aa0a6"; g.font = "10px sans-serif";
+  g.fillText("1e" + hi, 0, 14); g.fillText("1e" + lo, 0, c.height - 20); g.fillText(tmax.toFixed(1) + " s", c.width - 40, c.height - 4);
+  for (const [k, colour] of [[1, "#8ab4f8"], [2, "#f28b82"]]) {
+    g.strokeStyle = colour; g.beginPath();
+    pts.forEach((p, i) => { if (p[k] > 0) (i ? g.lineTo : g.moveTo).call(g, x(p[0]), y(p[k])); });
+    g.stroke();
+  }
+  g.fillStyle = "#8ab4f8"; g.fillText("relMSE", 40, c.height - 4);
+  g.fillStyle = "#f28b82"; g.fillText("block relMSE", 90, c.height - 4);
 };
 const keys = {w: [0, 0, 1], s: [0, 0, -1], a: [-1, 0, 0], d: [1, 0, 0], q: [0, -1, 0], e: [0, 1, 0]};
 document.addEventListener("keydown", ev => {
