@@ -104,6 +104,7 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   InterruptHandler interrupt(true, "\npathspace view: interrupted: finishing the pass in flight, then stopping\n");
   interrupt.watch(session.get());
   uint64_t view = 0;
+  std::unique_ptr<RenderSession> right;  // the split screen's right half, or null
   while (interrupt.signal() == 0) {
     const std::optional<PerspectiveCamera> camera = live->take_camera();
     if (camera) {
@@ -121,13 +122,23 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     } else if (camera) {
       session->begin_frame(scene, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
     }
+    if (std::optional<std::optional<RenderConfig>> split = live->take_split()) {
+      right = *split ? std::make_unique<RenderSession>(scene, accel, std::move(**split)) : nullptr;
+    } else if (right && camera) {
+      right->begin_frame(scene, accel, view);
+    }
+    const auto shown = [&] {
+      RenderSnapshot left = session->snapshot(SnapshotImages::mean);
+      if (right) viewer::LiveView::compose_split(&left, right->snapshot(SnapshotImages::mean));
+      return left;
+    };
     if (o.max_spp > 0 && session->passes_done() >= o.max_spp) {
-      if (live->wait_for_change(std::chrono::milliseconds(100)))
-        live->publish(session->snapshot(SnapshotImages::mean), view);  // a new exposure
+      if (live->wait_for_change(std::chrono::milliseconds(100))) live->publish(shown(), view);  // a new exposure
       continue;
     }
     const RunResult r = session->run(RunLimit::for_passes(1));
-    if (r.passes > 0) live->publish(session->snapshot(SnapshotImages::mean), view);
+    if (right && r.passes > 0) right->run(RunLimit::for_passes(1));
+    if (r.passes > 0) live->publish(shown(), view);
   }
   return interrupt.exit_code();
 }

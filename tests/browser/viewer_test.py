@@ -178,6 +178,11 @@ def main():
         check(changed_from(driver, before) is not None, "the voxel view shows another image")
         driver.save_screenshot(os.path.join(shots, "viewer-debug-voxel.png"))
         Select(driver.find_element("id", "show")).select_by_value("image")
+        Select(driver.find_element("id", "split")).select_by_value("none")
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('right half: filter none')"),
+              "the split screen shows the unfiltered render beside the filtered one")
+        driver.save_screenshot(os.path.join(shots, "viewer-split.png"))
+        Select(driver.find_element("id", "split")).select_by_value("off")
 
         bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
                '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']

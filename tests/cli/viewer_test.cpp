@@ -38,6 +38,7 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_EQ(std::get<Exposure>(parse_command(R"({"cmd":"exposure","stops":-3})")).stops, -3.0);
   EXPECT_TRUE(std::holds_alternative<OptionsRequest>(parse_command(R"({"cmd":"options"})")));
   EXPECT_TRUE(std::holds_alternative<Save>(parse_command(R"({"cmd":"save"})")));
+  EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).filter, "hashed");
   const SetOption set = std::get<SetOption>(parse_command(R"({"cmd":"set","name":"max-depth","value":"5"})"));
   EXPECT_EQ(set.name, "max-depth");
   EXPECT_EQ(set.value, "5");
@@ -92,7 +93,7 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 11) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset, show, save) parse";
+  EXPECT_GE(parsed, 12) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset, show, save, split) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

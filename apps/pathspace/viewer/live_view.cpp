@@ -97,6 +97,29 @@ std::optional<std::string> LiveView::apply(const Command& command) {
     } else if (std::holds_alternative<Reset>(command)) {
       camera_ = home_;
       camera_changed_ = restart = true;
+    } else if (const auto* split = std::get_if<Split>(&command)) {
+      if (split->filter == "off") {
+        split_filter_.clear();
+        split_changed_ = std::optional<RenderConfig>();
+      } else {
+        // The main options that apply to the integrator with the other filter (the CLI's own check).
+        OptionValues given;
+        for (const CatalogOption& o : options_of(choice_.integrator, split->filter))
+          if (const std::string* v = choice_.given.find(o.spec.name)) given.set(o.spec.name, *v);
+        RenderConfig config;
+        try {
+          config = configure_render(choice_.integrator, split->filter, given);
+          config.seed = choice_.seed;
+          config.threads = choice_.threads;
+          config.device = choice_.device;
+          check_device(config.device, config.integrator, config.filter.name);
+        } catch (const OptionError& e) {
+          throw Error(e.what());
+        }
+        split_filter_ = split->filter;
+        split_changed_ = std::optional<RenderConfig>(std::move(config));
+      }
+      restart = true;
     } else if (const auto* show = std::get_if<Show>(&command)) {
       shown_ = show->image;
       exposure_changed_ = true;  // shown again at once, also when the render idles
@@ -148,6 +171,21 @@ std::optional<PerspectiveCamera> LiveView::take_camera() {
   return camera_;
 }
 
+std::optional<std::optional<RenderConfig>> LiveView::take_split() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<std::optional<RenderConfig>> split = std::move(split_changed_);
+  split_changed_.reset();
+  return split;
+}
+
+void LiveView::compose_split(RenderSnapshot* left, const RenderSnapshot& right) {
+  Image& image = left->mean;
+  const int half = image.width / 2;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = half; x < image.width; ++x) image.pixels[size_t(y) * size_t(image.width) + size_t(x)] =
+        right.mean.pixels[size_t(y) * size_t(image.width) + size_t(x)];
+}
+
 std::optional<RenderConfig> LiveView::take_config() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::optional<RenderConfig> config = std::move(config_changed_);
@@ -160,11 +198,12 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   double stops;
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
-  std::string shown;
+  std::string shown, split;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     camera = camera_;
     shown = shown_;
+    split = split_filter_;
     stops = exposure_stops_;
     exposure_changed_ = false;
     start = view_start_;
@@ -208,6 +247,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
                                       {"details", statistics_json(stats.details)},
                                       {"metrics", metrics},
                                       {"images", images},
+                                      {"split", split.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(split)},
                                       {"shown", shown},
                                       {"camera_options", camera_options(camera)}}}};
   {
@@ -220,7 +260,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
 
 bool LiveView::wait_for_change(std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait_for(lock, wait, [&] { return camera_changed_ || config_changed_ || exposure_changed_; });
+  changed_.wait_for(lock, wait, [&] { return camera_changed_ || config_changed_ || split_changed_ || exposure_changed_; });
   return exposure_changed_;
 }
 

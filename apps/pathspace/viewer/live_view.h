@@ -48,6 +48,11 @@ class LiveView final : public ViewerBackend {
   std::optional<PerspectiveCamera> take_camera();
   // The configuration to render with when the options changed since the last call.
   std::optional<RenderConfig> take_config();
+  // The split screen's right-half configuration when it changed since the last call: a config, or
+  // nullopt inside for "off".
+  std::optional<std::optional<RenderConfig>> take_split();
+  // Makes the snapshot's mean the left half and `right`'s the right half of the shown image.
+  static void compose_split(RenderSnapshot* left, const RenderSnapshot& right);
   // Makes the shown image of the snapshot (the film's mean, or a debug image) the next frame. It is
   // encoded (display exposure applied) by the first client that asks for it, on its own thread,
   // so that the render thread only copies it.
@@ -73,6 +78,8 @@ class LiveView final : public ViewerBackend {
   bool camera_changed_ = false;
   RenderChoice choice_;
   std::optional<RenderConfig> config_changed_;
+  std::string split_filter_;  // empty: no split screen
+  std::optional<std::optional<RenderConfig>> split_changed_;
   std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;
   bool exposure_changed_ = false;

@@ -23,6 +23,7 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
   <span id="status">connecting</span>
   <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
   <label>show <select id="show"><option value="image">image</option></select></label>
+  <label>right half: <select id="split"><option value="off">off</option></select></label>
   <span>speed <span id="speed">1</span>x (+/-)</span>
   <button id="save">Save</button>
   <button id="copy">CLI options</button>
@@ -95,7 +96,13 @@ ws.onmessage = e => {
   if (typeof e.data === "string") {
     const m = JSON.parse(e.data);
     if (m.error) error.textContent = m.error;
-    if (m.options) { error.textContent = ""; showOptions(m.options); }
+    if (m.options) {
+      error.textContent = "";
+      showOptions(m.options);
+      const split = document.getElementById("split");
+      if (split.options.length === 1)
+        for (const f of m.options.filters) { const o = document.createElement("option"); o.value = f; o.textContent = "filter " + f; split.appendChild(o); }
+    }
     if (m.saved) { error.textContent = ""; document.getElementById("saved").textContent = "saved " + m.saved.join(", "); }
     if (m.stats) {
       stats = m.stats;
@@ -108,6 +115,7 @@ ws.onmessage = e => {
       }
       show.value = stats.shown;
       status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
+      if (stats.split) status.textContent += ` | right half: filter ${stats.split}`;
       if (stats.metrics) plotMetrics(stats.view, stats.metrics);
       document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
@@ -175,6 +183,7 @@ document.addEventListener("mousemove", ev => {
   drag = [ev.clientX, ev.clientY];
   send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
 });
+document.getElementById("split").addEventListener("change", ev => send({cmd: "split", filter: ev.target.value}));
 document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));
 document.getElementById("show").addEventListener("change", ev => send({cmd: "show", image: ev.target.value}));
 document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));

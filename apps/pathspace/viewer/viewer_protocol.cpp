@@ -89,7 +89,11 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd"});
     return Save{};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save)", cmd.substr(0, 40)));
+  if (cmd == "split") {
+    only_fields(j, {"cmd", "filter"});
+    return Split{text(j, "filter", 64, true)};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split)", cmd.substr(0, 40)));
 }
 
 }  // namespace pathspace::viewer

@@ -46,7 +46,12 @@ struct Show {
 // Saves the newest frame as EXR (linear, as rendered) and PNG (exposure applied) in the viewer's
 // output folder.
 struct Save {};
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save>;
+// Split screen: the right half rendered with the same integrator and options under another filter
+// ("none", "hashed", ...), or "off".
+struct Split {
+  std::string filter;
+};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).
