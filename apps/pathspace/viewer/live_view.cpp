@@ -57,18 +57,26 @@ std::string LiveView::options_json() const {
       .dump();
 }
 
+namespace {
+
 // configure_render is the command line's own check: the page gets the CLI's message for a bad value.
-std::string LiveView::set_choice(RenderChoice next) {
-  RenderConfig config;
+RenderConfig configured(const RenderChoice& c) {
   try {
-    config = configure_render(next.integrator, next.filter, next.given);
-    config.seed = next.seed;
-    config.threads = next.threads;
-    config.device = next.device;
+    RenderConfig config = configure_render(c.integrator, c.filter, c.given);
+    config.seed = c.seed;
+    config.threads = c.threads;
+    config.device = c.device;
     check_device(config.device, config.integrator, config.filter.name);
+    return config;
   } catch (const OptionError& e) {
     throw Error(e.what());
   }
+}
+
+}  // namespace
+
+std::string LiveView::set_choice(RenderChoice next) {
+  RenderConfig config = configured(next);
   choice_ = std::move(next);
   config_changed_ = std::move(config);
   return options_json();
@@ -102,20 +110,13 @@ std::optional<std::string> LiveView::apply(const Command& command) {
         split_filter_.clear();
         split_changed_ = std::optional<RenderConfig>();
       } else {
-        // The main options that apply to the integrator with the other filter (the CLI's own check).
-        OptionValues given;
+        // The main options that apply to the integrator with the other filter.
+        RenderChoice other = choice_;
+        other.filter = split->filter;
+        other.given = OptionValues();
         for (const CatalogOption& o : options_of(choice_.integrator, split->filter))
-          if (const std::string* v = choice_.given.find(o.spec.name)) given.set(o.spec.name, *v);
-        RenderConfig config;
-        try {
-          config = configure_render(choice_.integrator, split->filter, given);
-          config.seed = choice_.seed;
-          config.threads = choice_.threads;
-          config.device = choice_.device;
-          check_device(config.device, config.integrator, config.filter.name);
-        } catch (const OptionError& e) {
-          throw Error(e.what());
-        }
+          if (const std::string* v = choice_.given.find(o.spec.name)) other.given.set(o.spec.name, *v);
+        RenderConfig config = configured(other);
         split_filter_ = split->filter;
         split_changed_ = std::optional<RenderConfig>(std::move(config));
       }
