@@ -9,11 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
+#include <fmt/printf.h>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/session/render_session.h"
 #include "distinct_files.h"
+#include "video_encoder.h"
 #include "pathspace/options/usage_error.h"
 #include "interrupt_handler.h"
 #include "number_options.h"
@@ -43,6 +45,51 @@ viewer::FrameSaver frame_saver(const std::string& folder, const std::string& nam
     write_image(outputs[1].path, shown);
     return nlohmann::json{{"saved", {outputs[0].path, outputs[1].path}}}.dump();
   };
+}
+
+// The page's recording of a flight: NAME-flight-K-%04d.png in `folder` for every frame shown, and on
+// stop NAME-flight-K.mp4 at the rate the frames came (ffmpeg, as `render --video`), when ffmpeg is
+// there. Its calls are serialised by LiveView.
+viewer::FlightRecorder flight_recorder(const std::string& folder, const std::string& name, std::vector<NamedFile> inputs) {
+  struct State {
+    bool active = false;
+    int flight = 0;
+    uint64_t frames = 0;
+    std::string pattern, video;
+    std::chrono::steady_clock::time_point start;
+  };
+  auto state = std::make_shared<State>();
+  viewer::FlightRecorder r;
+  r.start = [=] {
+    const int flight = state->flight + 1;
+    const std::string base = (std::filesystem::path(folder) / fmt::format("{}-flight-{}", name, flight)).string();
+    try {
+      check_distinct_files({{"record", base + "-0000.png"}, {"record", base + ".mp4"}}, inputs);
+      std::filesystem::create_directories(folder);
+    } catch (const std::exception& e) {
+      throw Error(e.what());
+    }
+    *state = State{true, flight, 0, base + "-%04d.png", base + ".mp4", std::chrono::steady_clock::now()};
+    return nlohmann::json{{"recording", state->pattern}}.dump();
+  };
+  r.frame = [=](const Image& image, float scale) {
+    if (!state->active) return;
+    Image shown = image;
+    for (Rgb& p : shown.pixels) p = p * scale;
+    write_image(fmt::sprintf(state->pattern, state->frames++), shown);
+  };
+  r.stop = [=] {
+    state->active = false;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - state->start).count();
+    nlohmann::json reply = {{"recorded", state->frames}, {"frames", state->pattern}, {"video", nullptr}};
+    const std::string ffmpeg = find_ffmpeg();
+    if (state->frames >= 2 && !ffmpeg.empty()) {
+      encode_video(ffmpeg, state->pattern, 0, std::clamp(double(state->frames) / std::max(seconds, 1e-3), 1.0, 120.0), state->video);
+      reply["video"] = state->video;
+    }
+    return reply.dump();
+  };
+  return r;
 }
 
 // 128 random bits as hex: the token a viewer bound beyond the loopback demands.
@@ -93,7 +140,8 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   auto session = std::make_unique<RenderSession>(scene, accel, config);
   auto live = std::make_shared<viewer::LiveView>(
       home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device},
-      frame_saver(o.out_dir, prepared.display_name, saved_inputs), reference);
+      frame_saver(o.out_dir, prepared.display_name, saved_inputs), reference,
+      flight_recorder(o.out_dir, prepared.display_name, saved_inputs));
   live->set_session(session.get());
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());

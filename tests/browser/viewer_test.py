@@ -137,11 +137,12 @@ def main():
         driver.save_screenshot(os.path.join(shots, "viewer-accumulating.png"))
         driver.find_element("id", "save").click()
         saved = wait_for(driver, "document.getElementById('saved').textContent")
-        files = sorted(os.listdir(out_dir))
+        files = sorted(f for f in os.listdir(out_dir) if "-view" in f)
         check(len(files) == 2 and files[0].endswith(".exr") and files[1].endswith(".png") and files[0].startswith("cornell-box-view0-"),
               f"Save writes the frame as EXR and PNG: {saved} -> {files}")
 
         from selenium.webdriver.common.action_chains import ActionChains
+
         cli_before = driver.execute_script("return document.getElementById('cli').value")
         ActionChains(driver).send_keys("w").perform()
         check(wait_for(driver, "document.getElementById('status').textContent.includes('view 1,')"), "a key press starts a new view")
@@ -150,6 +151,20 @@ def main():
         check("--camera-pos" in cli and "--fov" in cli, "the page offers the view's CLI options: " + cli)
         check(cli != cli_before, "the key moved the camera (its --camera-pos changed)")
         driver.save_screenshot(os.path.join(shots, "viewer-moved.png"))
+        driver.find_element("id", "record").click()
+        check(wait_for(driver, "document.getElementById('saved').textContent.startsWith('recording')"), "Record starts a flight")
+        for key in "dd":
+            ActionChains(driver).send_keys(key).perform()
+            time.sleep(0.3)
+        frames = driver.execute_script("return Number(document.getElementById('frame').dataset.frames)")
+        wait_for(driver, f"Number(document.getElementById('frame').dataset.frames) > {frames + 3}")
+        driver.find_element("id", "record").click()
+        recorded = wait_for(driver, "document.getElementById('saved').textContent.startsWith('recorded') && "
+                                    "document.getElementById('saved').textContent")
+        pngs = [f for f in os.listdir(out_dir) if "-flight-1-" in f and f.endswith(".png")]
+        check(len(pngs) >= 3, f"the flight's frames are written: {recorded} ({len(pngs)} PNG files)")
+        check(os.path.exists(os.path.join(out_dir, "cornell-box-flight-1.mp4")) == os.access("/usr/bin/ffmpeg", os.X_OK),
+              "the flight's video is encoded where ffmpeg is")
 
         check(wait_for(driver, "document.getElementById('opt-max-depth') !== null"), "the page lists the integrator's options")
         depth = driver.find_element("id", "opt-max-depth")

@@ -38,6 +38,8 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_EQ(std::get<Exposure>(parse_command(R"({"cmd":"exposure","stops":-3})")).stops, -3.0);
   EXPECT_TRUE(std::holds_alternative<OptionsRequest>(parse_command(R"({"cmd":"options"})")));
   EXPECT_TRUE(std::holds_alternative<Save>(parse_command(R"({"cmd":"save"})")));
+  EXPECT_TRUE(std::get<Record>(parse_command(R"({"cmd":"record","on":true})")).on);
+  EXPECT_NE(error_of(R"({"cmd":"record","on":1})").find("true or false"), std::string::npos);
   EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).filter, "hashed");
   const SetOption set = std::get<SetOption>(parse_command(R"({"cmd":"set","name":"max-depth","value":"5"})"));
   EXPECT_EQ(set.name, "max-depth");
@@ -93,7 +95,7 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 12) << "the valid seeds (frame, move, turn, reset, exposure, options, set, unset, show, save, split) parse";
+  EXPECT_GE(parsed, 13) << "the valid seeds (every command) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

@@ -19,8 +19,14 @@
 namespace pathspace::viewer {
 
 LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver,
-                   std::shared_ptr<const Image> reference)
-    : home_(home), step_(step), saver_(std::move(saver)), reference_(std::move(reference)), camera_(home), choice_(std::move(choice)) {}
+                   std::shared_ptr<const Image> reference, FlightRecorder recorder)
+    : home_(home),
+      step_(step),
+      saver_(std::move(saver)),
+      recorder_(std::move(recorder)),
+      reference_(std::move(reference)),
+      camera_(home),
+      choice_(std::move(choice)) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -91,6 +97,20 @@ std::optional<std::string> LiveView::apply(const Command& command) {
     }
     if (!newest.image) throw Error("no frame to save yet");
     return saver_(*newest.image, newest.scale, newest.label);
+  }
+  if (const auto* record = std::get_if<Record>(&command)) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (record->on == recording_) throw Error(recording_ ? "already recording" : "not recording");
+    if (record->on) {
+      std::lock_guard<std::mutex> writing(frame_writing_);
+      const std::string reply = recorder_.start();  // throws when the files cannot be written
+      recording_ = true;
+      return reply;
+    }
+    recording_ = false;
+    lock.unlock();  // a frame being written finishes first (frame_writing_); later ones are ignored by the recorder
+    std::lock_guard<std::mutex> writing(frame_writing_);
+    return recorder_.stop();
   }
   std::optional<std::string> reply;
   bool restart = false;
@@ -200,8 +220,10 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
   std::string shown, split;
+  bool recording;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    recording = recording_;
     camera = camera_;
     shown = shown_;
     split = split_filter_;
@@ -235,6 +257,10 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
     if (aov.name == shown) image = &aov.image, shown_found = aov.name;
   }
   auto frame_image = std::make_shared<const Image>(std::move(*image));
+  if (recording) {
+    std::lock_guard<std::mutex> writing(frame_writing_);
+    recorder_.frame(*frame_image, float(std::exp2(stops)));
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json j = {{"stats",
                                      {{"width", width},

@@ -30,13 +30,22 @@ struct RenderChoice {
 // ("view3-64spp", with the debug image's name when one is shown); returns the reply to the client.
 using FrameSaver = std::function<std::string(const Image& image, float scale, const std::string& label)>;
 
+// Records a flight (Record): start() and stop() return the replies to the client (stop() may take
+// seconds: it encodes the video); frame() writes one frame shown, on the render thread.
+struct FlightRecorder {
+  std::function<std::string()> start;
+  std::function<void(const Image& image, float scale)> frame;
+  std::function<std::string()> stop;
+};
+
 class LiveView final : public ViewerBackend {
  public:
   // `home`: the scene's camera (Reset); `step`: scene units of one move step; `choice`: what the
   // session was configured from.
   // `reference`: an image of the scene's size to measure the render against (relMSE, block relMSE,
   // blotched blocks, FLIP; the "error" image), or null.
-  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver, std::shared_ptr<const Image> reference);
+  LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver, std::shared_ptr<const Image> reference,
+           FlightRecorder recorder);
 
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
   std::optional<std::string> apply(const Command& command) override;
@@ -68,6 +77,9 @@ class LiveView final : public ViewerBackend {
   const PerspectiveCamera home_;
   const float step_;
   const FrameSaver saver_;
+  const FlightRecorder recorder_;
+  bool recording_ = false;     // guarded by mutex_; the frames are written outside it
+  std::mutex frame_writing_;   // serialises the recorder's start, frame and stop
   const std::shared_ptr<const Image> reference_;
   double last_flip_ = -1.0;  // FLIP of the last frame it was computed for (at most once a second)
   std::chrono::steady_clock::time_point last_flip_time_{};

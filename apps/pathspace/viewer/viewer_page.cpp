@@ -26,6 +26,7 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
   <label>right half: <select id="split"><option value="off">off</option></select></label>
   <span>speed <span id="speed">1</span>x (+/-)</span>
   <button id="save">Save</button>
+  <button id="record">Record</button>
   <button id="copy">CLI options</button>
   <input id="cli" readonly>
   <span id="saved"></span>
@@ -104,6 +105,12 @@ ws.onmessage = e => {
         for (const f of m.options.filters) { const o = document.createElement("option"); o.value = f; o.textContent = "filter " + f; split.appendChild(o); }
     }
     if (m.saved) { error.textContent = ""; document.getElementById("saved").textContent = "saved " + m.saved.join(", "); }
+    if (m.recording) { recording = true; document.getElementById("record").textContent = "Stop"; document.getElementById("saved").textContent = "recording " + m.recording; }
+    if (m.recorded !== undefined) {
+      recording = false;
+      document.getElementById("record").textContent = "Record";
+      document.getElementById("saved").textContent = `recorded ${m.recorded} frames (${m.frames})` + (m.video ? ", video " + m.video : "");
+    }
     if (m.stats) {
       stats = m.stats;
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
@@ -184,6 +191,8 @@ document.addEventListener("mousemove", ev => {
   send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
 });
 document.getElementById("split").addEventListener("change", ev => send({cmd: "split", filter: ev.target.value}));
+let recording = false;
+document.getElementById("record").addEventListener("click", () => send({cmd: "record", on: !recording}));
 document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));
 document.getElementById("show").addEventListener("change", ev => send({cmd: "show", image: ev.target.value}));
 document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));

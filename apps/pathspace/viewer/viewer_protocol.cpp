@@ -93,7 +93,13 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd", "filter"});
     return Split{text(j, "filter", 64, true)};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split)", cmd.substr(0, 40)));
+  if (cmd == "record") {
+    only_fields(j, {"cmd", "on"});
+    if (!j.contains("on") || !j.at("on").is_boolean()) throw Error("\"on\" must be true or false");
+    return Record{j.at("on").get<bool>()};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record)",
+                          cmd.substr(0, 40)));
 }
 
 }  // namespace pathspace::viewer

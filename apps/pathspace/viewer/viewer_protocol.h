@@ -51,7 +51,11 @@ struct Save {};
 struct Split {
   std::string filter;
 };
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split>;
+// Starts (on) or stops recording the frames shown, as numbered PNG files and, on stop, a video.
+struct Record {
+  bool on = false;
+};
+using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).
