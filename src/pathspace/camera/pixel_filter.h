@@ -69,9 +69,18 @@ PS_INLINE Point2 sample_filter_raster(const PixelFilter& f, uint32_t px, uint32_
   return {float(px) + 0.5f + sample_filter_offset(f, ux), float(py) + 0.5f + sample_filter_offset(f, uy)};
 }
 
+// The pixel (i + j * width) that raster point (rx, ry) falls in; false outside the image.
+PS_INLINE bool raster_pixel(int width, int height, float rx, float ry, uint32_t* pixel) {
+  if (!(rx >= 0.f && rx < float(width) && ry >= 0.f && ry < float(height))) return false;
+  const int i = min_int(int(rx), width - 1), j = min_int(int(ry), height - 1);
+  *pixel = uint32_t(i) + uint32_t(j) * uint32_t(width);
+  return true;
+}
+
 // Whether a point at raster (rx, ry) reaches any pixel of a width x height image.
 PS_INLINE bool filter_reaches_image(const PixelFilter& f, int width, int height, float rx, float ry) {
-  if (f.is_unit_box()) return rx >= 0.f && rx < float(width) && ry >= 0.f && ry < float(height);
+  uint32_t pixel;
+  if (f.is_unit_box()) return raster_pixel(width, height, rx, ry, &pixel);
   const float r = f.radius;
   return rx > -r && rx < float(width) + r && ry > -r && ry < float(height) + r;
 }
@@ -81,9 +90,8 @@ PS_INLINE bool filter_reaches_image(const PixelFilter& f, int width, int height,
 template <typename Add>
 PS_HD void for_each_filter_pixel(const PixelFilter& f, int width, int height, float rx, float ry, Add&& add) {
   if (f.is_unit_box()) {
-    if (!(rx >= 0.f && rx < float(width) && ry >= 0.f && ry < float(height))) return;
-    const int i = min_int(int(rx), width - 1), j = min_int(int(ry), height - 1);
-    add(uint32_t(i) + uint32_t(j) * uint32_t(width), 1.f);
+    uint32_t pixel;
+    if (raster_pixel(width, height, rx, ry, &pixel)) add(pixel, 1.f);
     return;
   }
   const float r = f.radius;
@@ -98,6 +106,14 @@ PS_HD void for_each_filter_pixel(const PixelFilter& f, int width, int height, fl
       if (wx > 0.f) add(uint32_t(i) + uint32_t(j) * uint32_t(width), wx * wy);
     }
   }
+}
+
+// Prefetches the one pixel a unit-box splat at (rx, ry) adds to (a film with width, height and
+// prefetch(pixel): SplatFilmView); wider filters spread over several and prefetch nothing.
+template <typename Film>
+PS_HD void prefetch_filter_splat(const Film& film, const PixelFilter& f, float rx, float ry) {
+  uint32_t pixel;
+  if (f.is_unit_box() && raster_pixel(film.width, film.height, rx, ry, &pixel)) film.prefetch(pixel);
 }
 
 }  // namespace pathspace

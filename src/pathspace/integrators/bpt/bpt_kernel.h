@@ -57,11 +57,6 @@ PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const V
   return sphere_normal(scene.spheres[l.shape], p);
 }
 
-PS_INLINE uint32_t raster_pixel(const PerspectiveCamera& cam, float rx, float ry) {
-  const int i = min_int(int(rx), cam.width - 1), j = min_int(int(ry), cam.height - 1);
-  return uint32_t(i) + uint32_t(j) * uint32_t(cam.width);
-}
-
 // Adds v to the (s, t) strategy image when one is kept.
 PS_INLINE void record(const BptFilms& films, int s, int t, uint32_t pixel, const Rgb& v) {
   if (!films.strategies || s + t - 1 > films.strategy_max_length) return;
@@ -81,11 +76,6 @@ PS_INLINE void splat(const BptFilms& films, const PixelFilter& filter, int s, fl
 // filter reaches the image from there (unclipped for a wide filter, as LT's).
 PS_INLINE bool connect_to_film(const PerspectiveCamera& cam, const Vec3& p, Point2 lens_u, CameraProjection* pr) {
   return cam.project(p, lens_u, pr) && filter_reaches_image(cam.filter, cam.width, cam.height, pr->rx, pr->ry);
-}
-
-// Prefetches the splat film's pixel of a unit-box splat (the only single-pixel one).
-PS_INLINE void prefetch_splat(const BptFilms& films, const PerspectiveCamera& cam, float rx, float ry) {
-  if (cam.filter.is_unit_box()) films.splats.prefetch(raster_pixel(cam, rx, ry));
 }
 
 // Traces the light subpath, splats its camera connections (t = 1, including the emitter itself:
@@ -118,7 +108,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        prefetch_splat(films, cam, pr.rx, pr.ry);
+        prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
         if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
           const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
@@ -177,7 +167,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          prefetch_splat(films, cam, pr.rx, pr.ry);
+          prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
           if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
             const float cos_cam = fabsf(dot(pr.wi, hit.ng));

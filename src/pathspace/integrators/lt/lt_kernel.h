@@ -36,12 +36,6 @@ PS_INLINE void splat(const SplatFilmView& film, const PixelFilter& filter, float
   });
 }
 
-// Prefetches the pixel a unit-box splat at (rx, ry) would add to (SplatFilmView::prefetch).
-PS_INLINE void prefetch_splat(const SplatFilmView& film, const PixelFilter& filter, float rx, float ry) {
-  if (!filter.is_unit_box() || !(rx >= 0.f && rx < float(film.width) && ry >= 0.f && ry < float(film.height))) return;
-  film.prefetch(uint32_t(min_int(int(rx), film.width - 1)) + uint32_t(min_int(int(ry), film.height - 1)) * uint32_t(film.width));
-}
-
 // Whether any pixel can receive a splat at (rx, ry): saves the shadow ray for points far outside.
 PS_INLINE bool reaches_image(const SplatFilmView& film, const PixelFilter& filter, float rx, float ry) {
   return filter_reaches_image(filter, film.width, film.height, rx, ry);
@@ -75,7 +69,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
       if (!is_black(le)) {
         ++counters->rays;
         ++counters->shadow_rays;
-        prefetch_splat(film, cam.filter, pr.rx, pr.ry);
+        prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
         if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time))) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
           splat(film, cam.filter, pr.rx, pr.ry, le * scale);
@@ -113,7 +107,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         if (!is_black(f)) {
           ++counters->rays;
           ++counters->shadow_rays;
-          prefetch_splat(film, cam.filter, pr.rx, pr.ry);
+          prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
           if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time))) {
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
             splat(film, cam.filter, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));

@@ -255,9 +255,8 @@ template <typename Tracer>
 PS_HD bool projection_visible(const SceneView& scene, const Tracer& tracer, const PcltLightView& lv, const Vec3& p,
                               const Vec3& ng, const lt_detail::Projection& pr, PathCounters* counters) {
   const PerspectiveCamera cam = camera_at(scene, lv.time);
-  if (lv.visibility != PcltVisibility::shadow_ray && pr.rx >= 0.f && pr.rx < float(cam.width) && pr.ry >= 0.f &&
-      pr.ry < float(cam.height)) {
-    const size_t pixel = size_t(min_int(int(pr.rx), cam.width - 1)) + size_t(min_int(int(pr.ry), cam.height - 1)) * size_t(cam.width);
+  uint32_t pixel;
+  if (lv.visibility != PcltVisibility::shadow_ray && raster_pixel(cam.width, cam.height, pr.rx, pr.ry, &pixel)) {
     const float depth = dot(p - cam.position, cam.forward);
     if (lv.visibility == PcltVisibility::z_buffer) return depth <= lv.zbuffer[pixel] * (1.f + lv.epsilon);
     const Vec3 n = lv.plane_n[pixel];
