@@ -325,12 +325,7 @@ void check_scene_argument(const RenderOptions& o, const CLI::App& cmd) {
 RenderConfig check_render_options(const RenderOptions& o, const CLI::App& cmd) {
   check_scene_argument(o, cmd);
   try {
-    RenderConfig config = configure_render(o.integrator, o.filter, o.registry.given());
-    config.seed = o.seed;
-    config.threads = o.threads;
-    config.device = o.device;
-    check_device(config.device, config.integrator, config.filter.name);
-    return config;
+    return configure_run(o.integrator, o.filter, o.registry.given(), o.seed, o.threads, o.device);
   } catch (const OptionError& e) {
     throw UsageError(e.what());
   }

@@ -27,22 +27,26 @@ namespace pathspace::cli {
 
 namespace {
 
+// Checks that `outputs` (the page's files) replace no input and creates their folder; an Error to the
+// client otherwise.
+void prepare_outputs(const std::string& folder, const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs) {
+  try {
+    check_distinct_files(outputs, inputs);
+    std::filesystem::create_directories(folder);
+  } catch (const std::exception& e) {
+    throw Error(e.what());
+  }
+}
+
 // The page's Save: NAME-LABEL.exr (as rendered) and .png (display exposure) in `folder`, written
 // atomically and never over a file the scene read.
 viewer::FrameSaver frame_saver(const std::string& folder, const std::string& name, std::vector<NamedFile> inputs) {
   return [=](const Image& image, float scale, const std::string& label) {
     const std::string base = (std::filesystem::path(folder) / (name + "-" + label)).string();
     const std::vector<NamedFile> outputs = {{"save", base + ".exr"}, {"save", base + ".png"}};
-    try {
-      check_distinct_files(outputs, inputs);
-      std::filesystem::create_directories(folder);
-    } catch (const std::exception& e) {
-      throw Error(e.what());
-    }
+    prepare_outputs(folder, outputs, inputs);
     write_image(outputs[0].path, image);
-    Image shown = image;
-    for (Rgb& p : shown.pixels) p = p * scale;
-    write_image(outputs[1].path, shown);
+    write_image(outputs[1].path, viewer::with_exposure(image, scale));
     return nlohmann::json{{"saved", {outputs[0].path, outputs[1].path}}}.dump();
   };
 }
@@ -63,20 +67,13 @@ viewer::FlightRecorder flight_recorder(const std::string& folder, const std::str
   r.start = [=] {
     const int flight = state->flight + 1;
     const std::string base = (std::filesystem::path(folder) / fmt::format("{}-flight-{}", name, flight)).string();
-    try {
-      check_distinct_files({{"record", base + "-0000.png"}, {"record", base + ".mp4"}}, inputs);
-      std::filesystem::create_directories(folder);
-    } catch (const std::exception& e) {
-      throw Error(e.what());
-    }
+    prepare_outputs(folder, {{"record", base + "-0000.png"}, {"record", base + ".mp4"}}, inputs);
     *state = State{true, flight, 0, base + "-%04d.png", base + ".mp4", std::chrono::steady_clock::now()};
     return nlohmann::json{{"recording", state->pattern}}.dump();
   };
   r.frame = [=](const Image& image, float scale) {
     if (!state->active) return;
-    Image shown = image;
-    for (Rgb& p : shown.pixels) p = p * scale;
-    write_image(fmt::sprintf(state->pattern, state->frames++), shown);
+    write_image(fmt::sprintf(state->pattern, state->frames++), viewer::with_exposure(image, scale));
   };
   r.stop = [=] {
     state->active = false;

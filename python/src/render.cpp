@@ -123,11 +123,7 @@ RenderRequest request_of(PyScene& scene, const std::string& integrator, const st
   check_threads(threads);
   const OptionValues given = option_values(integrator, filter, options);
   RenderRequest r;
-  r.config = configure_render(integrator, filter, given);
-  r.config.seed = seed;
-  r.config.threads = threads;
-  r.config.device = device;
-  check_device(device, integrator, filter);
+  r.config = configure_run(integrator, filter, given, seed, threads, device);
   r.limit = limit;
   const std::shared_ptr<const Scene> s = scene.scene();
   r.run = RenderRunInfo{scene.label(), s->camera.width, s->camera.height, max_segments_of(given, *s), ""};

@@ -9,7 +9,6 @@
 #include "pathspace/film/flip.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/filters/filter_registry.h"
-#include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/session/option_catalog.h"
@@ -17,6 +16,13 @@
 #include "viewer/camera_controls.h"
 
 namespace pathspace::viewer {
+
+Image with_exposure(const Image& image, float scale) {
+  Image shown = image;
+  if (scale != 1.f)
+    for (Rgb& p : shown.pixels) p = p * scale;
+  return shown;
+}
 
 LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver,
                    std::shared_ptr<const Image> reference, FlightRecorder recorder)
@@ -34,10 +40,8 @@ std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseco
   if (encoded_.sequence == latest_.sequence) return encoded_;
   const Pending pending = latest_;
   lock.unlock();  // encode without holding up the render thread (two clients may both encode it)
-  Image shown = *pending.image;
-  if (pending.scale != 1.f)
-    for (Rgb& p : shown.pixels) p = p * pending.scale;
-  const Frame frame{pending.sequence, std::make_shared<const std::string>(encode_image("frame.png", shown, ImageEncoding::fast)),
+  const Frame frame{pending.sequence,
+                    std::make_shared<const std::string>(encode_image("frame.png", with_exposure(*pending.image, pending.scale), ImageEncoding::fast)),
                     pending.stats_json};
   lock.lock();
   if (frame.sequence > encoded_.sequence) encoded_ = frame;
@@ -68,12 +72,7 @@ namespace {
 // configure_render is the command line's own check: the page gets the CLI's message for a bad value.
 RenderConfig configured(const RenderChoice& c) {
   try {
-    RenderConfig config = configure_render(c.integrator, c.filter, c.given);
-    config.seed = c.seed;
-    config.threads = c.threads;
-    config.device = c.device;
-    check_device(config.device, config.integrator, config.filter.name);
-    return config;
+    return configure_run(c.integrator, c.filter, c.given, c.seed, c.threads, c.device);
   } catch (const OptionError& e) {
     throw Error(e.what());
   }
@@ -156,20 +155,13 @@ std::optional<std::string> LiveView::apply(const Command& command) {
       } else if (s->name == "filter") {
         next.filter = s->value;
       } else {
-        OptionValues given;
-        for (const auto& [name, value] : choice_.given.items())
-          if (name != s->name) given.set(name, value);
-        given.set(s->name, s->value);
-        next.given = std::move(given);
+        next.given.set(s->name, s->value);
       }
       reply = set_choice(std::move(next));
       restart = true;
     } else if (const auto* u = std::get_if<UnsetOption>(&command)) {
       RenderChoice next = choice_;
-      OptionValues given;
-      for (const auto& [name, value] : choice_.given.items())
-        if (name != u->name) given.set(name, value);
-      next.given = std::move(given);
+      next.given.erase(u->name);
       reply = set_choice(std::move(next));
       restart = true;
     }

@@ -26,6 +26,9 @@ struct RenderChoice {
   std::string device;
 };
 
+// The image as the page shows it: scaled by the display exposure (2^stops).
+Image with_exposure(const Image& image, float scale);
+
 // Writes a saved frame (Save): the image as rendered, the display scale, and a label naming the view
 // ("view3-64spp", with the debug image's name when one is shown); returns the reply to the client.
 using FrameSaver = std::function<std::string(const Image& image, float scale, const std::string& label)>;

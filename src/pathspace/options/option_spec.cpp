@@ -29,6 +29,10 @@ void OptionValues::set(std::string name, std::string value) {
   items_.emplace_back(std::move(name), std::move(value));
 }
 
+void OptionValues::erase(const std::string& name) {
+  std::erase_if(items_, [&](const auto& item) { return item.first == name; });
+}
+
 const std::string* OptionValues::find(const std::string& name) const {
   for (const auto& [n, v] : items_)
     if (n == name) return &v;

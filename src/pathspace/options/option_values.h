@@ -11,7 +11,8 @@ namespace pathspace {
 class OptionValues {
  public:
   // Flags are given with an empty value.
-  void set(std::string name, std::string value = {});
+  void set(std::string name, std::string value = {});  // replaces a value given before
+  void erase(const std::string& name);
   bool has(const std::string& name) const { return find(name) != nullptr; }
   const std::string* find(const std::string& name) const;
   const std::vector<std::pair<std::string, std::string>>& items() const { return items_; }

@@ -53,4 +53,14 @@ RenderConfig configure_render(const std::string& integrator, const std::string& 
   return config;
 }
 
+RenderConfig configure_run(const std::string& integrator, const std::string& filter, const OptionValues& given, uint64_t seed,
+                           int threads, const std::string& device) {
+  RenderConfig config = configure_render(integrator, filter, given);
+  config.seed = seed;
+  config.threads = threads;
+  config.device = device;
+  check_device(config.device, config.integrator, config.filter.name);
+  return config;
+}
+
 }  // namespace pathspace

@@ -47,6 +47,11 @@ RenderConfig with_filter(RenderConfig config, std::string filter, FilterSettings
 // (naming the integrators or filters it does belong to), or a value is out of range.
 RenderConfig configure_render(const std::string& integrator, const std::string& filter, const OptionValues& given);
 
+// configure_render's config run with `seed`, `threads` and `device`, which must run the integrator
+// and the filter (check_device). Throws OptionError. What the CLI, the viewer and Python render with.
+RenderConfig configure_run(const std::string& integrator, const std::string& filter, const OptionValues& given, uint64_t seed,
+                           int threads, const std::string& device);
+
 // Throws OptionError unless the integrator exists and composes with the filter.
 void check_composition(const std::string& integrator, const std::string& filter);
 
