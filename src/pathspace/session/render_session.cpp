@@ -87,6 +87,10 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
   const bool counted = limit.passes > 0;
 
   RunResult result;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (aborted_) throw Error("the session's last pass was aborted: begin a frame before rendering again");
+  }
   const PathCounters at_start = counters_;
   while (true) {
     if (cancel_.exchange(false)) {
@@ -101,7 +105,12 @@ RunResult RenderSession::run(const RunLimit& limit, const std::function<void(con
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto pass_start = std::chrono::steady_clock::now();
-      render_tracked_pass_locked(passes_, film_);
+      if (!pass_work_.run([&] { render_tracked_pass_locked(passes_, film_); })) {
+        running_pass_ = 0;
+        aborted_ = result.aborted = result.cancelled = true;
+        cancel_.store(false);
+        break;
+      }
       ++passes_;
       wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - pass_start).count();
       p.session_passes = passes_;
@@ -134,6 +143,16 @@ void RenderSession::render_tracked_pass_locked(uint32_t pass, Film& film) {
 }
 
 void RenderSession::cancel() { cancel_.store(true); }
+
+void RenderSession::abort() {
+  cancel_.store(true);
+  if (!distributed()) pass_work_.cancel();
+}
+
+bool RenderSession::aborted() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return aborted_;
+}
 
 void RenderSession::request_gather() { gather_requested_.store(true); }
 
@@ -179,8 +198,14 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   }
   RenderConfig frame_config = config_;
   frame_config.seed = frame_seed(config_.seed, frame);
-  // The new integrator takes the filter over before the old one (and its scene) goes.
-  integrator_ = create_integrator(*scene, *next_accel, frame_config, integrator_->carried_filter());
+  // The new integrator takes the filter over before the old one (and its scene) goes. After an
+  // aborted pass the filter starts afresh (abort()), but with the old one's buffers: a new vertex
+  // buffer is hundreds of MB to fault in, every time the camera of a viewer moves.
+  const std::shared_ptr<PathSpaceFilter> carried = integrator_->carried_filter();
+  integrator_ = create_integrator(*scene, *next_accel, frame_config, aborted_ ? nullptr : carried);
+  if (aborted_ && carried)
+    if (const std::shared_ptr<PathSpaceFilter> fresh = integrator_->carried_filter()) fresh->workspace() = std::move(carried->workspace());
+  aborted_ = false;
   scene_ = std::move(scene);
   accel_ = std::move(next_accel);
   film_.clear();  // same size (checked above): its memory is reused, not allocated and faulted in again
@@ -256,6 +281,7 @@ void apply_output_color_matrix(const std::array<float, 9>& m, Image* mean, Image
 
 RenderSnapshot RenderSession::snapshot(SnapshotImages images) const {
   const ReaderLock lock(*this);
+  if (aborted_) throw Error("the session's last pass was aborted: it has no image until a frame begins");
   RenderSnapshot snap;
   snap.mean = film_.mean();
   if (images == SnapshotImages::mean_and_variance) snap.variance = film_.variance_of_mean();
@@ -268,6 +294,7 @@ RenderSnapshot RenderSession::snapshot(SnapshotImages images) const {
 SessionState RenderSession::save_state() const {
   const ReaderLock lock(*this);
   if (in_sequence_) throw Error("the state of an animation's frame cannot be saved (its filter's table spans frames)");
+  if (aborted_) throw Error("the session's last pass was aborted: it has no state to save");
   StateWriter out;
   // The film's sums, squares and counts are nearly all of it (plus a splat film for LT, BPT, PCLT).
   out.reserve(film_.pixel_count() * (2 * 3 * sizeof(double) + sizeof(uint32_t)) * 2 + (size_t(1) << 16));

@@ -17,6 +17,7 @@
 #include "pathspace/film/film.h"
 #include "pathspace/film/film_exchange.h"
 #include "pathspace/film/image.h"
+#include "pathspace/parallel/cancellable_work.h"
 #include "pathspace/parallel/process_group.h"
 #include "pathspace/session/render_config.h"
 #include "pathspace/stats/path_counters.h"
@@ -28,8 +29,8 @@ class Accel;
 class Integrator;
 class Scene;
 
-// How long one run() goes on. Passes are never interrupted: cancel() and the time budget take
-// effect between passes.
+// How long one run() goes on. cancel() and the time budget take effect between passes; only
+// abort() interrupts one.
 struct RunLimit {
   uint32_t passes = 0;   // > 0: this many passes
   double seconds = 0.0;  // > 0: whole passes until this much wall time has passed (at least one)
@@ -104,6 +105,7 @@ struct RunResult {
   uint32_t passes = 0;  // run in this call
   double wall_s = 0.0;
   bool cancelled = false;
+  bool aborted = false;  // abort() cut the last pass short: it was discarded (not in `passes`)
 };
 
 // The serializable state of a session: bytes of base/state_archive.h (session header, film sums,
@@ -140,6 +142,15 @@ class RenderSession {
   // Thread-safe. The current pass finishes, then run() returns. A cancel() while no run is going on
   // stops the next run before its first pass.
   void cancel();
+  // Thread-safe. Like cancel(), but the pass in flight also stops early (its loops skip what they
+  // have not started: parallel/cancellable_work.h), for a viewer whose camera moved. The pass is
+  // discarded, and the film with it: until begin_frame() the session has no image, so run(),
+  // snapshot() and save_state() throw, and begin_frame() starts the filter afresh instead of
+  // carrying its table, which the cut pass may have left half updated. A distributed run, whose
+  // ranks must agree on every pass, treats abort() as cancel().
+  void abort();
+  // An aborted pass left the film incomplete (abort()); begin_frame() clears it.
+  bool aborted() const;
   // Thread-safe. A distributed run gathers the film (and what Integrator::hand_over sums) onto rank
   // 0 at the next round boundary, when any rank asked, then calls on_progress with `gathered`: the
   // periodic writes of rank 0 (the CLI's --write-every, --checkpoint-every). Without a group the
@@ -217,6 +228,8 @@ class RenderSession {
   mutable std::mutex mutex_;  // held while a pass renders and while the film is read
   mutable std::atomic<int> readers_waiting_{0};
   std::atomic<bool> cancel_{false};
+  CancellableWork pass_work_;  // the pass in flight, for abort()
+  bool aborted_ = false;       // under mutex_: see abort()
   std::atomic<bool> gather_requested_{false};
   // Distributed rendering (join): the group, the slice exchange, this rank's pass of a round, and on
   // rank 0 after a run every rank's statistics.
