@@ -8,7 +8,7 @@ Prints the medians and the ratio delivered / alone; the viewer's own passes per 
 serving costs the renderer).
 
     bench/viewer_rate.py --pathspace build/apps/pathspace/pathspace [--resolution 640x360]
-        [--seconds 5] [--rounds 3] [--moves 10] [-- extra render options]
+        [--seconds 5] [--rounds 3] [--moves 10] [--preview 2] [-- extra render options]
 Default options: cornell-box --filter hashed --temporal integrate.
 """
 import argparse
@@ -37,7 +37,8 @@ def renderer_alone(args, extra):
 
 
 def viewer_round(args, extra, driver, moves):
-    proc = subprocess.Popen([args.pathspace, "view", "cornell-box", "-r", args.resolution] + extra, stdout=subprocess.PIPE,
+    view = [args.pathspace, "view", "cornell-box", "-r", args.resolution, "--preview", str(args.preview)]
+    proc = subprocess.Popen(view + extra, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True)
     url = re.search(r"open (http://\S+)", proc.stdout.readline()).group(1)
     try:
@@ -75,6 +76,7 @@ def main():
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--moves", type=int, default=10)
+    parser.add_argument("--preview", type=int, default=2, help="the viewer's --preview (1: off)")
     parser.add_argument("extra", nargs="*", help="render options (after --)")
     args = parser.parse_args()
     extra = args.extra or ["--filter", "hashed", "--temporal", "integrate"]
@@ -90,12 +92,13 @@ def main():
     finally:
         driver.quit()
     med = statistics.median
-    print(f"{args.resolution} {' '.join(extra)}, {args.rounds} rounds of {args.seconds} s")
+    print(f"{args.resolution} {' '.join(extra)}, --preview {args.preview}, {args.rounds} rounds of {args.seconds} s")
     print(f"renderer alone:        {med(alone):.2f} passes/s  {[round(x, 2) for x in alone]}")
     print(f"frames to the page:    {med(delivered):.2f} per s   {[round(x, 2) for x in delivered]}")
     print(f"renderer while served: {med(serving):.2f} passes/s  {[round(x, 2) for x in serving]}")
     print(f"delivered / alone:     {med(delivered) / med(alone):.3f}")
     print(f"key to new view:       median {med(latencies):.0f} ms, max {max(latencies):.0f} ms over {len(latencies)} moves")
+    print(f"each move (ms):        {[round(x) for x in latencies]}")
     return 0
 
 

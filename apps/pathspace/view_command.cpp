@@ -89,6 +89,14 @@ viewer::FlightRecorder flight_recorder(const std::string& folder, const std::str
   return r;
 }
 
+// `scene` seen at 1/scale of its resolution in each axis, the same field of view.
+std::shared_ptr<const Scene> preview_scene(const Scene& scene, int scale) {
+  auto small = std::make_shared<Scene>(scene);
+  small->camera.width = std::max(1, scene.camera.width / scale);
+  small->camera.height = std::max(1, scene.camera.height / scale);
+  return small;
+}
+
 // 128 random bits as hex: the token a viewer bound beyond the loopback demands.
 std::string random_token() {
   std::random_device device;
@@ -109,6 +117,10 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
       ->check(checked_integer("max-spp", 0, 1 << 24));
   cmd->add_option("--reference", o->reference,
                   "An image of the render's size (.exr, .pfm, ...) to measure it against live: relMSE, block relMSE, FLIP, error map");
+  cmd->add_option("--preview", o->preview,
+                  "Show each new view of a moving camera first at 1/N of the resolution (one pass, scaled up); 1: off")
+      ->capture_default_str()
+      ->check(checked_integer("preview", 1, 16));
   cmd->add_option("--out-dir", o->out_dir, "Folder of the images the page saves (created when needed)")->capture_default_str();
   cmd->add_option("-j,--threads", o->render.threads, "Worker threads; 0 = all cores")->check(checked_integer("threads", 0, 4096));
   o->render.registry.add_to(cmd);
@@ -139,7 +151,7 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
       home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device},
       frame_saver(o.out_dir, prepared.display_name, saved_inputs), reference,
       flight_recorder(o.out_dir, prepared.display_name, saved_inputs));
-  live->set_session(session.get());
+  live->set_sessions({session.get()});
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());
   fmt::print("pathspace view: {} ({}x{}, {}): open {}\n", prepared.display_name, home.width, home.height, config.integrator, server.url());
@@ -149,7 +161,9 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   InterruptHandler interrupt(true, "\npathspace view: interrupted: finishing the pass in flight, then stopping\n");
   interrupt.watch(session.get());
   uint64_t view = 0;
-  std::unique_ptr<RenderSession> right;  // the split screen's right half, or null
+  std::unique_ptr<RenderSession> right;    // the split screen's right half, or null
+  std::unique_ptr<RenderSession> preview;  // the view at 1/--preview of the resolution, made at the first move
+  RenderConfig preview_config = config;
   while (interrupt.signal() == 0) {
     const std::optional<PerspectiveCamera> camera = live->take_camera();
     if (camera) {
@@ -157,21 +171,40 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
       moved->camera = *camera;
       scene = moved;
     }
-    if (std::optional<RenderConfig> changed = live->take_config()) {
+    std::optional<RenderConfig> changed = live->take_config();
+    if (changed) {
+      preview_config = *changed;
+      preview.reset();
+    }
+    // A move is answered by a preview first, before the full view restarts: one pass at a fraction
+    // of the pixels; while the camera moves, the only frames shown (the next move aborts the full
+    // view's pass).
+    if (camera && preview && !right) {
+      preview->begin_frame(preview_scene(*scene, o.preview), accel, view + 1);
+      if (preview->run(RunLimit::for_passes(1)).passes > 0) {
+        RenderSnapshot shown = preview->snapshot(SnapshotImages::mean);
+        viewer::LiveView::scale_up(&shown, home.width, home.height);
+        live->publish(std::move(shown), view + 1, o.preview);
+      }
+    }
+    bool sessions_changed = false;
+    if (changed) {
       // New options: a new session on the same scene and acceleration structure.
-      auto next = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
-      live->set_session(next.get());
-      interrupt.watch(next.get());
-      session = std::move(next);
+      session = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
+      interrupt.watch(session.get());
+      sessions_changed = true;
       ++view;
-    } else if (camera) {
+    } else if (camera || session->aborted()) {
       session->begin_frame(scene, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
     }
     if (std::optional<std::optional<RenderConfig>> split = live->take_split()) {
       right = *split ? std::make_unique<RenderSession>(scene, accel, std::move(**split)) : nullptr;
-    } else if (right && camera) {
+      sessions_changed = true;
+    } else if (right && (camera || right->aborted())) {
       right->begin_frame(scene, accel, view);
     }
+    if (sessions_changed) live->set_sessions(right ? std::vector<RenderSession*>{session.get(), right.get()}
+                                                   : std::vector<RenderSession*>{session.get()});
     const auto shown = [&] {
       RenderSnapshot left = session->snapshot(SnapshotImages::mean);
       if (right) viewer::LiveView::compose_split(&left, right->snapshot(SnapshotImages::mean));
@@ -183,7 +216,13 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     }
     const RunResult r = session->run(RunLimit::for_passes(1));
     if (right && r.passes > 0) right->run(RunLimit::for_passes(1));
-    if (r.passes > 0) live->publish(shown(), view);
+    if (r.passes > 0 && !(right && right->aborted())) live->publish(shown(), view);
+    // Made, with a first pass, after the view's first pass, not at the move it serves: a new
+    // session's first pass takes a few hundred ms more than the next (the filter's table and buffers).
+    if (!preview && o.preview > 1 && r.passes > 0) {
+      preview = std::make_unique<RenderSession>(preview_scene(*scene, o.preview), accel, preview_config);
+      preview->run(RunLimit::for_passes(1));
+    }
   }
   return interrupt.exit_code();
 }

@@ -34,9 +34,9 @@ def check(condition, what):
     return condition
 
 
-def start_viewer(pathspace, extra):
+def start_viewer(pathspace, extra, resolution="64x48"):
     """The viewer process and the URL it printed."""
-    proc = subprocess.Popen([pathspace, "view", "cornell-box", "-r", "64x48", "-j", "1"] + extra, stdout=subprocess.PIPE,
+    proc = subprocess.Popen([pathspace, "view", "cornell-box", "-r", resolution, "-j", "1"] + extra, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True)
     line = proc.stdout.readline()
     match = re.search(r"open (http://\S+)", line)
@@ -92,6 +92,30 @@ ws.onmessage = e => {
 };
 ws.onerror = () => done(answers.concat(['socket error']));
 setTimeout(() => done(answers.concat(['timeout'])), 20000);
+"""
+
+
+# A client whose frame request waits (the viewer idles after --max-spp), then a camera move: the
+# move must be read at once, not after a frame that never comes, and its view must arrive, first as
+# a preview. Returns the (view, preview) of the frames received within 3 s of the move.
+PENDING_FRAME = """
+const done = arguments[arguments.length - 1];
+const ws = new WebSocket('ws://' + location.host + '/ws' + location.search);
+ws.binaryType = 'arraybuffer';
+const seen = [];
+let moved = false;
+ws.onopen = () => ws.send('{"cmd":"frame"}');
+ws.onmessage = e => {
+  if (typeof e.data === 'string') {
+    const m = JSON.parse(e.data);
+    if (m.stats && moved) seen.push([m.stats.view, m.stats.preview]);
+    return;
+  }
+  ws.send('{"cmd":"frame"}');
+  if (!moved) setTimeout(() => { moved = true; ws.send('{"cmd":"move","forward":1}'); setTimeout(() => { ws.close(); done(seen); }, 3000); }, 500);
+};
+ws.onerror = () => done(['socket error']);
+setTimeout(() => done(seen.concat(['timeout'])), 20000);
 """
 
 
@@ -241,6 +265,21 @@ def main():
         driver.quit()
         measured.send_signal(signal.SIGTERM)
         measured.wait(timeout=30)
+
+    # A move while a frame request waits, at a size where a pass takes far longer than its preview.
+    idle, idle_url = start_viewer(args.pathspace, ["--filter", "hashed", "--max-spp", "2"], resolution="640x360")
+    driver = make_driver(window="800,600", script_timeout=30)
+    try:
+        driver.get(idle_url)
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('2 spp')"), "the viewer idles at --max-spp")
+        seen = driver.execute_async_script(PENDING_FRAME)
+        print("frames after the move:", seen)
+        check(len(seen) >= 2 and seen[0] == [1, 2], "a move is read while a frame request waits, and answered by a preview first")
+        check([1, 1] in seen, "the full view follows its preview")
+    finally:
+        driver.quit()
+        idle.send_signal(signal.SIGTERM)
+        idle.wait(timeout=30)
 
     guarded, guarded_url = start_viewer(args.pathspace, ["--listen", "127.0.0.1"])
     try:

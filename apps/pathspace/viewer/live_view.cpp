@@ -165,15 +165,16 @@ std::optional<std::string> LiveView::apply(const Command& command) {
       reply = set_choice(std::move(next));
       restart = true;
     }
-    if (restart && session_) session_->cancel();  // the pass in flight shows the old view: end it now
+    if (restart)
+      for (RenderSession* session : sessions_) session->abort();  // the pass in flight shows the old view: stop it now
   }
   changed_.notify_all();
   return reply;
 }
 
-void LiveView::set_session(RenderSession* session) {
+void LiveView::set_sessions(std::vector<RenderSession*> sessions) {
   std::lock_guard<std::mutex> lock(mutex_);
-  session_ = session;
+  sessions_ = std::move(sessions);
 }
 
 std::optional<PerspectiveCamera> LiveView::take_camera() {
@@ -199,6 +200,24 @@ void LiveView::compose_split(RenderSnapshot* left, const RenderSnapshot& right) 
         right.mean.pixels[size_t(y) * size_t(image.width) + size_t(x)];
 }
 
+namespace {
+
+Image scaled_up(const Image& small, int width, int height) {
+  Image image(width, height);
+  for (int y = 0; y < height; ++y) {
+    const size_t row = size_t(y * small.height / height) * size_t(small.width);
+    for (int x = 0; x < width; ++x) image.pixels[size_t(y) * size_t(width) + size_t(x)] = small.pixels[row + size_t(x * small.width / width)];
+  }
+  return image;
+}
+
+}  // namespace
+
+void LiveView::scale_up(RenderSnapshot* preview, int width, int height) {
+  preview->mean = scaled_up(preview->mean, width, height);
+  for (NamedImage& aov : preview->aovs) aov.image = scaled_up(aov.image, width, height);
+}
+
 std::optional<RenderConfig> LiveView::take_config() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::optional<RenderConfig> config = std::move(config_changed_);
@@ -207,7 +226,7 @@ std::optional<RenderConfig> LiveView::take_config() {
   return config;
 }
 
-void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
+void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
   double stops;
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
@@ -229,7 +248,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
   // at most once a second; the error map is one more image to show.
   nlohmann::ordered_json metrics = nullptr;
   const double view_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (reference_) {
+  if (reference_ && preview == 1) {
     const ImageError e = image_error(snapshot.mean, *reference_);
     const BlockError b = block_error(snapshot.mean, *reference_);
     const auto now = std::chrono::steady_clock::now();
@@ -261,6 +280,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
                                       {"filter", stats.filter},
                                       {"spp", stats.spp},
                                       {"view", view},
+                                      {"preview", preview},
                                       {"passes_per_second", seconds > 0.0 ? double(stats.spp) / seconds : 0.0},
                                       {"rays", stats.rays},
                                       {"details", statistics_json(stats.details)},
@@ -271,7 +291,8 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view) {
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::string label = fmt::format("view{}-{}spp{}", view, stats.spp, shown_found == "image" ? "" : "-" + shown_found);
+    const std::string label = fmt::format("view{}-{}spp{}{}", view, stats.spp, preview > 1 ? "-preview" : "",
+                                          shown_found == "image" ? "" : "-" + shown_found);
     latest_ = Pending{latest_.sequence + 1, std::move(frame_image), float(std::exp2(stops)), j.dump(), label};
   }
   frame_ready_.notify_all();

@@ -7,6 +7,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <vector>
 
 #include "pathspace/film/image.h"
 #include "pathspace/options/option_values.h"
@@ -53,9 +54,10 @@ class LiveView final : public ViewerBackend {
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
   std::optional<std::string> apply(const Command& command) override;
 
-  // For the render loop: the session now running (cancelled when the camera or the options change,
-  // so that the pass in flight ends and the loop restarts the view).
-  void set_session(RenderSession* session);
+  // For the render loop: the sessions now running (the view, and the split screen's right half when
+  // on). A change of the camera or the options aborts them (RenderSession::abort), so that the pass
+  // in flight stops at once and the loop restarts the view.
+  void set_sessions(std::vector<RenderSession*> sessions);
   // The camera to render when it changed since the last call.
   std::optional<PerspectiveCamera> take_camera();
   // The configuration to render with when the options changed since the last call.
@@ -65,10 +67,13 @@ class LiveView final : public ViewerBackend {
   std::optional<std::optional<RenderConfig>> take_split();
   // Makes the snapshot's mean the left half and `right`'s the right half of the shown image.
   static void compose_split(RenderSnapshot* left, const RenderSnapshot& right);
+  // Scales a preview's images (mean and debug images) up to width x height, each pixel repeated.
+  static void scale_up(RenderSnapshot* preview, int width, int height);
   // Makes the shown image of the snapshot (the film's mean, or a debug image) the next frame. It is
   // encoded (display exposure applied) by the first client that asks for it, on its own thread,
-  // so that the render thread only copies it.
-  void publish(RenderSnapshot snapshot, uint64_t view);
+  // so that the render thread only copies it. `preview` > 1: the snapshot is a preview rendered at
+  // 1/preview of the resolution and scaled up (no metrics against the reference).
+  void publish(RenderSnapshot snapshot, uint64_t view, int preview = 1);
   // Waits until the camera, the options or the exposure change, or `wait` passes (an idle loop);
   // true when the exposure changed (the frame is to be shown again).
   bool wait_for_change(std::chrono::milliseconds wait);
@@ -88,7 +93,7 @@ class LiveView final : public ViewerBackend {
   std::chrono::steady_clock::time_point last_flip_time_{};
   mutable std::mutex mutex_;
   std::condition_variable frame_ready_, changed_;
-  RenderSession* session_ = nullptr;
+  std::vector<RenderSession*> sessions_;
   PerspectiveCamera camera_;
   bool camera_changed_ = false;
   RenderChoice choice_;

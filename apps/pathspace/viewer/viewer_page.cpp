@@ -114,6 +114,7 @@ ws.onmessage = e => {
     if (m.stats) {
       stats = m.stats;
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
+      if (stats.preview > 1) status.textContent += `, preview at 1/${stats.preview}`;
       document.getElementById("cli").value = stats.camera_options;
       const show = document.getElementById("show");
       if (Array.from(show.options).map(o => o.value).join() !== stats.images.join()) {

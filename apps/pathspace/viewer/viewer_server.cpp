@@ -1,5 +1,6 @@
 #include "viewer/viewer_server.h"
 
+#include <poll.h>
 #include <sys/socket.h>
 
 #include <atomic>
@@ -124,35 +125,49 @@ struct ViewerServer::Impl {
     socket.shutdown(tcp::socket::shutdown_send, ec);
   }
 
+  // Serves one page: its commands, and each frame it asks for once there is a newer one. While a
+  // frame is wanted, the wait polls the socket (also for its end), so that a command (a camera move) is read and
+  // applied at once rather than after the frame in flight, which can be a whole pass away. A command
+  // that arrived in the same read as the frame request sits in Beast's buffer, not the socket's: it
+  // is read after that frame.
   void talk(websocket::stream<tcp::socket>& ws) {
     uint64_t sent = 0;
+    bool frame_wanted = false;
     while (!stopping) {
+      if (frame_wanted) {
+        if (std::optional<Frame> frame = backend->next_frame(sent, std::chrono::milliseconds(5))) {
+          frame_wanted = false;
+          sent = frame->sequence;
+          send_text(ws, frame->stats_json);
+          ws.binary(true);
+          ws.write(net::buffer(*frame->png));
+          continue;
+        }
+        if (!readable(ws.next_layer().native_handle())) continue;
+      }
       beast::flat_buffer buffer;
       ws.read(buffer);
       if (!ws.got_text()) {
         send_text(ws, error_message("commands are text messages"));
         continue;
       }
-      Command command;
-      std::optional<std::string> reply;
       try {
-        command = parse_command(beast::buffers_to_string(buffer.data()));
-        if (!std::holds_alternative<FrameRequest>(command)) reply = backend->apply(command);
+        const Command command = parse_command(beast::buffers_to_string(buffer.data()));
+        if (std::holds_alternative<FrameRequest>(command)) {
+          frame_wanted = true;
+        } else if (const std::optional<std::string> reply = backend->apply(command)) {
+          send_text(ws, *reply);
+        }
       } catch (const Error& e) {
         send_text(ws, error_message(e.what()));
-        continue;
       }
-      if (reply) send_text(ws, *reply);
-      if (!std::holds_alternative<FrameRequest>(command)) continue;
-      std::optional<Frame> frame;
-      while (!stopping && !(frame = backend->next_frame(sent, std::chrono::milliseconds(200)))) {
-      }
-      if (!frame) break;
-      sent = frame->sequence;
-      send_text(ws, frame->stats_json);
-      ws.binary(true);
-      ws.write(net::buffer(*frame->png));
     }
+  }
+
+  // Data or the end of the stream waits on the socket (poll(2) without waiting).
+  static bool readable(int fd) {
+    pollfd p{fd, POLLIN, 0};
+    return ::poll(&p, 1, 0) > 0;
   }
 
   static void send_text(websocket::stream<tcp::socket>& ws, const std::string& text) {
