@@ -187,24 +187,31 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
         live->publish(std::move(shown), view + 1, o.preview);
       }
     }
-    bool sessions_changed = false;
+    // New sessions are handed to the page (LiveView::set_sessions) before the ones they replace go.
+    std::unique_ptr<RenderSession> next_session, next_right;
+    std::optional<std::optional<RenderConfig>> split = live->take_split();
     if (changed) {
       // New options: a new session on the same scene and acceleration structure.
-      session = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
-      interrupt.watch(session.get());
-      sessions_changed = true;
+      next_session = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
       ++view;
     } else if (camera || session->aborted()) {
       session->begin_frame(scene, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
     }
-    if (std::optional<std::optional<RenderConfig>> split = live->take_split()) {
-      right = *split ? std::make_unique<RenderSession>(scene, accel, std::move(**split)) : nullptr;
-      sessions_changed = true;
-    } else if (right && (camera || right->aborted())) {
+    if (split && *split) {
+      next_right = std::make_unique<RenderSession>(scene, accel, std::move(**split));
+    } else if (right && !split && (camera || right->aborted())) {
       right->begin_frame(scene, accel, view);
     }
-    if (sessions_changed) live->set_sessions(right ? std::vector<RenderSession*>{session.get(), right.get()}
-                                                   : std::vector<RenderSession*>{session.get()});
+    if (next_session || split) {
+      RenderSession* left = next_session ? next_session.get() : session.get();
+      RenderSession* other = split ? next_right.get() : right.get();
+      live->set_sessions(other ? std::vector<RenderSession*>{left, other} : std::vector<RenderSession*>{left});
+      if (next_session) {
+        interrupt.watch(next_session.get());
+        session = std::move(next_session);
+      }
+      if (split) right = std::move(next_right);
+    }
     const auto shown = [&] {
       RenderSnapshot left = session->snapshot(SnapshotImages::mean);
       if (right) viewer::LiveView::compose_split(&left, right->snapshot(SnapshotImages::mean));

@@ -217,11 +217,26 @@ def main():
         check(changed_from(driver, before) is not None, "the voxel view shows another image")
         driver.save_screenshot(os.path.join(shots, "viewer-debug-voxel.png"))
         Select(driver.find_element("id", "show")).select_by_value("image")
-        Select(driver.find_element("id", "split")).select_by_value("none")
-        check(wait_for(driver, "document.getElementById('status').textContent.includes('right half: filter none')"),
+        Select(driver.find_element("id", "split")).select_by_value("filter:none")
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('right half: pt, filter none')"),
               "the split screen shows the unfiltered render beside the filtered one")
         driver.save_screenshot(os.path.join(shots, "viewer-split.png"))
+        Select(driver.find_element("id", "split")).select_by_value("integrator:bpt")
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('right half: bpt, filter none')"),
+              "the split screen shows another integrator beside the view's")
+        image = driver.find_element("id", "frame")
+        width = image.size["width"]
+        ActionChains(driver).move_to_element_with_offset(image, width // 4, 0).click().perform()
+        inspected = wait_for(driver, "document.getElementById('pixel').textContent.includes('right half') && "
+                                     "document.getElementById('pixel').textContent")
+        check(inspected and "paths" in str(inspected), f"a click on the right half inspects the other integrator's pixel: {inspected}")
+        driver.save_screenshot(os.path.join(shots, "viewer-split-integrators.png"))
         Select(driver.find_element("id", "split")).select_by_value("off")
+        ActionChains(driver).move_to_element_with_offset(image, -width // 4, 0).click().perform()
+        inspected = wait_for(driver, "!document.getElementById('pixel').textContent.includes('half') && "
+                                     "document.getElementById('pixel').textContent")
+        check(inspected and re.search(r"pixel \(1[56], \d+\): .* ± .*, \d+ paths", str(inspected)),
+              f"a click inspects the pixel under the pointer: {inspected}")
 
         bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
                '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']
@@ -260,6 +275,11 @@ def main():
         check(wait_for(driver, "!document.getElementById('plot').hidden"), "the metrics are plotted")
         check(wait_for(driver, "Array.from(document.getElementById('show').options).some(o => o.value === 'error')"),
               "the error map can be shown")
+        image = driver.find_element("id", "frame")
+        ActionChains(driver).move_to_element_with_offset(image, 0, 0).click().perform()
+        inspected = wait_for(driver, "document.getElementById('pixel').textContent.includes('reference') && "
+                                     "document.getElementById('pixel').textContent")
+        check(inspected and "luminance error" in str(inspected), f"the inspector shows the reference's pixel: {inspected}")
         driver.save_screenshot(os.path.join(shots, "viewer-reference.png"))
     finally:
         driver.quit()

@@ -41,6 +41,16 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_TRUE(std::get<Record>(parse_command(R"({"cmd":"record","on":true})")).on);
   EXPECT_NE(error_of(R"({"cmd":"record","on":1})").find("true or false"), std::string::npos);
   EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).filter, "hashed");
+  EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).integrator, "");
+  EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","integrator":"bpt","filter":"none"})")).integrator, "bpt");
+  const Inspect inspect = std::get<Inspect>(parse_command(R"({"cmd":"inspect","x":12,"y":0})"));
+  EXPECT_EQ(inspect.x, 12);
+  EXPECT_EQ(inspect.y, 0);
+  EXPECT_NE(error_of(R"({"cmd":"inspect","x":1.5,"y":0})").find("whole number"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"inspect","x":-1,"y":0})").find("whole number"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"inspect","x":70000,"y":0})").find("within"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"inspect","x":3})").find("\"y\" is missing"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"split","integrator":"--seed","filter":"none"})").find("option name"), std::string::npos);
   const SetOption set = std::get<SetOption>(parse_command(R"({"cmd":"set","name":"max-depth","value":"5"})"));
   EXPECT_EQ(set.name, "max-depth");
   EXPECT_EQ(set.value, "5");
@@ -95,7 +105,7 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 13) << "the valid seeds (every command) parse";
+  EXPECT_GE(parsed, 15) << "the valid seeds (every command) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

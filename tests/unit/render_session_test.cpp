@@ -8,7 +8,8 @@
 //    before run() stops that run before its first pass;
 //  - snapshot() from another thread during a run shows whole passes only: the snapshot of k passes
 //    equals a separate k-pass render bit for bit;
-//  - a statistic that was not reported is an error to ask for (Statistics::at).
+//  - a statistic that was not reported is an error to ask for (Statistics::at);
+//  - pixel(x, y) is the snapshot's pixel bit for bit.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -502,6 +503,29 @@ TEST(SessionSnapshot, AppliesTheScenesOutputColorMatrix) {
     EXPECT_FLOAT_EQ(sb.mean.pixels[i].b, 0.05f * c.r + 1.2f * c.b);
     EXPECT_FLOAT_EQ(sb.variance.pixels[i].r, 1.1f * 1.1f * v.r + 0.1f * 0.1f * v.g);
   }
+}
+
+}  // namespace
+}  // namespace pathspace
+
+namespace pathspace {
+namespace {
+
+// pixel(x, y), the viewer's pixel inspector: the snapshot's mean and variance at that pixel, bit for
+// bit, and the pass count as its samples; a pixel outside the image is an error.
+TEST(SessionPixel, IsTheSnapshotsPixel) {
+  auto session = make_session(threaded(make_render_config("pt", PtSettings{}, kSeed)));
+  session->run(RunLimit::for_passes(5));
+  const RenderSnapshot snap = session->snapshot();
+  for (const auto& [x, y] : {std::pair{0, 0}, std::pair{17, 9}, std::pair{kSize - 1, kSize - 1}}) {
+    const PixelStats p = session->pixel(x, y);
+    const size_t i = size_t(y) * kSize + size_t(x);
+    EXPECT_EQ(std::memcmp(&p.mean, &snap.mean.pixels[i], sizeof(Rgb)), 0);
+    EXPECT_EQ(std::memcmp(&p.variance_of_mean, &snap.variance.pixels[i], sizeof(Rgb)), 0);
+    EXPECT_EQ(p.samples, 5u);
+  }
+  EXPECT_THROW(session->pixel(kSize, 0), Error);
+  EXPECT_THROW(session->pixel(0, -1), Error);
 }
 
 }  // namespace

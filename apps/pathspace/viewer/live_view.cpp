@@ -126,20 +126,23 @@ std::optional<std::string> LiveView::apply(const Command& command) {
       camera_changed_ = restart = true;
     } else if (const auto* split = std::get_if<Split>(&command)) {
       if (split->filter == "off") {
-        split_filter_.clear();
+        split_label_.clear();
         split_changed_ = std::optional<RenderConfig>();
       } else {
-        // The main options that apply to the integrator with the other filter.
+        // The view's options that apply to the other integrator and filter.
         RenderChoice other = choice_;
+        if (!split->integrator.empty()) other.integrator = split->integrator;
         other.filter = split->filter;
         other.given = OptionValues();
-        for (const CatalogOption& o : options_of(choice_.integrator, split->filter))
+        for (const CatalogOption& o : options_of(other.integrator, other.filter))
           if (const std::string* v = choice_.given.find(o.spec.name)) other.given.set(o.spec.name, *v);
         RenderConfig config = configured(other);
-        split_filter_ = split->filter;
+        split_label_ = fmt::format("{}, filter {}", other.integrator, other.filter);
         split_changed_ = std::optional<RenderConfig>(std::move(config));
       }
       restart = true;
+    } else if (const auto* inspect = std::get_if<Inspect>(&command)) {
+      reply = inspect_pixel(*inspect);  // under the lock: the render loop replaces no session meanwhile
     } else if (const auto* show = std::get_if<Show>(&command)) {
       shown_ = show->image;
       exposure_changed_ = true;  // shown again at once, also when the render idles
@@ -170,6 +173,36 @@ std::optional<std::string> LiveView::apply(const Command& command) {
   }
   changed_.notify_all();
   return reply;
+}
+
+std::string LiveView::inspect_pixel(const Inspect& at) const {
+  if (sessions_.empty()) throw Error("no render to inspect yet");
+  const int width = home_.width, height = home_.height;
+  if (at.x >= width || at.y >= height) throw Error(fmt::format("pixel ({}, {}) is outside the {}x{} image", at.x, at.y, width, height));
+  const bool right = sessions_.size() > 1 && at.x >= width / 2;  // compose_split's halves
+  PixelStats p;
+  try {
+    p = sessions_[right ? 1 : 0]->pixel(at.x, at.y);
+  } catch (const Error&) {
+    throw Error("the view is restarting: inspect again");  // its pass was just aborted
+  }
+  const auto rgb = [](const Rgb& c) { return nlohmann::ordered_json::array({c.r, c.g, c.b}); };
+  const Rgb error(std::sqrt(p.variance_of_mean.r), std::sqrt(p.variance_of_mean.g), std::sqrt(p.variance_of_mean.b));
+  nlohmann::ordered_json j = {{"x", at.x},
+                              {"y", at.y},
+                              {"half", sessions_.size() > 1 ? nlohmann::ordered_json(right ? "right" : "left") : nlohmann::ordered_json(nullptr)},
+                              {"mean", rgb(p.mean)},
+                              {"std_error", rgb(error)},
+                              {"samples", p.samples},
+                              {"luminance", luminance(p.mean)},
+                              {"reference", nullptr},
+                              {"rel_error", nullptr}};
+  if (reference_) {
+    const Rgb r = reference_->at(at.x, at.y);
+    j["reference"] = rgb(r);
+    j["rel_error"] = (luminance(p.mean) - luminance(r)) / std::max(luminance(r), 1e-6f);
+  }
+  return nlohmann::ordered_json{{"pixel", j}}.dump();
 }
 
 void LiveView::set_sessions(std::vector<RenderSession*> sessions) {
@@ -237,7 +270,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
     recording = recording_;
     camera = camera_;
     shown = shown_;
-    split = split_filter_;
+    split = split_label_;
     stops = exposure_stops_;
     exposure_changed_ = false;
     start = view_start_;

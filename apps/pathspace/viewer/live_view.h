@@ -56,7 +56,8 @@ class LiveView final : public ViewerBackend {
 
   // For the render loop: the sessions now running (the view, and the split screen's right half when
   // on). A change of the camera or the options aborts them (RenderSession::abort), so that the pass
-  // in flight stops at once and the loop restarts the view.
+  // in flight stops at once and the loop restarts the view; the pixel inspector reads them. Call it
+  // before a session in the list is destroyed.
   void set_sessions(std::vector<RenderSession*> sessions);
   // The camera to render when it changed since the last call.
   std::optional<PerspectiveCamera> take_camera();
@@ -81,6 +82,7 @@ class LiveView final : public ViewerBackend {
  private:
   std::string options_json() const;       // under mutex_
   std::string set_choice(RenderChoice next);  // under mutex_: configures it or throws
+  std::string inspect_pixel(const Inspect& at) const;  // under mutex_: the pixel's reply, or throws
 
   const PerspectiveCamera home_;
   const float step_;
@@ -98,7 +100,7 @@ class LiveView final : public ViewerBackend {
   bool camera_changed_ = false;
   RenderChoice choice_;
   std::optional<RenderConfig> config_changed_;
-  std::string split_filter_;  // empty: no split screen
+  std::string split_label_;  // the right half's integrator and filter; empty: no split screen
   std::optional<std::optional<RenderConfig>> split_changed_;
   std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;

@@ -34,7 +34,8 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 </div>
 <div id="main">
   <div><img id="frame" tabindex="0" alt="render">
-  <p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view.</p>
+  <p style="margin: 6px 10px">W/A/S/D/Q/E move, arrow keys or drag turn, R resets the view, a click inspects a pixel.</p>
+  <div id="pixel" style="margin: 6px 10px"></div>
   <div id="metrics"></div>
   <canvas id="plot" width="360" height="140" hidden></canvas>
   <div id="details"></div></div>
@@ -101,8 +102,16 @@ ws.onmessage = e => {
       error.textContent = "";
       showOptions(m.options);
       const split = document.getElementById("split");
-      if (split.options.length === 1)
-        for (const f of m.options.filters) { const o = document.createElement("option"); o.value = f; o.textContent = "filter " + f; split.appendChild(o); }
+      if (split.options.length === 1) {
+        for (const f of m.options.filters) { const o = document.createElement("option"); o.value = "filter:" + f; o.textContent = "filter " + f; split.appendChild(o); }
+        for (const i of m.options.integrators) { const o = document.createElement("option"); o.value = "integrator:" + i; o.textContent = "integrator " + i; split.appendChild(o); }
+      }
+    }
+    if (m.pixel) {
+      const p = m.pixel, f = v => v.map(c => c.toPrecision(4)).join(" ");
+      let t = `pixel (${p.x}, ${p.y})${p.half ? " " + p.half + " half" : ""}: ${f(p.mean)} ± ${f(p.std_error)}, luminance ${p.luminance.toPrecision(4)}, ${p.samples} paths`;
+      if (p.reference) t += `; reference ${f(p.reference)}, luminance error ${(100 * p.rel_error).toFixed(1)}%`;
+      document.getElementById("pixel").textContent = t;
     }
     if (m.saved) { error.textContent = ""; document.getElementById("saved").textContent = "saved " + m.saved.join(", "); }
     if (m.recording) { recording = true; document.getElementById("record").textContent = "Stop"; document.getElementById("saved").textContent = "recording " + m.recording; }
@@ -123,7 +132,7 @@ ws.onmessage = e => {
       }
       show.value = stats.shown;
       status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
-      if (stats.split) status.textContent += ` | right half: filter ${stats.split}`;
+      if (stats.split) status.textContent += ` | right half: ${stats.split}`;
       if (stats.metrics) plotMetrics(stats.view, stats.metrics);
       document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
@@ -181,17 +190,27 @@ document.addEventListener("keydown", ev => {
   document.getElementById("speed").textContent = String(speed);
   ev.preventDefault();
 });
-let drag = null;
-img.addEventListener("mousedown", ev => { drag = [ev.clientX, ev.clientY]; ev.preventDefault(); });
-document.addEventListener("mouseup", () => { drag = null; });
+// A drag turns the camera; a click without a drag inspects the pixel under the pointer.
+let drag = null, dragged = false;
+img.addEventListener("mousedown", ev => { drag = [ev.clientX, ev.clientY]; dragged = false; ev.preventDefault(); });
+document.addEventListener("mouseup", ev => {
+  if (drag && !dragged && ev.target === img && img.naturalWidth > 0)
+    send({cmd: "inspect", x: Math.min(img.naturalWidth - 1, Math.floor(ev.offsetX * img.naturalWidth / img.clientWidth)),
+          y: Math.min(img.naturalHeight - 1, Math.floor(ev.offsetY * img.naturalHeight / img.clientHeight))});
+  drag = null;
+});
 document.addEventListener("mousemove", ev => {
   if (!drag) return;
   const dx = ev.clientX - drag[0], dy = ev.clientY - drag[1];
   if (Math.abs(dx) + Math.abs(dy) < 4) return;
   drag = [ev.clientX, ev.clientY];
+  dragged = true;
   send({cmd: "turn", yaw: -dx * 0.2, pitch: -dy * 0.2});
 });
-document.getElementById("split").addEventListener("change", ev => send({cmd: "split", filter: ev.target.value}));
+document.getElementById("split").addEventListener("change", ev => {
+  const [kind, name] = ev.target.value.split(":");
+  send(kind === "integrator" ? {cmd: "split", integrator: name, filter: "none"} : {cmd: "split", filter: name || "off"});
+});
 let recording = false;
 document.getElementById("record").addEventListener("click", () => send({cmd: "record", on: !recording}));
 document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));

@@ -25,6 +25,14 @@ double number(const json& j, const char* key, double limit) {
   return x;
 }
 
+// A pixel coordinate under `key`: a whole number in [0, 65535].
+int pixel_index(const json& j, const char* key) {
+  if (!j.contains(key)) throw Error(fmt::format("\"{}\" is missing", key));
+  const double x = number(j, key, 65535.0);
+  if (x < 0.0 || x != std::floor(x)) throw Error(fmt::format("\"{}\" must be a whole number within 0..65535", key));
+  return int(x);
+}
+
 // A string under `key` of at most `limit` bytes; `name_like`: a lower-case letter, then lower-case
 // letters, digits and '-'.
 std::string text(const json& j, const char* key, size_t limit, bool name_like) {
@@ -90,15 +98,19 @@ Command parse_command(const std::string& message) {
     return Save{};
   }
   if (cmd == "split") {
-    only_fields(j, {"cmd", "filter"});
-    return Split{text(j, "filter", 64, true)};
+    only_fields(j, {"cmd", "filter", "integrator"});
+    return Split{text(j, "filter", 64, true), j.contains("integrator") ? text(j, "integrator", 64, true) : std::string()};
+  }
+  if (cmd == "inspect") {
+    only_fields(j, {"cmd", "x", "y"});
+    return Inspect{pixel_index(j, "x"), pixel_index(j, "y")};
   }
   if (cmd == "record") {
     only_fields(j, {"cmd", "on"});
     if (!j.contains("on") || !j.at("on").is_boolean()) throw Error("\"on\" must be true or false");
     return Record{j.at("on").get<bool>()};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record)",
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record, inspect)",
                           cmd.substr(0, 40)));
 }
 

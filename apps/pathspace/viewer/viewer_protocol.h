@@ -46,16 +46,23 @@ struct Show {
 // Saves the newest frame as EXR (linear, as rendered) and PNG (exposure applied) in the viewer's
 // output folder.
 struct Save {};
-// Split screen: the right half rendered with the same integrator and options under another filter
-// ("none", "hashed", ...), or "off".
+// Split screen: the right half rendered by `integrator` (empty: the view's own) under `filter`
+// ("none", "hashed", ...) with the view's options that apply there, or "off".
 struct Split {
   std::string filter;
+  std::string integrator;
+};
+// The pixel inspector: pixel (x, y) of the film (its mean, variance of the mean and samples, and the
+// reference's value with --reference).
+struct Inspect {
+  int x = 0, y = 0;
 };
 // Starts (on) or stops recording the frames shown, as numbered PNG files and, on stop, a video.
 struct Record {
   bool on = false;
 };
-using Command = std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record>;
+using Command =
+    std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record, Inspect>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).

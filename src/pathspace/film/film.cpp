@@ -18,30 +18,36 @@ namespace {
 constexpr size_t kPixelGrain = size_t(1) << 14;
 }  // namespace
 
+Rgb Film::mean(size_t i) const {
+  if (count_[i] == 0) return Rgb();
+  const double n = count_[i];
+  return Rgb(float(sum_[3 * i] / n), float(sum_[3 * i + 1] / n), float(sum_[3 * i + 2] / n));
+}
+
 Image Film::mean() const {
   Image img(width_, height_);
   parallel_for(count_.size(), kPixelGrain, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      if (count_[i] == 0) continue;
-      const double n = count_[i];
-      img.pixels[i] = Rgb(float(sum_[3 * i] / n), float(sum_[3 * i + 1] / n), float(sum_[3 * i + 2] / n));
-    }
+    for (size_t i = begin; i < end; ++i) img.pixels[i] = mean(i);
   });
   return img;
+}
+
+Rgb Film::variance_of_mean(size_t i) const {
+  Rgb v;
+  const double n = count_[i];
+  if (n < 2) return v;
+  for (int c = 0; c < 3; ++c) {
+    const double m = sum_[3 * i + c] / n;
+    const double var = std::max(0.0, (sum_sq_[3 * i + c] - n * m * m) / (n - 1));
+    v[c] = float(var / n);
+  }
+  return v;
 }
 
 Image Film::variance_of_mean() const {
   Image img(width_, height_);
   parallel_for(count_.size(), kPixelGrain, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const double n = count_[i];
-      if (n < 2) continue;
-      for (int c = 0; c < 3; ++c) {
-        const double m = sum_[3 * i + c] / n;
-        const double var = std::max(0.0, (sum_sq_[3 * i + c] - n * m * m) / (n - 1));
-        img.pixels[i][c] = float(var / n);
-      }
-    }
+    for (size_t i = begin; i < end; ++i) img.pixels[i] = variance_of_mean(i);
   });
   return img;
 }

@@ -40,8 +40,10 @@ class Film {
   }
   // Mean per pixel (black where no samples).
   Image mean() const;
-  // Unbiased estimate of the variance of the pixel mean: s^2 / n.
+  Rgb mean(size_t pixel) const;
+  // Unbiased estimate of the variance of the pixel mean: s^2 / n (0 below two samples).
   Image variance_of_mean() const;
+  Rgb variance_of_mean(size_t pixel) const;
   void clear();
   // The per-pixel sums, sums of squares and counts (a restored film continues bit for bit).
   void save_state(StateWriter& out) const;

@@ -291,6 +291,20 @@ RenderSnapshot RenderSession::snapshot(SnapshotImages images) const {
   return snap;
 }
 
+PixelStats RenderSession::pixel(int x, int y) const {
+  const ReaderLock lock(*this);
+  if (aborted_) throw Error("the session's last pass was aborted: it has no image until a frame begins");
+  if (x < 0 || y < 0 || x >= int(film_.width()) || y >= int(film_.height()))
+    throw Error("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " + std::to_string(film_.width()) + "x" +
+                std::to_string(film_.height()) + " image");
+  const size_t i = size_t(y) * size_t(film_.width()) + size_t(x);
+  Image mean(1, 1), variance(1, 1);
+  mean.pixels[0] = film_.mean(i);
+  variance.pixels[0] = film_.variance_of_mean(i);
+  apply_output_color_matrix(scene_->output_color_matrix, &mean, &variance);
+  return {mean.pixels[0], variance.pixels[0], film_.samples(uint32_t(i))};
+}
+
 SessionState RenderSession::save_state() const {
   const ReaderLock lock(*this);
   if (in_sequence_) throw Error("the state of an animation's frame cannot be saved (its filter's table spans frames)");

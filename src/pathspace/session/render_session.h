@@ -101,6 +101,12 @@ struct RenderSnapshot {
   std::vector<NamedImage> aovs;  // the integrator's debug images, when its options asked for them
 };
 
+// One pixel of the film (RenderSession::pixel), as snapshot() shows it.
+struct PixelStats {
+  Rgb mean, variance_of_mean;
+  uint32_t samples = 0;
+};
+
 struct RunResult {
   uint32_t passes = 0;  // run in this call
   double wall_s = 0.0;
@@ -161,6 +167,9 @@ class RenderSession {
   // Thread-safe; during a run it waits for the current pass to end (the run goes on).
   RenderSnapshot snapshot(SnapshotImages images = SnapshotImages::mean_and_variance) const;
   RenderStats stats() const;
+  // Thread-safe, as snapshot(), for one pixel (a viewer's pixel inspector); throws pathspace::Error
+  // outside the image and after an aborted pass.
+  PixelStats pixel(int x, int y) const;
   SessionState save_state() const;
   // Before or between runs. Throws pathspace::Error when the state belongs to another integrator,
   // filter, option values, seed, scene or image size, or is damaged; the session is then unchanged.
