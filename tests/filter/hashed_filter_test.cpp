@@ -3,10 +3,15 @@
 // equal up to the rounding of the split, since plain path tracing no longer splits its paths), the filtered image is bit-identical for any thread count and across reruns,
 // and the fallbacks of the table (probe limit, tiny table) keep images finite and unfiltered.
 #include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "filter_render.h"
+#include "pathspace/accel/accel.h"
+#include "pathspace/session/render_session.h"
 #include "pathspace/scene/builtin_scenes.h"
 #include "support/test_names.h"
 
@@ -146,6 +151,43 @@ TEST(HashedFilter, DebugImagesOnlyWhenRequestedAndImageUnchanged) {
     for (const Rgb& v : aov.image.pixels) sum += v.r;
     EXPECT_GT(sum / double(aov.image.pixels.size()), 1.0) << "a voxel averages several vertices";
   }
+}
+
+// With --temporal the debug images add the voxel's history (sec. 3.4): its weight N grows from step
+// to step over a still view, and the history's weight alpha is 0 at the first step and positive
+// after it.
+TEST(HashedFilter, TemporalDebugImagesShowTheHistory) {
+  const auto scene = std::make_shared<const Scene>(make_builtin_scene("cornell-box", 48, 48));
+  const auto accel = std::make_shared<const Accel>(*scene);
+  HashedFilterSettings h;
+  h.debug_images = true;
+  h.temporal.mode = TemporalMode::integrate;
+  RenderSession session(scene, accel, hashed_config(5, h));
+  const auto mean_of = [](const RenderSnapshot& snap, const std::string& name) {
+    for (const NamedImage& aov : snap.aovs) {
+      if (aov.name != name) continue;
+      double sum = 0.0;
+      for (const Rgb& v : aov.image.pixels) sum += v.r;
+      return sum / double(aov.image.pixels.size());
+    }
+    ADD_FAILURE() << "no debug image " << name;
+    return -1.0;
+  };
+  std::vector<double> history, alpha;
+  for (uint64_t frame = 0; frame < 3; ++frame) {
+    if (frame > 0) session.begin_frame(scene, accel, frame);
+    session.run(RunLimit::for_passes(1));
+    const RenderSnapshot snap = session.snapshot();
+    EXPECT_EQ(snap.aovs.size(), 6u);
+    history.push_back(mean_of(snap, "history"));
+    alpha.push_back(mean_of(snap, "alpha"));
+  }
+  EXPECT_EQ(alpha[0], 0.0) << "no history at the first step";
+  EXPECT_GT(history[0], 1.0);
+  EXPECT_GT(alpha[1], 0.2);
+  EXPECT_GT(history[1], 1.5 * history[0]);
+  EXPECT_GT(history[2], history[1]);
+  EXPECT_GT(alpha[2], alpha[1]) << "integration: alpha = N_old / (N_old + N_new) grows";
 }
 
 }  // namespace

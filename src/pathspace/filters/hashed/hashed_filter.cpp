@@ -538,6 +538,7 @@ void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
 
 Image HashedFilter::aov(FilterAov which) const {
   if (!settings_.debug_images) throw Error("the hashed filter's debug images need HashedFilterSettings::debug_images (--aov)");
+  if ((which == FilterAov::history || which == FilterAov::alpha) && !history_) throw Error("the history debug images need --temporal");
   Image img(width_, height_);
   for (size_t p = 0; p < first_slot_of_pixel_.size() && p < img.size(); ++p) {
     const uint32_t i = first_slot_of_pixel_[p];
@@ -547,6 +548,12 @@ Image HashedFilter::aov(FilterAov which) const {
       case FilterAov::count: img.pixels[p] = Rgb(float(counts_[i])); break;
       case FilterAov::level: img.pixels[p] = Rgb(float(keys_[i].level)); break;
       case FilterAov::probes: img.pixels[p] = Rgb(float(probes_[i])); break;
+      case FilterAov::history:
+        if (slots_[i] >= 0) img.pixels[p] = Rgb(history_->cells()[size_t(slots_[i])].weight);
+        break;
+      case FilterAov::alpha:
+        if (slots_[i] >= 0) img.pixels[p] = Rgb(cell_blends_[size_t(slots_[i])].alpha);
+        break;
     }
   }
   return img;
@@ -564,10 +571,15 @@ std::vector<NamedImage> HashedFilter::aovs() const {
   // Nothing filtered by this object yet (a render resumed without a new pass): the debug images
   // show the last pass, which a checkpoint does not hold.
   if (!settings_.debug_images || first_slot_of_pixel_.empty()) return {};
-  return {{"voxel", aov(FilterAov::voxel)},
-          {"count", aov(FilterAov::count)},
-          {"level", aov(FilterAov::level)},
-          {"probes", aov(FilterAov::probes)}};
+  std::vector<NamedImage> images = {{"voxel", aov(FilterAov::voxel)},
+                                    {"count", aov(FilterAov::count)},
+                                    {"level", aov(FilterAov::level)},
+                                    {"probes", aov(FilterAov::probes)}};
+  if (history_) {
+    images.push_back({"history", aov(FilterAov::history)});
+    images.push_back({"alpha", aov(FilterAov::alpha)});
+  }
+  return images;
 }
 
 // Without --temporal the table is rebuilt every pass, so the statistics are the only state a

@@ -25,8 +25,10 @@
 
 namespace pathspace {
 
-// Debug images of the first record of each path (sec. 3.1, fig. 3 and 5 style visualisations).
-enum class FilterAov { voxel, count, level, probes };
+// Debug images of the first record of each path (sec. 3.1, fig. 3 and 5 style visualisations); with
+// --temporal also the voxel's history (sec. 3.4): `history`, the vertices behind it (N_old after
+// this step: its age counted in vertices), and `alpha`, the history's weight in this step's average.
+enum class FilterAov { voxel, count, level, probes, history, alpha };
 
 class HashedFilter final : public PathSpaceFilter {
  public:
@@ -54,7 +56,8 @@ class HashedFilter final : public PathSpaceFilter {
   void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
   void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
   void statistics(Statistics& out) const override;
-  // The four debug images (voxel, count, level, probes) when settings.debug_images is on.
+  // The debug images (voxel, count, level, probes; history and alpha with --temporal) when
+  // settings.debug_images is on.
   std::vector<NamedImage> aovs() const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;

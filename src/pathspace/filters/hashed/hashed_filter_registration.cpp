@@ -34,7 +34,7 @@ OptionTable<HashedFilterSettings> hashed_options() {
          "sec. 3.1.3");
   add_aa_paths_option(t, &S::aa_paths);
   add_caustic_options(t, &S::caustics);
-  t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes)");
+  t.flag("aov", &S::debug_images, true, "Also write the filter's debug images (voxel, count, level, probes; history, alpha with --temporal)");
   t.choice("temporal", [](S& s) -> TemporalMode& { return s.temporal.mode; },
            std::vector<std::pair<std::string, TemporalMode>>{
                {"off", TemporalMode::off}, {"integrate", TemporalMode::integrate}, {"ema", TemporalMode::ema},
