@@ -11,10 +11,8 @@
 #include "pathspace/base/printable.h"
 #include "pathspace/io/atomic_file.h"
 #include "pathspace/io/camera_path_file.h"
-#include "pathspace/io/scene_loader.h"
 #include "pathspace/options/option_parse.h"
 #include "pathspace/parallel/background_job.h"
-#include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/session/frame_sequence.h"
 #include "distinct_files.h"
 #include "frame_pattern.h"
@@ -22,6 +20,7 @@
 #include "job_group.h"
 #include "render_outputs.h"
 #include "render_scene.h"
+#include "scene_animation.h"
 #include "pathspace/session/render_stats_json.h"
 #include "pathspace/options/usage_error.h"
 #include "video_encoder.h"
@@ -78,15 +77,6 @@ std::string frame_summary(const Statistics& s) {
   return line;
 }
 
-// The animation of a scene file (glTF node channels), or an empty function. prepare_scene loaded
-// the same file with the same options and printed its warnings, so this load's are dropped.
-std::function<Scene(double)> file_animation(const PreparedScene& prepared) {
-  if (prepared.file.empty()) return {};
-  std::vector<std::string> printed;
-  return load_scene_animation(prepared.file, prepared.load_options, &printed);
-}
-
-
 }  // namespace
 
 int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
@@ -130,29 +120,14 @@ int render_frame_sequence(const RenderOptions& o, const RenderConfig& config) {
     }
   });
   PreparedScene& prepared = *prepared_scene;
-  const BuiltinSceneInfo* builtin = prepared.file.empty() ? find_builtin_scene(prepared.label) : nullptr;
 
   Animation animation;
   animation.fps = o.fps;
   animation.orbit_degrees_per_frame = o.orbit;
   if (!o.camera_path.empty()) animation.camera_path = read_camera_path(o.camera_path);
   const int width = prepared.scene.camera.width, height = prepared.scene.camera.height;
-  if (builtin && builtin->animate) {
-    animation.scene_at = [&o, builtin, width, height](double seconds) {
-      Scene s = builtin->animate(width, height, seconds);
-      s.name = builtin->name;
-      apply_scene_options(o, &s);
-      return s;
-    };
-  } else if (auto file_scene_at = file_animation(prepared)) {
-    animation.scene_at = [&o, file_scene_at](double seconds) {
-      Scene s = file_scene_at(seconds);
-      apply_scene_options(o, &s);
-      return s;
-    };
-  } else {
-    animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene file without animation stands still
-  }
+  animation.scene_at = scene_animation(o, prepared);
+  if (!animation.scene_at) animation.scene_at = [&prepared](double) { return prepared.scene; };  // a scene that stands still
 
   // PNG frames for the video: the -o PNG sequence, else a temporary folder beside the video.
   std::string png_pattern, temporary_pngs;

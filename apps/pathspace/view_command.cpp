@@ -20,6 +20,7 @@
 #include "interrupt_handler.h"
 #include "number_options.h"
 #include "render_scene.h"
+#include "scene_animation.h"
 #include "viewer/live_view.h"
 #include "viewer/viewer_server.h"
 
@@ -121,6 +122,9 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions* o) {
                   "Show each new view of a moving camera first at 1/N of the resolution (one pass, scaled up); 1: off")
       ->capture_default_str()
       ->check(checked_integer("preview", 1, 16));
+  cmd->add_option("--fps", o->fps, "Animated scenes: frames per second of animation time while the page plays it (a frame after each pass)")
+      ->check(checked_real("fps", 1e-3, 1e4))
+      ->capture_default_str();
   cmd->add_option("--out-dir", o->out_dir, "Folder of the images the page saves (created when needed)")->capture_default_str();
   cmd->add_option("-j,--threads", o->render.threads, "Worker threads; 0 = all cores")->check(checked_integer("threads", 0, 4096));
   o->render.registry.add_to(cmd);
@@ -132,7 +136,8 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   std::shared_ptr<const Image> reference;
   if (!o.reference.empty()) reference = std::make_shared<const Image>(read_image(o.reference));
   PreparedScene prepared = prepare_scene(o.render);
-  auto first = std::make_shared<Scene>(std::move(prepared.scene));
+  const std::function<Scene(double)> scene_at = scene_animation(o.render, prepared);
+  auto first = std::make_shared<Scene>(prepared.scene);
   first->camera_moves = false;  // the page moves the camera
   auto accel = std::make_shared<const Accel>(*first);
   std::shared_ptr<const Scene> scene = first;  // the current view's: the first one with the page's camera
@@ -150,7 +155,7 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   auto live = std::make_shared<viewer::LiveView>(
       home, step, viewer::RenderChoice{o.render.integrator, o.render.filter, o.render.registry.given(), config.seed, config.threads, config.device},
       frame_saver(o.out_dir, prepared.display_name, saved_inputs), reference,
-      flight_recorder(o.out_dir, prepared.display_name, saved_inputs));
+      flight_recorder(o.out_dir, prepared.display_name, saved_inputs), scene_at ? o.fps : 0.0);
   live->set_sessions({session.get()});
   const std::string address = o.listen.empty() ? "127.0.0.1" : o.listen;
   viewer::ViewerServer server(live, address, o.port, o.listen.empty() ? "" : random_token());
@@ -166,11 +171,20 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   RenderConfig preview_config = config;
   while (interrupt.signal() == 0) {
     const std::optional<PerspectiveCamera> camera = live->take_camera();
-    if (camera) {
+    const std::optional<double> seconds = live->take_time();
+    if (seconds) {  // the scene at another time, seen by the page's camera
+      first = std::make_shared<Scene>(scene_at(*seconds));
+      first->camera_moves = false;
+      first->camera = live->camera();
+      scene = first;
+    } else if (camera) {
       auto moved = std::make_shared<Scene>(*first);
       moved->camera = *camera;
       scene = moved;
     }
+    // At a new time the sessions build the acceleration structure (validated, the part that does not
+    // move reused, accel/accel.h); the view's is then shared with the others.
+    const std::shared_ptr<const Accel> frame_accel = seconds ? nullptr : accel;
     std::optional<RenderConfig> changed = live->take_config();
     if (changed) {
       preview_config = *changed;
@@ -179,7 +193,7 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     // A move is answered by a preview first, before the full view restarts: one pass at a fraction
     // of the pixels; while the camera moves, the only frames shown (the next move aborts the full
     // view's pass).
-    if (camera && preview && !right) {
+    if (camera && !seconds && preview && !right) {
       preview->begin_frame(preview_scene(*scene, o.preview), accel, view + 1);
       if (preview->run(RunLimit::for_passes(1)).passes > 0) {
         RenderSnapshot shown = preview->snapshot(SnapshotImages::mean);
@@ -192,14 +206,15 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     std::optional<std::optional<RenderConfig>> split = live->take_split();
     if (changed) {
       // New options: a new session on the same scene and acceleration structure.
-      next_session = std::make_unique<RenderSession>(scene, accel, std::move(*changed));
+      next_session = std::make_unique<RenderSession>(scene, frame_accel, std::move(*changed));
       ++view;
-    } else if (camera || session->aborted()) {
-      session->begin_frame(scene, accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
+    } else if (camera || seconds || session->aborted()) {
+      session->begin_frame(scene, frame_accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
     }
+    if (seconds) accel = (next_session ? next_session : session)->shared_accel();
     if (split && *split) {
       next_right = std::make_unique<RenderSession>(scene, accel, std::move(**split));
-    } else if (right && !split && (camera || right->aborted())) {
+    } else if (right && !split && (camera || seconds || right->aborted())) {
       right->begin_frame(scene, accel, view);
     }
     if (next_session || split) {
@@ -223,7 +238,10 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     }
     const RunResult r = session->run(RunLimit::for_passes(1));
     if (right && r.passes > 0) right->run(RunLimit::for_passes(1));
-    if (r.passes > 0 && !(right && right->aborted())) live->publish(shown(), view);
+    if (r.passes > 0 && !(right && right->aborted())) {
+      live->publish(shown(), view);
+      if (o.max_spp == 0 || session->passes_done() >= o.max_spp) live->advance_if_playing();  // a played frame is done
+    }
     // Made, with a first pass, after the view's first pass, not at the move it serves: a new
     // session's first pass takes a few hundred ms more than the next (the filter's table and buffers).
     if (!preview && o.preview > 1 && r.passes > 0) {

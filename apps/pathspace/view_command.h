@@ -17,6 +17,7 @@ struct ViewOptions {
   std::string listen;    // address to bind; empty: 127.0.0.1 without a token
   uint32_t max_spp = 0;  // passes per view before the loop idles; 0: no limit
   int preview = 2;       // a moved camera's first frame at 1/preview of the resolution; 1: none
+  double fps = 30.0;     // animation time per played frame: 1 / fps seconds
   std::string out_dir = "pathspace-out";  // where the page's Save writes (created when needed)
   std::string reference;  // an image to measure the render against; empty: none
 };

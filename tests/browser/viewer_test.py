@@ -34,9 +34,9 @@ def check(condition, what):
     return condition
 
 
-def start_viewer(pathspace, extra, resolution="64x48"):
+def start_viewer(pathspace, extra, resolution="64x48", scene="cornell-box"):
     """The viewer process and the URL it printed."""
-    proc = subprocess.Popen([pathspace, "view", "cornell-box", "-r", resolution, "-j", "1"] + extra, stdout=subprocess.PIPE,
+    proc = subprocess.Popen([pathspace, "view", scene, "-r", resolution, "-j", "1"] + extra, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True)
     line = proc.stdout.readline()
     match = re.search(r"open (http://\S+)", line)
@@ -117,6 +117,10 @@ ws.onmessage = e => {
 ws.onerror = () => done(['socket error']);
 setTimeout(() => done(seen.concat(['timeout'])), 20000);
 """
+
+
+def error_text(driver):
+    return driver.execute_script("return document.getElementById('error').textContent")
 
 
 def pixels(driver):
@@ -236,18 +240,20 @@ def main():
         inspected = wait_for(driver, "!document.getElementById('pixel').textContent.includes('half') && "
                                      "document.getElementById('pixel').textContent")
         check(inspected and re.search(r"pixel \(1[56], \d+\): .* ± .*, \d+ paths", str(inspected)),
-              f"a click inspects the pixel under the pointer: {inspected}")
+              f"a click inspects the pixel under the pointer: {inspected} (error: {error_text(driver)})")
 
+        check(driver.execute_script("return document.getElementById('animation').hidden"), "a still scene has no play controls")
         bad = ['{"cmd":"move","forward":"x"}', '{"cmd":"nope"}', 'not json', '{"cmd":"turn","yaw":1e9}',
-               '{"cmd":"move","sideways":1}', '{"cmd":"frame"}']
+               '{"cmd":"move","sideways":1}', '{"cmd":"play","on":true}', '{"cmd":"frame"}']
         answers = driver.execute_async_script(SECOND_CLIENT, bad)
         print("second client:", answers)
-        check(len(answers) == 7, "the second client is answered every message")
-        errors = [a for a in answers[:5] if '"error"' in a]
-        check(len(errors) == 5, "each bad command gets an error")
+        check(len(answers) == 8, "the second client is answered every message")
+        errors = [a for a in answers[:6] if '"error"' in a]
+        check(len(errors) == 6, "each bad command gets an error")
         check(any("must be a number" in a for a in errors) and any("unknown command" in a for a in errors)
-              and any("within" in a for a in errors) and any("unknown field" in a for a in errors), "the errors say what is wrong")
-        check(len(answers) == 7 and '"stats"' in answers[5] and answers[6].startswith("binary "),
+              and any("within" in a for a in errors) and any("unknown field" in a for a in errors)
+              and any("no animation" in a for a in errors), "the errors say what is wrong")
+        check(len(answers) == 8 and '"stats"' in answers[6] and answers[7].startswith("binary "),
               "two clients at once: the second receives a frame too")
         frames = driver.execute_script("return Number(document.getElementById('frame').dataset.frames)")
         check(wait_for(driver, f"Number(document.getElementById('frame').dataset.frames) > {frames}"),
@@ -279,7 +285,8 @@ def main():
         ActionChains(driver).move_to_element_with_offset(image, 0, 0).click().perform()
         inspected = wait_for(driver, "document.getElementById('pixel').textContent.includes('reference') && "
                                      "document.getElementById('pixel').textContent")
-        check(inspected and "luminance error" in str(inspected), f"the inspector shows the reference's pixel: {inspected}")
+        check(inspected and "luminance error" in str(inspected),
+              f"the inspector shows the reference's pixel: {inspected} (error: {error_text(driver)})")
         driver.save_screenshot(os.path.join(shots, "viewer-reference.png"))
     finally:
         driver.quit()
@@ -300,6 +307,27 @@ def main():
         driver.quit()
         idle.send_signal(signal.SIGTERM)
         idle.wait(timeout=30)
+
+    # An animated scene: Play advances its time frame by frame, Pause stops it, a time seeks.
+    animated, animated_url = start_viewer(args.pathspace, ["--filter", "hashed", "--temporal", "integrate"], scene="cornell-moving-light")
+    driver = make_driver(window="800,600", script_timeout=30)
+    try:
+        driver.get(animated_url)
+        check(wait_for(driver, "!document.getElementById('animation').hidden"), "an animated scene shows its play controls")
+        before = pixels(driver)
+        driver.find_element("id", "play").click()
+        check(wait_for(driver, "/t (0\\.[1-9]|[1-9])/.test(document.getElementById('status').textContent)"),
+              "Play advances the animation's time: " + driver.execute_script("return document.getElementById('status').textContent"))
+        check(changed_from(driver, before) is not None, "the light moves in the image")
+        driver.find_element("id", "play").click()
+        check(wait_for(driver, "document.getElementById('play').textContent === 'Play'"), "Pause stops it")
+        driver.execute_script("const t = document.getElementById('time'); t.value = '2'; t.dispatchEvent(new Event('change'));")
+        check(wait_for(driver, "document.getElementById('status').textContent.includes('t 2.00 s')"), "a time seeks the animation")
+        driver.save_screenshot(os.path.join(shots, "viewer-animation.png"))
+    finally:
+        driver.quit()
+        animated.send_signal(signal.SIGTERM)
+        animated.wait(timeout=30)
 
     guarded, guarded_url = start_viewer(args.pathspace, ["--listen", "127.0.0.1"])
     try:

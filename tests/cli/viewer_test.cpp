@@ -43,6 +43,11 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).filter, "hashed");
   EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","filter":"hashed"})")).integrator, "");
   EXPECT_EQ(std::get<Split>(parse_command(R"({"cmd":"split","integrator":"bpt","filter":"none"})")).integrator, "bpt");
+  EXPECT_TRUE(std::get<Play>(parse_command(R"({"cmd":"play","on":true})")).on);
+  EXPECT_FALSE(std::get<Play>(parse_command(R"({"cmd":"play","on":false})")).on);
+  EXPECT_EQ(std::get<Seek>(parse_command(R"({"cmd":"seek","seconds":2.5})")).seconds, 2.5);
+  EXPECT_NE(error_of(R"({"cmd":"seek","seconds":-1})").find("within 0..1e6"), std::string::npos);
+  EXPECT_NE(error_of(R"({"cmd":"play"})").find("true or false"), std::string::npos);
   const Inspect inspect = std::get<Inspect>(parse_command(R"({"cmd":"inspect","x":12,"y":0})"));
   EXPECT_EQ(inspect.x, 12);
   EXPECT_EQ(inspect.y, 0);
@@ -105,7 +110,7 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 15) << "the valid seeds (every command) parse";
+  EXPECT_GE(parsed, 17) << "the valid seeds (every command) parse";
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

@@ -25,14 +25,15 @@ Image with_exposure(const Image& image, float scale) {
 }
 
 LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver,
-                   std::shared_ptr<const Image> reference, FlightRecorder recorder)
+                   std::shared_ptr<const Image> reference, FlightRecorder recorder, double animation_fps)
     : home_(home),
       step_(step),
       saver_(std::move(saver)),
       recorder_(std::move(recorder)),
       reference_(std::move(reference)),
       camera_(home),
-      choice_(std::move(choice)) {}
+      choice_(std::move(choice)),
+      fps_(animation_fps) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -111,6 +112,16 @@ std::optional<std::string> LiveView::apply(const Command& command) {
     std::lock_guard<std::mutex> writing(frame_writing_);
     return recorder_.stop();
   }
+  if (const auto* inspect = std::get_if<Inspect>(&command)) {
+    // Under the lock, so that the render loop replaces no session meanwhile. A view that is
+    // restarting (its pass just aborted) has no image: the answer waits for its first frame.
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (true) {
+      if (std::optional<std::string> answer = inspect_pixel(*inspect)) return answer;
+      if (frame_ready_.wait_until(lock, deadline) == std::cv_status::timeout) throw Error("the view is restarting: inspect again");
+    }
+  }
   std::optional<std::string> reply;
   bool restart = false;
   {
@@ -141,8 +152,15 @@ std::optional<std::string> LiveView::apply(const Command& command) {
         split_changed_ = std::optional<RenderConfig>(std::move(config));
       }
       restart = true;
-    } else if (const auto* inspect = std::get_if<Inspect>(&command)) {
-      reply = inspect_pixel(*inspect);  // under the lock: the render loop replaces no session meanwhile
+    } else if (const auto* play = std::get_if<Play>(&command)) {
+      if (!(fps_ > 0.0)) throw Error("this scene has no animation to play");
+      playing_ = play->on;
+      time_changed_ = time_changed_ || play->on;  // an idle render (--max-spp) goes on with the next frame
+      if (play->on) ++animation_frame_;
+    } else if (const auto* seek = std::get_if<Seek>(&command)) {
+      if (!(fps_ > 0.0)) throw Error("this scene has no animation to seek in");
+      animation_frame_ = uint64_t(std::llround(seek->seconds * fps_));
+      time_changed_ = restart = true;
     } else if (const auto* show = std::get_if<Show>(&command)) {
       shown_ = show->image;
       exposure_changed_ = true;  // shown again at once, also when the render idles
@@ -175,17 +193,14 @@ std::optional<std::string> LiveView::apply(const Command& command) {
   return reply;
 }
 
-std::string LiveView::inspect_pixel(const Inspect& at) const {
+std::optional<std::string> LiveView::inspect_pixel(const Inspect& at) const {
   if (sessions_.empty()) throw Error("no render to inspect yet");
   const int width = home_.width, height = home_.height;
   if (at.x >= width || at.y >= height) throw Error(fmt::format("pixel ({}, {}) is outside the {}x{} image", at.x, at.y, width, height));
   const bool right = sessions_.size() > 1 && at.x >= width / 2;  // compose_split's halves
-  PixelStats p;
-  try {
-    p = sessions_[right ? 1 : 0]->pixel(at.x, at.y);
-  } catch (const Error&) {
-    throw Error("the view is restarting: inspect again");  // its pass was just aborted
-  }
+  const RenderSession& session = *sessions_[right ? 1 : 0];
+  if (session.aborted()) return std::nullopt;
+  const PixelStats p = session.pixel(at.x, at.y);  // no abort meanwhile: only apply() aborts, under this lock
   const auto rgb = [](const Rgb& c) { return nlohmann::ordered_json::array({c.r, c.g, c.b}); };
   const Rgb error(std::sqrt(p.variance_of_mean.r), std::sqrt(p.variance_of_mean.g), std::sqrt(p.variance_of_mean.b));
   nlohmann::ordered_json j = {{"x", at.x},
@@ -208,6 +223,29 @@ std::string LiveView::inspect_pixel(const Inspect& at) const {
 void LiveView::set_sessions(std::vector<RenderSession*> sessions) {
   std::lock_guard<std::mutex> lock(mutex_);
   sessions_ = std::move(sessions);
+}
+
+PerspectiveCamera LiveView::camera() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return camera_;
+}
+
+std::optional<double> LiveView::take_time() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!time_changed_) return std::nullopt;
+  time_changed_ = false;
+  view_start_ = std::chrono::steady_clock::now();
+  return double(animation_frame_) / fps_;
+}
+
+void LiveView::advance_if_playing() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!playing_) return;
+    ++animation_frame_;
+    time_changed_ = true;
+  }
+  changed_.notify_all();
 }
 
 std::optional<PerspectiveCamera> LiveView::take_camera() {
@@ -265,8 +303,10 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
   PerspectiveCamera camera;
   std::string shown, split;
   bool recording;
+  nlohmann::ordered_json animation = nullptr;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (fps_ > 0.0) animation = {{"seconds", double(animation_frame_) / fps_}, {"playing", playing_}};
     recording = recording_;
     camera = camera_;
     shown = shown_;
@@ -321,6 +361,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
                                       {"images", images},
                                       {"split", split.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(split)},
                                       {"shown", shown},
+                                      {"animation", animation},
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -333,7 +374,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
 
 bool LiveView::wait_for_change(std::chrono::milliseconds wait) {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait_for(lock, wait, [&] { return camera_changed_ || config_changed_ || split_changed_ || exposure_changed_; });
+  changed_.wait_for(lock, wait, [&] { return camera_changed_ || config_changed_ || split_changed_ || exposure_changed_ || time_changed_; });
   return exposure_changed_;
 }
 

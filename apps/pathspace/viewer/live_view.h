@@ -48,8 +48,10 @@ class LiveView final : public ViewerBackend {
   // session was configured from.
   // `reference`: an image of the scene's size to measure the render against (relMSE, block relMSE,
   // blotched blocks, FLIP; the "error" image), or null.
+  // `animation_fps`: frames per second of the scene's animation time, 0 for a scene that does not
+  // move (no Play or Seek then).
   LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver, std::shared_ptr<const Image> reference,
-           FlightRecorder recorder);
+           FlightRecorder recorder, double animation_fps = 0.0);
 
   std::optional<Frame> next_frame(uint64_t after, std::chrono::milliseconds wait) override;
   std::optional<std::string> apply(const Command& command) override;
@@ -61,6 +63,12 @@ class LiveView final : public ViewerBackend {
   void set_sessions(std::vector<RenderSession*> sessions);
   // The camera to render when it changed since the last call.
   std::optional<PerspectiveCamera> take_camera();
+  // The page's camera now.
+  PerspectiveCamera camera() const;
+  // The animation's time in seconds when it changed since the last call (Seek, or a frame played).
+  std::optional<double> take_time();
+  // While playing: the next frame of the animation (the render loop calls it when a frame is done).
+  void advance_if_playing();
   // The configuration to render with when the options changed since the last call.
   std::optional<RenderConfig> take_config();
   // The split screen's right-half configuration when it changed since the last call: a config, or
@@ -82,7 +90,9 @@ class LiveView final : public ViewerBackend {
  private:
   std::string options_json() const;       // under mutex_
   std::string set_choice(RenderChoice next);  // under mutex_: configures it or throws
-  std::string inspect_pixel(const Inspect& at) const;  // under mutex_: the pixel's reply, or throws
+  // Under mutex_: the pixel's reply; nullopt while its session's pass is aborted (no image); throws
+  // for a pixel outside the image.
+  std::optional<std::string> inspect_pixel(const Inspect& at) const;
 
   const PerspectiveCamera home_;
   const float step_;
@@ -102,6 +112,10 @@ class LiveView final : public ViewerBackend {
   std::optional<RenderConfig> config_changed_;
   std::string split_label_;  // the right half's integrator and filter; empty: no split screen
   std::optional<std::optional<RenderConfig>> split_changed_;
+  const double fps_;          // of the animation; 0: the scene does not move
+  bool playing_ = false;
+  uint64_t animation_frame_ = 0;  // the time shown is animation_frame_ / fps_
+  bool time_changed_ = false;
   std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;
   bool exposure_changed_ = false;

@@ -27,6 +27,8 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
   <span>speed <span id="speed">1</span>x (+/-)</span>
   <button id="save">Save</button>
   <button id="record">Record</button>
+  <span id="animation" hidden><button id="play">Play</button>
+    <label>time <input id="time" type="number" min="0" step="0.1" style="width: 5em"> s</label></span>
   <button id="copy">CLI options</button>
   <input id="cli" readonly>
   <span id="saved"></span>
@@ -133,6 +135,13 @@ ws.onmessage = e => {
       show.value = stats.shown;
       status.textContent += `, ${stats.integrator}${stats.filter && stats.filter !== "none" ? " + " + stats.filter : ""}`;
       if (stats.split) status.textContent += ` | right half: ${stats.split}`;
+      if (stats.animation) {
+        document.getElementById("animation").hidden = false;
+        document.getElementById("play").textContent = stats.animation.playing ? "Pause" : "Play";
+        const time = document.getElementById("time");
+        if (document.activeElement !== time) time.value = stats.animation.seconds.toFixed(2);
+        status.textContent += `, t ${stats.animation.seconds.toFixed(2)} s`;
+      }
       if (stats.metrics) plotMetrics(stats.view, stats.metrics);
       document.getElementById("details").textContent = Object.entries(stats.details).map(([k, v]) => k + " " + JSON.stringify(v)).join("\n");
     }
@@ -194,9 +203,10 @@ document.addEventListener("keydown", ev => {
 let drag = null, dragged = false;
 img.addEventListener("mousedown", ev => { drag = [ev.clientX, ev.clientY]; dragged = false; ev.preventDefault(); });
 document.addEventListener("mouseup", ev => {
-  if (drag && !dragged && ev.target === img && img.naturalWidth > 0)
-    send({cmd: "inspect", x: Math.min(img.naturalWidth - 1, Math.floor(ev.offsetX * img.naturalWidth / img.clientWidth)),
-          y: Math.min(img.naturalHeight - 1, Math.floor(ev.offsetY * img.naturalHeight / img.clientHeight))});
+  const r = img.getBoundingClientRect(), x = ev.clientX - r.left, y = ev.clientY - r.top;
+  if (drag && !dragged && img.naturalWidth > 0 && x >= 0 && y >= 0 && x < r.width && y < r.height)
+    send({cmd: "inspect", x: Math.min(img.naturalWidth - 1, Math.floor(x * img.naturalWidth / r.width)),
+          y: Math.min(img.naturalHeight - 1, Math.floor(y * img.naturalHeight / r.height))});
   drag = null;
 });
 document.addEventListener("mousemove", ev => {
@@ -211,6 +221,8 @@ document.getElementById("split").addEventListener("change", ev => {
   const [kind, name] = ev.target.value.split(":");
   send(kind === "integrator" ? {cmd: "split", integrator: name, filter: "none"} : {cmd: "split", filter: name || "off"});
 });
+document.getElementById("play").addEventListener("click", () => send({cmd: "play", on: !(stats && stats.animation && stats.animation.playing)}));
+document.getElementById("time").addEventListener("change", ev => send({cmd: "seek", seconds: Math.max(0, Number(ev.target.value) || 0)}));
 let recording = false;
 document.getElementById("record").addEventListener("click", () => send({cmd: "record", on: !recording}));
 document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));

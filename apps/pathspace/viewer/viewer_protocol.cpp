@@ -105,12 +105,19 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd", "x", "y"});
     return Inspect{pixel_index(j, "x"), pixel_index(j, "y")};
   }
-  if (cmd == "record") {
+  if (cmd == "record" || cmd == "play") {
     only_fields(j, {"cmd", "on"});
     if (!j.contains("on") || !j.at("on").is_boolean()) throw Error("\"on\" must be true or false");
-    return Record{j.at("on").get<bool>()};
+    const bool on = j.at("on").get<bool>();
+    return cmd == "record" ? Command(Record{on}) : Command(Play{on});
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record, inspect)",
+  if (cmd == "seek") {
+    only_fields(j, {"cmd", "seconds"});
+    const double seconds = number(j, "seconds", 1e6);
+    if (seconds < 0.0) throw Error("\"seconds\" must be a finite number within 0..1e6");
+    return Seek{seconds};
+  }
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record, inspect, play, seek)",
                           cmd.substr(0, 40)));
 }
 

@@ -61,8 +61,16 @@ struct Inspect {
 struct Record {
   bool on = false;
 };
+// Plays the scene's animation (a frame of 1 / --fps seconds after each pass) or pauses it.
+struct Play {
+  bool on = false;
+};
+// Sets the animation's time in seconds (the nearest frame).
+struct Seek {
+  double seconds = 0;
+};
 using Command =
-    std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record, Inspect>;
+    std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record, Inspect, Play, Seek>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).

@@ -149,6 +149,11 @@ void RenderSession::abort() {
   if (!distributed()) pass_work_.cancel();
 }
 
+std::shared_ptr<const Accel> RenderSession::shared_accel() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return accel_;
+}
+
 bool RenderSession::aborted() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return aborted_;

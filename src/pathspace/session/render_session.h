@@ -196,6 +196,8 @@ class RenderSession {
   const std::vector<std::string>& scene_warnings() const { return scene_warnings_; }
   const Scene& scene() const { return *scene_; }
   const Accel& accel() const { return *accel_; }
+  // The acceleration structure shared, for another session on the same scene (between runs).
+  std::shared_ptr<const Accel> shared_accel() const;
 
  private:
   RenderStats stats_locked() const;
