@@ -205,15 +205,28 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     std::unique_ptr<RenderSession> next_session, next_right;
     std::optional<std::optional<RenderConfig>> split = live->take_split();
     if (changed) {
-      // New options: a new session on the same scene and acceleration structure.
-      next_session = std::make_unique<RenderSession>(scene, frame_accel, std::move(*changed));
-      ++view;
-    } else if (camera || seconds || session->aborted()) {
+      // New options: a new session on the same scene and acceleration structure; an error only the
+      // session finds (a device that is not there) goes to the page, the old session goes on.
+      try {
+        next_session = std::make_unique<RenderSession>(scene, frame_accel, std::move(*changed));
+        live->config_applied();
+        ++view;
+      } catch (const Error& e) {
+        live->config_failed(e.what());
+        preview_config = session->config();
+        preview.reset();
+      }
+    }
+    if (!next_session && (camera || seconds || session->aborted())) {
       session->begin_frame(scene, frame_accel, ++view);  // a temporal filter keeps its table (2021 paper sec. 3.4)
     }
     if (seconds) accel = (next_session ? next_session : session)->shared_accel();
     if (split && *split) {
-      next_right = std::make_unique<RenderSession>(scene, accel, std::move(**split));
+      try {
+        next_right = std::make_unique<RenderSession>(scene, accel, std::move(**split));
+      } catch (const Error& e) {
+        live->split_failed(e.what());
+      }
     } else if (right && !split && (camera || seconds || right->aborted())) {
       right->begin_frame(scene, accel, view);
     }

@@ -210,6 +210,19 @@ def main():
               "the statistics show the filter's counters")
         check(wait_for(driver, "document.getElementById('opt-psf-voxel-size') !== null || "
                                "document.querySelectorAll('#options tr').length > 10"), "the filter's options are listed")
+        # The device: without a usable GPU the session cannot be made; the page shows why and the
+        # render goes on with the options before (on a GPU machine the render moves to it).
+        Select(driver.find_element("id", "opt-device")).select_by_value("cuda")
+        outcome = wait_for(driver, "(/cuda|CUDA|GPU/.test(document.getElementById('error').textContent) && "
+                                   "document.getElementById('opt-device').value === 'cpu' && 'refused') || "
+                                   "(document.getElementById('details').textContent.includes('\"cuda\"') && 'moved')")
+        check(outcome in ("refused", "moved"), f"choosing --device cuda moves the render or says why not: {outcome}, "
+              + error_text(driver))
+        if outcome == "moved":
+            Select(driver.find_element("id", "opt-device")).select_by_value("cpu")
+        frames = driver.execute_script("return Number(document.getElementById('frame').dataset.frames)")
+        check(wait_for(driver, f"Number(document.getElementById('frame').dataset.frames) > {frames + 2}"),
+              "the render goes on after the device choice")
         driver.save_screenshot(os.path.join(shots, "viewer-options.png"))
         driver.find_element("id", "opt-aov").click()
         check(wait_for(driver, "Array.from(document.getElementById('show').options).some(o => o.value === 'voxel')"),

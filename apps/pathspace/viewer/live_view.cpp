@@ -9,6 +9,7 @@
 #include "pathspace/film/flip.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/filters/filter_registry.h"
+#include "pathspace/integrators/device_registry.h"
 #include "pathspace/integrators/integrator_registry.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/session/option_catalog.h"
@@ -33,6 +34,8 @@ LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choic
       reference_(std::move(reference)),
       camera_(home),
       choice_(std::move(choice)),
+      applied_choice_(choice_),
+      taken_choice_(choice_),
       fps_(animation_fps) {}
 
 std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseconds wait) {
@@ -62,8 +65,10 @@ std::string LiveView::options_json() const {
   return nlohmann::ordered_json{{"options",
                                  {{"integrator", choice_.integrator},
                                   {"filter", choice_.filter},
+                                  {"device", choice_.device},
                                   {"integrators", integrator_registry().names()},
                                   {"filters", filters},
+                                  {"devices", device_registry().names()},
                                   {"list", list}}}}
       .dump();
 }
@@ -175,6 +180,8 @@ std::optional<std::string> LiveView::apply(const Command& command) {
         next.integrator = s->value;
       } else if (s->name == "filter") {
         next.filter = s->value;
+      } else if (s->name == "device") {
+        next.device = s->value;
       } else {
         next.given.set(s->name, s->value);
       }
@@ -293,8 +300,34 @@ std::optional<RenderConfig> LiveView::take_config() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::optional<RenderConfig> config = std::move(config_changed_);
   config_changed_.reset();
-  if (config) view_start_ = std::chrono::steady_clock::now();
+  if (config) {
+    view_start_ = std::chrono::steady_clock::now();
+    taken_choice_ = choice_;
+  }
   return config;
+}
+
+void LiveView::config_applied() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  applied_choice_ = taken_choice_;
+}
+
+void LiveView::config_failed(const std::string& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  choice_ = applied_choice_;
+  set_error(message);
+}
+
+void LiveView::set_error(const std::string& message) {
+  error_ = message;
+  ++error_id_;
+  error_time_ = std::chrono::steady_clock::now();
+}
+
+void LiveView::split_failed(const std::string& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  split_label_.clear();
+  set_error(message);
 }
 
 void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
@@ -303,10 +336,13 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
   PerspectiveCamera camera;
   std::string shown, split;
   bool recording;
-  nlohmann::ordered_json animation = nullptr;
+  nlohmann::ordered_json animation = nullptr, error = nullptr;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (fps_ > 0.0) animation = {{"seconds", double(animation_frame_) / fps_}, {"playing", playing_}};
+    // Frames a slow client never gets are dropped, so the message rides on every frame for 2 s.
+    if (!error_.empty() && std::chrono::steady_clock::now() - error_time_ < std::chrono::seconds(2))
+      error = {{"id", error_id_}, {"message", error_}};
     recording = recording_;
     camera = camera_;
     shown = shown_;
@@ -362,6 +398,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
                                       {"split", split.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(split)},
                                       {"shown", shown},
                                       {"animation", animation},
+                                      {"error", error},
                                       {"camera_options", camera_options(camera)}}}};
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -71,6 +71,13 @@ class LiveView final : public ViewerBackend {
   void advance_if_playing();
   // The configuration to render with when the options changed since the last call.
   std::optional<RenderConfig> take_config();
+  // After take_config: the render loop made the session (config_applied), or making it failed
+  // (an error only a session finds, e.g. --device cuda without a GPU): the options go back to the
+  // last applied ones and the next frame carries the message.
+  void config_applied();
+  void config_failed(const std::string& message);
+  // Making the split screen's session failed: the split is off, the next frame carries the message.
+  void split_failed(const std::string& message);
   // The split screen's right-half configuration when it changed since the last call: a config, or
   // nullopt inside for "off".
   std::optional<std::optional<RenderConfig>> take_split();
@@ -109,6 +116,13 @@ class LiveView final : public ViewerBackend {
   PerspectiveCamera camera_;
   bool camera_changed_ = false;
   RenderChoice choice_;
+  RenderChoice applied_choice_, taken_choice_;  // the last choice a session was made with; the one take_config took
+  // The last error of a session the loop could not make (config_failed, split_failed), for the
+  // frames' statistics: its number and when it came.
+  std::string error_;
+  uint64_t error_id_ = 0;
+  std::chrono::steady_clock::time_point error_time_{};
+  void set_error(const std::string& message);  // under mutex_
   std::optional<RenderConfig> config_changed_;
   std::string split_label_;  // the right half's integrator and filter; empty: no split screen
   std::optional<std::optional<RenderConfig>> split_changed_;

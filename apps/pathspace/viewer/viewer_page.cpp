@@ -11,6 +11,8 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 #bar { padding: 6px 10px; display: flex; gap: 14px; align-items: center; flex-wrap: wrap; }
 #frame { display: block; margin: 0 10px; image-rendering: pixelated; outline: none; }
 #error { color: #f28b82; }
+/* One line whatever it says: a status that wrapped as its numbers changed would move the image. */
+#status { display: block; padding: 6px 10px 0; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 #cli { width: 40em; }
 #main { display: flex; gap: 16px; align-items: flex-start; }
 #options { font-size: 12px; max-height: 90vh; overflow-y: auto; }
@@ -19,8 +21,8 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 #details { font: 11px monospace; white-space: pre; color: #bdc1c6; }
 </style></head>
 <body>
+<div id="status">connecting</div>
 <div id="bar">
-  <span id="status">connecting</span>
   <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
   <label>show <select id="show"><option value="image">image</option></select></label>
   <label>right half: <select id="split"><option value="off">off</option></select></label>
@@ -50,7 +52,7 @@ const token = params.get("token");
 const ws = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + "/ws" + (token ? "?token=" + encodeURIComponent(token) : ""));
 ws.binaryType = "blob";
 const img = document.getElementById("frame"), status = document.getElementById("status"), error = document.getElementById("error");
-let speed = 1, frames = 0, lastUrl = null, stats = null;
+let speed = 1, frames = 0, lastUrl = null, stats = null, keptError = null, lastErrorId = null;
 const send = o => { if (ws.readyState === WebSocket.OPEN) ws.send(JSON.stringify(o)); };
 ws.onopen = () => { status.textContent = "connected"; send({cmd: "options"}); send({cmd: "frame"}); };
 // The integrator's and filter's options from the registry: each change is sent as the command line
@@ -67,7 +69,8 @@ const showOptions = m => {
   const panel = document.getElementById("options");
   panel.textContent = "";
   const head = document.createElement("div");
-  head.append("integrator ", select("integrator", m.integrators, m.integrator), " filter ", select("filter", m.filters, m.filter));
+  head.append("integrator ", select("integrator", m.integrators, m.integrator), " filter ", select("filter", m.filters, m.filter),
+              " device ", select("device", m.devices, m.device));
   panel.appendChild(head);
   const table = document.createElement("table");
   for (const o of m.list) {
@@ -101,7 +104,8 @@ ws.onmessage = e => {
     const m = JSON.parse(e.data);
     if (m.error) error.textContent = m.error;
     if (m.options) {
-      error.textContent = "";
+      error.textContent = keptError || "";  // a new choice clears the last error, the options restored after one keep it
+      keptError = null;
       showOptions(m.options);
       const split = document.getElementById("split");
       if (split.options.length === 1) {
@@ -124,6 +128,11 @@ ws.onmessage = e => {
     }
     if (m.stats) {
       stats = m.stats;
+      if (stats.error && stats.error.id !== lastErrorId) {  // the render went back to the options before
+        lastErrorId = stats.error.id;
+        error.textContent = keptError = stats.error.message;
+        send({cmd: "options"});
+      }
       status.textContent = `${stats.width}x${stats.height}, ${stats.spp} spp, view ${stats.view}, ${stats.passes_per_second.toFixed(1)} passes/s`;
       if (stats.preview > 1) status.textContent += `, preview at 1/${stats.preview}`;
       document.getElementById("cli").value = stats.camera_options;
@@ -203,10 +212,11 @@ document.addEventListener("keydown", ev => {
 let drag = null, dragged = false;
 img.addEventListener("mousedown", ev => { drag = [ev.clientX, ev.clientY]; dragged = false; ev.preventDefault(); });
 document.addEventListener("mouseup", ev => {
+  // The render's size from the statistics: while the next frame decodes, the img has none.
   const r = img.getBoundingClientRect(), x = ev.clientX - r.left, y = ev.clientY - r.top;
-  if (drag && !dragged && img.naturalWidth > 0 && x >= 0 && y >= 0 && x < r.width && y < r.height)
-    send({cmd: "inspect", x: Math.min(img.naturalWidth - 1, Math.floor(x * img.naturalWidth / r.width)),
-          y: Math.min(img.naturalHeight - 1, Math.floor(y * img.naturalHeight / r.height))});
+  if (drag && !dragged && stats && x >= 0 && y >= 0 && x < r.width && y < r.height)
+    send({cmd: "inspect", x: Math.min(stats.width - 1, Math.floor(x * stats.width / r.width)),
+          y: Math.min(stats.height - 1, Math.floor(y * stats.height / r.height))});
   drag = null;
 });
 document.addEventListener("mousemove", ev => {
