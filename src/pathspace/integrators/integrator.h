@@ -61,6 +61,9 @@ class Integrator {
   // filter with its table, handed to the next frame's integrator (IntegratorContext::carried_filter).
   // Null: the next frame starts afresh.
   virtual std::shared_ptr<PathSpaceFilter> carried_filter() const { return nullptr; }
+  // The same after a pass that RenderSession::abort cut short: the filter only when that pass had
+  // not reached it yet (its table is as the last whole pass left it); null otherwise.
+  virtual std::shared_ptr<PathSpaceFilter> carried_filter_after_abort() const { return nullptr; }
   // Frames dealt to processes in chunks (render_frames, docs/distributed.md): how many frames before
   // its chunk a process renders, unreported, so that what carried_filter() carries is warm. 0: each
   // frame starts afresh, chunks are exact; kAllFrames: only every frame before gives that state.

@@ -5,11 +5,20 @@
 // incomplete, and the caller must discard it.
 #pragma once
 
+#include <tbb/task.h>
 #include <tbb/task_group.h>
 
 #include <mutex>
 
 namespace pathspace {
+
+// True inside work that CancellableWork::cancel() cut short: a step that would change state kept
+// beyond the pass (a path space filter's table) can stop before it, so the cut leaves that state
+// as it was.
+inline bool work_cancelled() {
+  tbb::task_group_context* context = tbb::task::current_context();
+  return context && context->is_group_execution_cancelled();
+}
 
 class CancellableWork {
  public:

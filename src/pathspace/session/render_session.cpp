@@ -204,12 +204,13 @@ void RenderSession::begin_frame(std::shared_ptr<const Scene> scene, std::shared_
   RenderConfig frame_config = config_;
   frame_config.seed = frame_seed(config_.seed, frame);
   // The new integrator takes the filter over before the old one (and its scene) goes. After an
-  // aborted pass the filter starts afresh (abort()), but with the old one's buffers: a new vertex
-  // buffer is hundreds of MB to fault in, every time the camera of a viewer moves.
-  const std::shared_ptr<PathSpaceFilter> carried = integrator_->carried_filter();
-  integrator_ = create_integrator(*scene, *next_accel, frame_config, aborted_ ? nullptr : carried);
-  if (aborted_ && carried)
-    if (const std::shared_ptr<PathSpaceFilter> fresh = integrator_->carried_filter()) fresh->workspace() = std::move(carried->workspace());
+  // aborted pass that had reached the filter, the filter starts afresh (abort()), but with the old
+  // one's buffers: a new vertex buffer is hundreds of MB to fault in, every time a viewer's camera moves.
+  const std::shared_ptr<PathSpaceFilter> old = integrator_->carried_filter();
+  const std::shared_ptr<PathSpaceFilter> carried = aborted_ ? integrator_->carried_filter_after_abort() : old;
+  integrator_ = create_integrator(*scene, *next_accel, frame_config, carried);
+  if (old && !carried)
+    if (const std::shared_ptr<PathSpaceFilter> fresh = integrator_->carried_filter()) fresh->workspace() = std::move(old->workspace());
   aborted_ = false;
   scene_ = std::move(scene);
   accel_ = std::move(next_accel);

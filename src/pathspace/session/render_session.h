@@ -151,8 +151,9 @@ class RenderSession {
   // Thread-safe. Like cancel(), but the pass in flight also stops early (its loops skip what they
   // have not started: parallel/cancellable_work.h), for a viewer whose camera moved. The pass is
   // discarded, and the film with it: until begin_frame() the session has no image, so run(),
-  // snapshot() and save_state() throw, and begin_frame() starts the filter afresh instead of
-  // carrying its table, which the cut pass may have left half updated. A distributed run, whose
+  // snapshot() and save_state() throw. begin_frame() carries the filter only when the cut came
+  // before the pass reached it (Integrator::carried_filter_after_abort), else starts it afresh: the
+  // cut pass may have left its table half updated. A distributed run, whose
   // ranks must agree on every pass, treats abort() as cancel().
   void abort();
   // An aborted pass left the film incomplete (abort()); begin_frame() clears it.

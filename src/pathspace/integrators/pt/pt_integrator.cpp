@@ -6,6 +6,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
+#include "pathspace/parallel/cancellable_work.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/sampling/hash.h"
 #include "pathspace/scene/scene.h"
@@ -142,13 +143,19 @@ void PtIntegrator::render_filtered(uint32_t pass, Film& film, PathCounters& coun
   const size_t step = batch == 0 ? n : std::min(n, batch);
   if (caustics_) caustics_->build(accel_, seed_, pass, counters);  // 2014 paper, sec. 2.3
   FilterWorkspace& w = filter_->workspace();
+  filter_reached_ = false;
   if (const ProbeRequest* request = filter_->probe_request(pass)) {  // 2021 paper, sec. 3.4.1 (hybrid)
     trace_probes(*request, &w.probes, counters);
+    filter_reached_ = true;
     filter_->temporal_probes(w.probes);
   }
   for (size_t first = 0; first < n; first += step) {
     const size_t paths = std::min(step, n - first);
     trace_batch(pass, first, paths, 0, &w.paths, counters);
+    // An aborted pass (RenderSession::abort) that has not touched the filter yet leaves it as the
+    // last whole pass did, so that a viewer's flight keeps the table (2021 paper, sec. 3.4).
+    if (!filter_reached_ && work_cancelled()) return;
+    filter_reached_ = true;
     filter_->filter(w.paths, seed_, pass, &w.filtered);
     resolve_filtered_pass(w.paths, w.filtered, film, &counters);
     // 2014 paper, sec. 3 (fig. 7): extra camera paths per pixel that only query the batch's

@@ -37,6 +37,7 @@ class PtIntegrator final : public Integrator {
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
   std::shared_ptr<PathSpaceFilter> carried_filter() const override { return filter_; }
+  std::shared_ptr<PathSpaceFilter> carried_filter_after_abort() const override { return filter_reached_ ? nullptr : filter_; }
   uint32_t frame_warm_up() const override { return filter_ ? filter_->frame_warm_up() : 0; }
 
   // The last batch's vertices (empty without a filter).
@@ -54,6 +55,7 @@ class PtIntegrator final : public Integrator {
   PtSettings settings_;
   uint64_t seed_;
   std::shared_ptr<PathSpaceFilter> filter_;  // null: plain path tracing
+  bool filter_reached_ = false;  // the current (or last) pass has called the filter (carried_filter_after_abort)
   FilterNeeds needs_;
   std::vector<uint32_t> probe_lights_;  // the delta lights of the visibility weight
   VisibilityProbes probes_;             // none unless the filter needs visibility
