@@ -42,12 +42,12 @@ void prepare_outputs(const std::string& folder, const std::vector<NamedFile>& ou
 // The page's Save: NAME-LABEL.exr (as rendered) and .png (display exposure) in `folder`, written
 // atomically and never over a file the scene read.
 viewer::FrameSaver frame_saver(const std::string& folder, const std::string& name, std::vector<NamedFile> inputs) {
-  return [=](const Image& image, float scale, const std::string& label) {
+  return [=](const Image& image, const viewer::Display& display, const std::string& label) {
     const std::string base = (std::filesystem::path(folder) / (name + "-" + label)).string();
     const std::vector<NamedFile> outputs = {{"save", base + ".exr"}, {"save", base + ".png"}};
     prepare_outputs(folder, outputs, inputs);
     write_image(outputs[0].path, image);
-    write_image(outputs[1].path, viewer::with_exposure(image, scale));
+    write_image(outputs[1].path, viewer::displayed(image, display));
     return nlohmann::json{{"saved", {outputs[0].path, outputs[1].path}}}.dump();
   };
 }
@@ -72,9 +72,9 @@ viewer::FlightRecorder flight_recorder(const std::string& folder, const std::str
     *state = State{true, flight, 0, base + "-%04d.png", base + ".mp4", std::chrono::steady_clock::now()};
     return nlohmann::json{{"recording", state->pattern}}.dump();
   };
-  r.frame = [=](const Image& image, float scale) {
+  r.frame = [=](const Image& image, const viewer::Display& display) {
     if (!state->active) return;
-    write_image(fmt::sprintf(state->pattern, state->frames++), viewer::with_exposure(image, scale));
+    write_image(fmt::sprintf(state->pattern, state->frames++), viewer::displayed(image, display));
   };
   r.stop = [=] {
     state->active = false;

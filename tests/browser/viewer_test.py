@@ -234,6 +234,10 @@ def main():
         check(changed_from(driver, before) is not None, "the voxel view shows another image")
         driver.save_screenshot(os.path.join(shots, "viewer-debug-voxel.png"))
         Select(driver.find_element("id", "show")).select_by_value("image")
+        before = pixels(driver)
+        Select(driver.find_element("id", "tonemap")).select_by_value("aces")
+        check(changed_from(driver, before) is not None, "the ACES tone curve changes the image shown")
+        Select(driver.find_element("id", "tonemap")).select_by_value("clip")
         Select(driver.find_element("id", "split")).select_by_value("filter:none")
         check(wait_for(driver, "document.getElementById('status').textContent.includes('right half: pt, filter none')"),
               "the split screen shows the unfiltered render beside the filtered one")

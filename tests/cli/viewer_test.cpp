@@ -11,6 +11,7 @@
 
 #include "pathspace/base/error.h"
 #include "viewer/camera_controls.h"
+#include "viewer/display.h"
 #include "viewer/viewer_protocol.h"
 
 namespace pathspace::viewer {
@@ -48,6 +49,8 @@ TEST(ViewerProtocol, ParsesEveryCommand) {
   EXPECT_EQ(std::get<Seek>(parse_command(R"({"cmd":"seek","seconds":2.5})")).seconds, 2.5);
   EXPECT_NE(error_of(R"({"cmd":"seek","seconds":-1})").find("within 0..1e6"), std::string::npos);
   EXPECT_NE(error_of(R"({"cmd":"play"})").find("true or false"), std::string::npos);
+  EXPECT_EQ(std::get<ToneMapChoice>(parse_command(R"({"cmd":"tonemap","name":"aces"})")).name, "aces");
+  EXPECT_NE(error_of(R"({"cmd":"tonemap","name":"filmic"})").find("unknown tone map"), std::string::npos);
   const Inspect inspect = std::get<Inspect>(parse_command(R"({"cmd":"inspect","x":12,"y":0})"));
   EXPECT_EQ(inspect.x, 12);
   EXPECT_EQ(inspect.y, 0);
@@ -110,7 +113,29 @@ TEST(ViewerProtocol, FuzzCorpusParsesOrIsRefused) {
     }
   }
   EXPECT_GE(files, 10);
-  EXPECT_GE(parsed, 17) << "the valid seeds (every command) parse";
+  EXPECT_GE(parsed, 18) << "the valid seeds (every command) parse";
+}
+
+// The display's curves: clip is the exposure alone; Reinhard maps luminance L to L / (1 + L) keeping
+// the hue; the ACES fit is 0 at 0, about 0.8 at 1 and below 1 for large values.
+TEST(ViewerDisplay, ToneCurves) {
+  Image image(3, 1);
+  image.pixels = {Rgb(0.5f), Rgb(1.f, 0.5f, 0.25f), Rgb(100.f)};
+  const Image clipped = displayed(image, Display{2.f, ToneMap::clip});
+  EXPECT_EQ(clipped.pixels[0].r, 1.f);
+  EXPECT_EQ(clipped.pixels[2].g, 200.f);
+  const Image reinhard = displayed(image, Display{1.f, ToneMap::reinhard});
+  EXPECT_NEAR(reinhard.pixels[0].r, 0.5f / 1.5f, 1e-6f);
+  const float l = luminance(Rgb(1.f, 0.5f, 0.25f));
+  EXPECT_NEAR(reinhard.pixels[1].g / reinhard.pixels[1].r, 0.5f, 1e-6f) << "the hue is kept";
+  EXPECT_NEAR(luminance(reinhard.pixels[1]), l / (1.f + l), 1e-6f);
+  const Image aces = displayed(image, Display{1.f, ToneMap::aces});
+  EXPECT_NEAR(aces.pixels[1].r, 0.8038f, 1e-3f);
+  EXPECT_LT(aces.pixels[2].r, 1.05f);
+  EXPECT_GT(aces.pixels[2].r, 1.0f);
+  EXPECT_EQ(displayed(Image(1, 1), Display{1.f, ToneMap::aces}).pixels[0].r, 0.f);
+  EXPECT_THROW(parse_tone_map("filmic"), Error);
+  for (const std::string& name : tone_map_names()) EXPECT_EQ(tone_map_name(parse_tone_map(name)), name);
 }
 
 TEST(ViewerCamera, TurnsKeepAnOrthonormalFrameAndMovesFollowIt) {

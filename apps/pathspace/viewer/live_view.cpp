@@ -18,13 +18,6 @@
 
 namespace pathspace::viewer {
 
-Image with_exposure(const Image& image, float scale) {
-  Image shown = image;
-  if (scale != 1.f)
-    for (Rgb& p : shown.pixels) p = p * scale;
-  return shown;
-}
-
 LiveView::LiveView(const PerspectiveCamera& home, float step, RenderChoice choice, FrameSaver saver,
                    std::shared_ptr<const Image> reference, FlightRecorder recorder, double animation_fps)
     : home_(home),
@@ -45,7 +38,7 @@ std::optional<Frame> LiveView::next_frame(uint64_t after, std::chrono::milliseco
   const Pending pending = latest_;
   lock.unlock();  // encode without holding up the render thread (two clients may both encode it)
   const Frame frame{pending.sequence,
-                    std::make_shared<const std::string>(encode_image("frame.png", with_exposure(*pending.image, pending.scale), ImageEncoding::fast)),
+                    std::make_shared<const std::string>(encode_image("frame.png", displayed(*pending.image, pending.display), ImageEncoding::fast)),
                     pending.stats_json};
   lock.lock();
   if (frame.sequence > encoded_.sequence) encoded_ = frame;
@@ -101,7 +94,7 @@ std::optional<std::string> LiveView::apply(const Command& command) {
       newest = latest_;
     }
     if (!newest.image) throw Error("no frame to save yet");
-    return saver_(*newest.image, newest.scale, newest.label);
+    return saver_(*newest.image, newest.display, newest.label);
   }
   if (const auto* record = std::get_if<Record>(&command)) {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -172,6 +165,9 @@ std::optional<std::string> LiveView::apply(const Command& command) {
     } else if (const auto* e = std::get_if<Exposure>(&command)) {
       exposure_stops_ = e->stops;
       exposure_changed_ = true;
+    } else if (const auto* t = std::get_if<ToneMapChoice>(&command)) {
+      tone_ = parse_tone_map(t->name);
+      exposure_changed_ = true;  // shown again at once
     } else if (std::holds_alternative<OptionsRequest>(command)) {
       reply = options_json();
     } else if (const auto* s = std::get_if<SetOption>(&command)) {
@@ -332,6 +328,7 @@ void LiveView::split_failed(const std::string& message) {
 
 void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
   double stops;
+  ToneMap tone;
   std::chrono::steady_clock::time_point start;
   PerspectiveCamera camera;
   std::string shown, split;
@@ -348,6 +345,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
     shown = shown_;
     split = split_label_;
     stops = exposure_stops_;
+    tone = tone_;
     exposure_changed_ = false;
     start = view_start_;
   }
@@ -379,7 +377,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
   auto frame_image = std::make_shared<const Image>(std::move(*image));
   if (recording) {
     std::lock_guard<std::mutex> writing(frame_writing_);
-    recorder_.frame(*frame_image, float(std::exp2(stops)));
+    recorder_.frame(*frame_image, Display{float(std::exp2(stops)), tone});
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json j = {{"stats",
@@ -397,6 +395,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
                                       {"images", images},
                                       {"split", split.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(split)},
                                       {"shown", shown},
+                                      {"tonemap", tone_map_name(tone)},
                                       {"animation", animation},
                                       {"error", error},
                                       {"camera_options", camera_options(camera)}}}};
@@ -404,7 +403,7 @@ void LiveView::publish(RenderSnapshot snapshot, uint64_t view, int preview) {
     std::lock_guard<std::mutex> lock(mutex_);
     const std::string label = fmt::format("view{}-{}spp{}{}", view, stats.spp, preview > 1 ? "-preview" : "",
                                           shown_found == "image" ? "" : "-" + shown_found);
-    latest_ = Pending{latest_.sequence + 1, std::move(frame_image), float(std::exp2(stops)), j.dump(), label};
+    latest_ = Pending{latest_.sequence + 1, std::move(frame_image), Display{float(std::exp2(stops)), tone}, j.dump(), label};
   }
   frame_ready_.notify_all();
 }

@@ -13,6 +13,7 @@
 #include "pathspace/options/option_values.h"
 #include "pathspace/session/render_config.h"
 #include "pathspace/session/render_session.h"
+#include "viewer/display.h"
 #include "viewer/viewer_server.h"
 
 namespace pathspace::viewer {
@@ -27,18 +28,15 @@ struct RenderChoice {
   std::string device;
 };
 
-// The image as the page shows it: scaled by the display exposure (2^stops).
-Image with_exposure(const Image& image, float scale);
-
-// Writes a saved frame (Save): the image as rendered, the display scale, and a label naming the view
-// ("view3-64spp", with the debug image's name when one is shown); returns the reply to the client.
-using FrameSaver = std::function<std::string(const Image& image, float scale, const std::string& label)>;
+// Writes a saved frame (Save): the image as rendered, how the page shows it, and a label naming the
+// view ("view3-64spp", with the debug image's name when one is shown); returns the reply to the client.
+using FrameSaver = std::function<std::string(const Image& image, const Display& display, const std::string& label)>;
 
 // Records a flight (Record): start() and stop() return the replies to the client (stop() may take
 // seconds: it encodes the video); frame() writes one frame shown, on the render thread.
 struct FlightRecorder {
   std::function<std::string()> start;
-  std::function<void(const Image& image, float scale)> frame;
+  std::function<void(const Image& image, const Display& display)> frame;
   std::function<std::string()> stop;
 };
 
@@ -132,12 +130,13 @@ class LiveView final : public ViewerBackend {
   bool time_changed_ = false;
   std::string shown_ = "image";  // "image" or a debug image's name
   double exposure_stops_ = 0.0;
+  ToneMap tone_ = ToneMap::clip;
   bool exposure_changed_ = false;
   // The newest frame before encoding, and the newest encoded one.
   struct Pending {
     uint64_t sequence = 0;
     std::shared_ptr<const Image> image;
-    float scale = 1.f;
+    Display display;
     std::string stats_json;
     std::string label;  // FrameSaver's
   };

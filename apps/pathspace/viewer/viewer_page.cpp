@@ -24,6 +24,7 @@ body { margin: 0; background: #202124; color: #e8eaed; font: 14px sans-serif; }
 <div id="status">connecting</div>
 <div id="bar">
   <label>exposure <input id="exposure" type="range" min="-8" max="8" step="0.5" value="0"></label>
+  <label>tone <select id="tonemap"><option value="clip">clip</option><option value="reinhard">reinhard</option><option value="aces">aces</option></select></label>
   <label>show <select id="show"><option value="image">image</option></select></label>
   <label>right half: <select id="split"><option value="off">off</option></select></label>
   <span>speed <span id="speed">1</span>x (+/-)</span>
@@ -238,6 +239,7 @@ document.getElementById("record").addEventListener("click", () => send({cmd: "re
 document.getElementById("save").addEventListener("click", () => send({cmd: "save"}));
 document.getElementById("show").addEventListener("change", ev => send({cmd: "show", image: ev.target.value}));
 document.getElementById("exposure").addEventListener("input", ev => send({cmd: "exposure", stops: Number(ev.target.value)}));
+document.getElementById("tonemap").addEventListener("change", ev => send({cmd: "tonemap", name: ev.target.value}));
 document.getElementById("copy").addEventListener("click", () => {
   const cli = document.getElementById("cli");
   cli.select();

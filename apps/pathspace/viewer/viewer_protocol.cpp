@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pathspace/base/error.h"
+#include "viewer/display.h"
 
 namespace pathspace::viewer {
 
@@ -77,6 +78,12 @@ Command parse_command(const std::string& message) {
     only_fields(j, {"cmd", "stops"});
     return Exposure{number(j, "stops", 20.0)};
   }
+  if (cmd == "tonemap") {
+    only_fields(j, {"cmd", "name"});
+    const std::string name = text(j, "name", 64, true);
+    parse_tone_map(name);  // an unknown curve is refused here, before anything acts
+    return ToneMapChoice{name};
+  }
   if (cmd == "options") {
     only_fields(j, {"cmd"});
     return OptionsRequest{};
@@ -117,7 +124,7 @@ Command parse_command(const std::string& message) {
     if (seconds < 0.0) throw Error("\"seconds\" must be a finite number within 0..1e6");
     return Seek{seconds};
   }
-  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record, inspect, play, seek)",
+  throw Error(fmt::format("unknown command \"{}\" (frame, move, turn, reset, exposure, options, set, unset, show, save, split, record, inspect, play, seek, tonemap)",
                           cmd.substr(0, 40)));
 }
 

@@ -27,6 +27,10 @@ struct Reset {};
 struct Exposure {
   double stops = 0;
 };
+// The display's tone curve by name: clip, reinhard or aces (display.h).
+struct ToneMapChoice {
+  std::string name;
+};
 // The options the current integrator and filter take, from the registry (with their values now).
 struct OptionsRequest {};
 // Gives an integrator or filter option (by name, without dashes; a flag's value is ignored), or
@@ -70,7 +74,7 @@ struct Seek {
   double seconds = 0;
 };
 using Command =
-    std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record, Inspect, Play, Seek>;
+    std::variant<FrameRequest, Move, Turn, Reset, Exposure, OptionsRequest, SetOption, UnsetOption, Show, Save, Split, Record, Inspect, Play, Seek, ToneMapChoice>;
 
 // The command of one message. Throws pathspace::Error with the reason (not JSON, too long, unknown
 // "cmd", a missing or non-finite or out-of-range number, an unknown field).
