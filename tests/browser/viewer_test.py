@@ -13,6 +13,7 @@ Exit 0 on success, 1 on a failed check, 77 (ctest: skipped) when chromium, chrom
 is missing and PATHSPACE_ALLOW_MISSING_BROWSER=1, else 1 with the missing thing named.
 """
 import argparse
+import contextlib
 import os
 import re
 import signal
@@ -45,6 +46,20 @@ def start_viewer(pathspace, extra, resolution="64x48", scene="cornell-box"):
         print("the viewer printed no URL: " + line + proc.stdout.read())
         sys.exit(1)
     return proc, match.group(1)
+
+
+@contextlib.contextmanager
+def viewer_page(pathspace, extra, **viewer_args):
+    """A viewer (start_viewer's arguments) with a browser on its page; both end afterwards."""
+    proc, url = start_viewer(pathspace, extra, **viewer_args)
+    driver = make_driver(window="800,600", script_timeout=30)
+    try:
+        driver.get(url)
+        yield driver
+    finally:
+        driver.quit()
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(timeout=30)
 
 
 def http_status(url):
@@ -289,10 +304,7 @@ def main():
     subprocess.run([args.pathspace, "render", "cornell-box", "-r", "64x48", "-s", "64", "-q", "-o", reference], check=True)
     small = subprocess.run([args.pathspace, "view", "cornell-box", "-r", "32x24", "--reference", reference], capture_output=True, text=True)
     check(small.returncode == 2 and "64x48" in small.stderr, "a reference of another size is a usage error: " + small.stderr.strip())
-    measured, measured_url = start_viewer(args.pathspace, ["--reference", reference])
-    driver = make_driver(window="800,600", script_timeout=30)
-    try:
-        driver.get(measured_url)
+    with viewer_page(args.pathspace, ["--reference", reference]) as driver:
         check(wait_for(driver, "document.getElementById('metrics').textContent.includes('relMSE')"), "the metrics show: " +
               str(driver.execute_script("return document.getElementById('metrics').textContent")))
         check(wait_for(driver, "!document.getElementById('plot').hidden"), "the metrics are plotted")
@@ -305,31 +317,17 @@ def main():
         check(inspected and "luminance error" in str(inspected),
               f"the inspector shows the reference's pixel: {inspected} (error: {error_text(driver)})")
         driver.save_screenshot(os.path.join(shots, "viewer-reference.png"))
-    finally:
-        driver.quit()
-        measured.send_signal(signal.SIGTERM)
-        measured.wait(timeout=30)
 
     # A move while a frame request waits, at a size where a pass takes far longer than its preview.
-    idle, idle_url = start_viewer(args.pathspace, ["--filter", "hashed", "--max-spp", "2"], resolution="640x360")
-    driver = make_driver(window="800,600", script_timeout=30)
-    try:
-        driver.get(idle_url)
+    with viewer_page(args.pathspace, ["--filter", "hashed", "--max-spp", "2"], resolution="640x360") as driver:
         check(wait_for(driver, "document.getElementById('status').textContent.includes('2 spp')"), "the viewer idles at --max-spp")
         seen = driver.execute_async_script(PENDING_FRAME)
         print("frames after the move:", seen)
         check(len(seen) >= 2 and seen[0] == [1, 2], "a move is read while a frame request waits, and answered by a preview first")
         check([1, 1] in seen, "the full view follows its preview")
-    finally:
-        driver.quit()
-        idle.send_signal(signal.SIGTERM)
-        idle.wait(timeout=30)
 
     # An animated scene: Play advances its time frame by frame, Pause stops it, a time seeks.
-    animated, animated_url = start_viewer(args.pathspace, ["--filter", "hashed", "--temporal", "integrate"], scene="cornell-moving-light")
-    driver = make_driver(window="800,600", script_timeout=30)
-    try:
-        driver.get(animated_url)
+    with viewer_page(args.pathspace, ["--filter", "hashed", "--temporal", "integrate"], scene="cornell-moving-light") as driver:
         check(wait_for(driver, "!document.getElementById('animation').hidden"), "an animated scene shows its play controls")
         before = pixels(driver)
         driver.find_element("id", "play").click()
@@ -341,10 +339,6 @@ def main():
         driver.execute_script("const t = document.getElementById('time'); t.value = '2'; t.dispatchEvent(new Event('change'));")
         check(wait_for(driver, "document.getElementById('status').textContent.includes('t 2.00 s')"), "a time seeks the animation")
         driver.save_screenshot(os.path.join(shots, "viewer-animation.png"))
-    finally:
-        driver.quit()
-        animated.send_signal(signal.SIGTERM)
-        animated.wait(timeout=30)
 
     guarded, guarded_url = start_viewer(args.pathspace, ["--listen", "127.0.0.1"])
     try:
