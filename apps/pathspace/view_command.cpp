@@ -168,7 +168,6 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
   uint64_t view = 0;
   std::unique_ptr<RenderSession> right;    // the split screen's right half, or null
   std::unique_ptr<RenderSession> preview;  // the view at 1/--preview of the resolution, made at the first move
-  RenderConfig preview_config = config;
   while (interrupt.signal() == 0) {
     const std::optional<PerspectiveCamera> camera = live->take_camera();
     const std::optional<double> seconds = live->take_time();
@@ -186,14 +185,10 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     // move reused, accel/accel.h); the view's is then shared with the others.
     const std::shared_ptr<const Accel> frame_accel = seconds ? nullptr : accel;
     std::optional<RenderConfig> changed = live->take_config();
-    if (changed) {
-      preview_config = *changed;
-      preview.reset();
-    }
     // A move is answered by a preview first, before the full view restarts: one pass at a fraction
     // of the pixels; while the camera moves, the only frames shown (the next move aborts the full
     // view's pass).
-    if (camera && !seconds && preview && !right) {
+    if (camera && !seconds && !changed && preview && !right) {
       preview->begin_frame(preview_scene(*scene, o.preview), accel, view + 1);
       if (preview->run(RunLimit::for_passes(1)).passes > 0) {
         RenderSnapshot shown = preview->snapshot(SnapshotImages::mean);
@@ -210,11 +205,10 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
       try {
         next_session = std::make_unique<RenderSession>(scene, frame_accel, std::move(*changed));
         live->config_applied();
+        preview.reset();  // made again with the new options after the view's first pass
         ++view;
       } catch (const Error& e) {
         live->config_failed(e.what());
-        preview_config = session->config();
-        preview.reset();
       }
     }
     if (!next_session && (camera || seconds || session->aborted())) {
@@ -258,7 +252,7 @@ int run_view_command(const ViewOptions& o, const CLI::App& cmd) {
     // Made, with a first pass, after the view's first pass, not at the move it serves: a new
     // session's first pass takes a few hundred ms more than the next (the filter's table and buffers).
     if (!preview && o.preview > 1 && r.passes > 0) {
-      preview = std::make_unique<RenderSession>(preview_scene(*scene, o.preview), accel, preview_config);
+      preview = std::make_unique<RenderSession>(preview_scene(*scene, o.preview), accel, session->config());
       preview->run(RunLimit::for_passes(1));
     }
   }
