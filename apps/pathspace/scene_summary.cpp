@@ -43,6 +43,7 @@ std::string base_material_kind(const Material& m) {
     case MaterialType::rough_dielectric: return "rough dielectric";
     case MaterialType::coated_diffuse: return "coated diffuse";
     case MaterialType::coated_conductor: return "coated conductor";
+    case MaterialType::interface: return "interface (bounds media only)";
     case MaterialType::standard: break;
   }
   std::vector<std::string> lobes;

@@ -79,7 +79,7 @@ Tally analog(const Material& m, const Vec3& wo, int n, Pcg32& rng) {
       const float zp = w.z > 0.f ? z + dz : z - dz;
       if (zp > 0.f && zp < m.thickness) {
         if (r() >= m.medium_albedo.r) break;  // absorbed in the slab
-        w = layered::hg_sample(w, m.g, {r(), r()});
+        w = hg_sample(w, m.g, {r(), r()});
         z = zp;
         continue;
       }

@@ -1,5 +1,9 @@
 #include "pathspace/integrators/device_registry.h"
 
+#include <algorithm>
+
+#include "pathspace/scene/scene.h"
+
 namespace pathspace {
 
 namespace {
@@ -11,7 +15,12 @@ bool listed(const std::vector<std::string>& names, const std::string& name) {
 }
 
 // Every integrator and filter runs on the CPU; the entry's own factories build them there.
-const DeviceRegistrar kCpuRegistrar{DeviceEntry{DeviceEntry::kCpu, "the CPU, every core (--threads)", {"*"}, {"*"}, nullptr}};
+const DeviceRegistrar kCpuRegistrar{DeviceEntry{DeviceEntry::kCpu, "the CPU, every core (--threads)", {"*"}, {"*"}, nullptr, true}};
+
+bool has_media(const Scene& scene) {
+  return !scene.media.empty() || std::any_of(scene.materials.begin(), scene.materials.end(),
+                                             [](const Material& m) { return m.type == MaterialType::interface; });
+}
 
 }  // namespace
 
@@ -39,6 +48,19 @@ void check_device(const std::string& device, const std::string& integrator, cons
     throw OptionError("--filter " + filter + " does not run on --device " + device + " yet; there: --filter " +
                       (runs.empty() ? "none" : runs));
   }
+}
+
+void check_media(const Scene& scene, const std::string& device, const std::string& integrator) {
+  if (!has_media(scene)) return;
+  if (!integrator_registry().at(integrator).renders_media) {
+    std::string renders;
+    for (const IntegratorEntry& e : integrator_registry().entries())
+      if (e.renders_media) renders += (renders.empty() ? "" : ", ") + e.name;
+    throw OptionError("the scene has participating media, which --integrator " + integrator +
+                      " does not render yet (docs/media.md); --integrator " + renders + " do");
+  }
+  if (!device_registry().at(device).renders_media)
+    throw OptionError("the scene has participating media, which --device " + device + " does not render yet (docs/media.md)");
 }
 
 std::string devices_of_integrator(const std::string& integrator) {

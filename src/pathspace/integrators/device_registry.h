@@ -23,6 +23,8 @@ struct DeviceEntry {
   // The integrator `name` on this device, or null where the integrator entry's own factory builds it
   // (the CPU). Throws pathspace::Error when the device is absent ("no CUDA device").
   std::function<std::unique_ptr<Integrator>(const IntegratorContext&, const std::string& integrator, const std::any& settings)> create;
+  // Whether its integrators render participating media where their entries do (docs/media.md).
+  bool renders_media = false;
 
   bool runs_integrator(const std::string& integrator) const;
   bool runs_filter(const std::string& filter) const;  // FilterChoice::kNone always
@@ -36,6 +38,10 @@ struct DeviceRegistrar {
 
 // Throws OptionError unless the device exists and runs the integrator and the filter, naming those it runs.
 void check_device(const std::string& device, const std::string& integrator, const std::string& filter);
+
+// Throws Error when the scene has participating media (or surfaces that only bound media) and the
+// integrator or the device does not render them, naming those that do.
+void check_media(const Scene& scene, const std::string& device, const std::string& integrator);
 
 // The devices an integrator runs on ("cpu, cuda").
 std::string devices_of_integrator(const std::string& integrator);

@@ -37,6 +37,9 @@ struct IntegratorEntry {
   // The filters it composes with (empty: none; kAllFilters: every registered path space filter).
   static constexpr const char* kAllFilters = "*";
   std::vector<std::string> filters;
+  // Whether it renders scenes with participating media (docs/media.md); the session refuses such a
+  // scene for the others.
+  bool renders_media = false;
   std::function<std::unique_ptr<Integrator>(const IntegratorContext&, const std::any&)> create;
 
   bool composes_with(const std::string& filter) const;
@@ -60,6 +63,12 @@ IntegratorEntry make_integrator_entry(
     return create(ctx, settings_cast<Settings>(settings, owner));
   };
   return e;
+}
+
+// `entry`, marked as rendering participating media.
+inline IntegratorEntry with_media(IntegratorEntry entry) {
+  entry.renders_media = true;
+  return entry;
 }
 
 // The factory of an integrator constructed as T(scene, accel, settings, seed).

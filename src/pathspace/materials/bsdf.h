@@ -36,6 +36,7 @@ PS_INLINE Rgb bsdf_eval(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode)
     case MaterialType::rough_dielectric: return rough_dielectric::eval(m, wo, wi, mode);
     case MaterialType::coated_diffuse:
     case MaterialType::coated_conductor: return layered::eval(m, wo, wi, mode);
+    case MaterialType::interface: break;
   }
   return {};
 }
@@ -48,6 +49,7 @@ PS_INLINE float bsdf_pdf(const Material& m, Vec3 wo, Vec3 wi, TransportMode mode
     case MaterialType::rough_dielectric: return rough_dielectric::pdf(m, wo, wi, mode);
     case MaterialType::coated_diffuse:
     case MaterialType::coated_conductor: return layered::pdf(m, wo, wi);
+    case MaterialType::interface: break;
   }
   return 0.f;
 }
@@ -62,6 +64,7 @@ PS_INLINE bool bsdf_sample(const Material& m, Vec3 wo, float u_lobe, Point2 u, T
     case MaterialType::rough_dielectric: ok = rough_dielectric::sample(m, wo, u_lobe, u, mode, s); break;
     case MaterialType::coated_diffuse:
     case MaterialType::coated_conductor: ok = layered::sample(m, wo, u_lobe, u, mode, s); break;
+    case MaterialType::interface: break;
   }
   if (ok && flipped) s->wi.z = -s->wi.z;
   return ok;
@@ -73,6 +76,7 @@ PS_INLINE bool bsdf_has_non_delta(const Material& m) {
     case MaterialType::standard: return standard::has_non_delta(m);
     case MaterialType::coated_diffuse:
     case MaterialType::coated_conductor: return layered::has_non_delta(m);
+    case MaterialType::interface: return false;
     default: return true;
   }
 }

@@ -45,7 +45,8 @@ PS_INLINE BsdfLayers bsdf_layers(const Material& m) {
       return l;
     case MaterialType::rough_dielectric:
     case MaterialType::coated_diffuse:  // the random walk's estimate is not a sum of demodulable layers
-    case MaterialType::coated_conductor: return l;
+    case MaterialType::coated_conductor:
+    case MaterialType::interface: return l;
   }
   return l;
 }

@@ -23,6 +23,7 @@
 #include "pathspace/materials/microfacet_distribution.h"
 #include "pathspace/materials/rough_conductor.h"
 #include "pathspace/materials/rough_dielectric.h"
+#include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/hash.h"
 #include "pathspace/sampling/rng.h"
@@ -167,28 +168,10 @@ PS_INLINE bool base_sample(const Material& m, const Vec3& wo, Point2 u, Event* e
   return true;
 }
 
-// ---- The slab: transmittance over a height dz along w (thickness in mean free paths), and a
-// Henyey-Greenstein phase function of the angle between the incoming and outgoing travel directions.
+// ---- The slab: transmittance over a height dz along w (thickness in mean free paths); its phase
+// function is media/henyey_greenstein.h.
 
 PS_INLINE float transmittance(float dz, const Vec3& w) { return expf(-fabsf(dz / w.z)); }
-
-PS_INLINE float hg_phase(float cos_travel, float g) {
-  const float denom = 1.f + g * g - 2.f * g * cos_travel;
-  return kInvFourPi * (1.f - g * g) / (denom * safe_sqrt(denom));
-}
-
-// A new travel direction after scattering of a walk travelling along `w`; the weight is 1 (exact sampling).
-PS_INLINE Vec3 hg_sample(const Vec3& w, float g, Point2 u) {
-  float cos_t;
-  if (fabsf(g) < 1e-3f) {
-    cos_t = 1.f - 2.f * u.x;
-  } else {
-    const float s = (1.f - g * g) / (1.f - g + 2.f * g * u.x);
-    cos_t = clamp_to((1.f + g * g - s * s) / (2.f * g), -1.f, 1.f);
-  }
-  const float sin_t = safe_sqrt(1.f - cos_t * cos_t), phi = kTwoPi * u.y;
-  return Frame(w).to_world(Vec3(sin_t * cosf(phi), sin_t * sinf(phi), cos_t));
-}
 
 PS_INLINE float power_heuristic(float a, float b) {
   const float a2 = a * a, b2 = b * b;

@@ -15,6 +15,8 @@ enum class MaterialType : uint8_t {
   rough_dielectric,  // microfacet glass (Walter et al. 2007; GGX or Beckmann), visible-normal sampling
   coated_diffuse,    // dielectric coat over a Lambertian base (materials/layered_bsdf.h; pbrt-v4 coateddiffuse)
   coated_conductor,  // dielectric coat over a conductor (materials/layered_bsdf.h; pbrt-v4 coatedconductor)
+  interface,         // no surface: it only bounds media (pbrt-v4's "interface", Mitsuba's null BSDF);
+                     // paths pass it unchanged (media/medium.h), it scatters nothing
 };
 
 enum class TransportMode : uint8_t { radiance, importance };

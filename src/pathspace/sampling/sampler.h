@@ -17,6 +17,10 @@ class Sampler {
   // The value of one dimension (random access).
   PS_HD float at(uint32_t dimension) const { return bits_to_unit_float(mix64(base_ + (uint64_t(dimension) + 1) * kGoldenGamma)); }
 
+  // 64 random bits of one dimension (seeds a Pcg32 stream where a path needs an unbounded count of
+  // numbers, as delta tracking does); independent of at(dimension) for practical purposes.
+  PS_HD uint64_t bits(uint32_t dimension) const { return mix64(~base_ + (uint64_t(dimension) + 1) * kGoldenGamma); }
+
   // Sequential access from a cursor; set_dimension jumps to a fixed offset.
   PS_HD float next_1d() { return at(dimension_++); }
   PS_HD void set_dimension(uint32_t d) { dimension_ = d; }

@@ -347,6 +347,7 @@ void Scene::finalize() {
     throw Error("end normals (motion blur) without end positions");
   }
   if (camera.width <= 0 || camera.height <= 0) throw Error("scene has no camera resolution");
+  media.finalize(triangles.size(), spheres.size(), lights.size());
 
   const Bounds3 b = geometry_bounds();
   bounds_ = has_bounds_override ? bounds_override : (b.empty() ? BoundingSphere{Vec3(), 1.f} : bounding_sphere(b));
@@ -416,6 +417,7 @@ SceneView Scene::view() const {
   if (light_selection == LightSelection::bvh && !light_tree_.nodes().empty()) v.light_tree = light_tree_.view();
   v.environment_light = environment_light_;
   v.environment_map = environment_image.view();
+  v.media = media.view();
   v.camera = camera;
   v.camera_moves = camera_moves;
   v.lights_move = std::any_of(lights.begin(), lights.end(), [](const Light& l) { return is_point_light(l) && l.moves; });

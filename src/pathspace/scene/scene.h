@@ -14,6 +14,7 @@
 #include "pathspace/scene/environment_image.h"
 #include "pathspace/scene/image_texture.h"
 #include "pathspace/scene/light_tree.h"
+#include "pathspace/scene/scene_media.h"
 #include "pathspace/scene/scene_sources.h"
 #include "pathspace/scene/scene_view.h"
 
@@ -49,6 +50,9 @@ class Scene {
   std::vector<ImageTexture> textures;  // referenced by Material::diffuse_texture etc.
   std::vector<Light> lights;
   EnvironmentImage environment_image;  // the environment light's image, or empty (constant)
+  // Participating media and which shapes, lights and the camera they belong to (docs/media.md);
+  // empty in a scene without media.
+  SceneMedia media;
   PerspectiveCamera camera;
   // Motion blur of the camera (scene/motion.h, camera_at): camera is the camera at shutter open and
   // camera_end its pose at shutter close. Its lens and image do not change.

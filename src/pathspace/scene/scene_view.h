@@ -10,6 +10,7 @@
 #include "pathspace/lights/light.h"
 #include "pathspace/lights/light_tree_view.h"
 #include "pathspace/materials/material.h"
+#include "pathspace/media/media_view.h"
 #include "pathspace/math/bbox.h"
 #include "pathspace/sampling/discrete.h"
 #include "pathspace/scene/texture.h"
@@ -37,6 +38,7 @@ struct SceneView {
   LightTreeView light_tree;         // NEE at a shading point when active (scene/light_sampling.h)
   int32_t environment_light = -1;   // index of the environment light, or -1
   EnvironmentMapView environment_map;  // its image (texels null: constant radiance)
+  MediaView media;                  // participating media (count 0: none)
   PerspectiveCamera camera;         // at shutter open
   bool camera_moves = false;        // motion blur: the camera reaches camera_end at shutter close (camera_at)
   CameraPose camera_end;

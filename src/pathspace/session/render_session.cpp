@@ -39,13 +39,14 @@ std::string scene_fingerprint(const Scene& scene) {
          " spheres=" + std::to_string(scene.spheres.size()) + " materials=" + std::to_string(scene.materials.size()) +
          " lights=" + std::to_string(scene.lights.size()) + " max_segments=" + std::to_string(scene.max_path_segments) +
          " bounds=" + std::to_string(b.center.x) + "," + std::to_string(b.center.y) + "," + std::to_string(b.center.z) + "," +
-         std::to_string(b.radius);
+         std::to_string(b.radius) + (scene.media.empty() ? std::string() : " media=" + std::to_string(scene.media.media.size()));
 }
 
 std::unique_ptr<Integrator> create_integrator(const Scene& scene, const Accel& accel, const RenderConfig& config,
                                               std::shared_ptr<PathSpaceFilter> carried = nullptr) {
   check_composition(config.integrator, config.filter.name);
   check_device(config.device, config.integrator, config.filter.name);
+  check_media(scene, config.device, config.integrator);
   const IntegratorContext context{scene, accel, config.seed, config.filter, std::move(carried)};
   const DeviceEntry& device = device_registry().at(config.device);
   if (device.create) return device.create(context, config.integrator, config.settings);

@@ -18,6 +18,9 @@ inline constexpr uint32_t kPerVertex = 8;
 inline constexpr uint32_t kLensU = 0x40000000u;
 // The camera path's time in a scene that moves (scene/motion.h): read only there.
 inline constexpr uint32_t kTime = kLensU + 2;
+// The seed of the path's stream of numbers for distance sampling and transmittance in media
+// (media/free_flight.h; Sampler::bits): read only in scenes with media.
+inline constexpr uint32_t kMediumStream = kLensU + 3;
 
 // Offsets inside a vertex's block.
 inline constexpr uint32_t kLightSelect = 0;

@@ -28,6 +28,8 @@ PS_HD inline constexpr uint32_t lens(uint32_t connection) { return kLensFirst + 
 // The light path's time in a scene that moves (scene/motion.h), below the lens range and far above
 // the per-vertex blocks: still scenes never read it.
 inline constexpr uint32_t kTime = 0x3fffff00u;
+// The seed of the light path's stream of numbers in media (Sampler::bits): scenes with media only.
+inline constexpr uint32_t kMediumStream = 0x3fffff01u;
 
 PS_HD inline constexpr uint32_t vertex(uint32_t index, uint32_t offset) { return kFirstVertex + index * kPerVertex + offset; }
 

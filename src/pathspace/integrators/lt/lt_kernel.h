@@ -13,6 +13,8 @@
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
+#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
 #include "pathspace/scene/light_emission.h"
@@ -41,6 +43,53 @@ PS_INLINE bool reaches_image(const SplatFilmView& film, const PixelFilter& filte
   return filter_reaches_image(filter, film.width, film.height, rx, ry);
 }
 
+// The medium a light path leaves its light into along d: the emitting shape's side where the shape
+// bounds media, else the light's own medium (MediaView::light_media).
+PS_INLINE int32_t light_medium(const SceneView& scene, const LightPathStart& start, const Vec3& d) {
+  const uint32_t index = uint32_t(start.light - scene.lights);
+  const int32_t own = scene.media.light_medium(index);
+  const Light& l = *start.light;
+  if (l.type != LightType::area_triangle && l.type != LightType::area_sphere) return own;
+  SurfaceHit at;
+  at.kind = l.type == LightType::area_triangle ? ShapeKind::triangle : ShapeKind::sphere;
+  at.prim = l.shape;
+  at.ng = start.emission.ng;
+  return scene.media.after(at, d, own);
+}
+
+}  // namespace lt_detail
+
+namespace lt_detail {
+// A light path's vertex in a medium at distance t along `ray`: its camera connection (phase function
+// times the transmittance to the camera; no cosine), then a direction from the phase function and
+// Russian roulette as at surfaces. False when the path ends.
+template <typename Tracer>
+PS_HD bool lt_medium_vertex(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const LtSettings& settings,
+                            const PerspectiveCamera& cam, const SplatFilmView& film, const Ray& ray, float t, int32_t medium,
+                            int segments, int max_segments, float beta0, float inv_paths, Pcg32& rng, PathCounters* counters,
+                            Rgb* beta, Ray* next) {
+  const Vec3 p = ray.at(t);
+  const float g = scene.media.media[medium].g;
+  const uint32_t v = uint32_t(segments - 1);
+  Projection pr;
+  if (cam.project(p, connection_lens_sample(cam, sampler, v + 1), &pr) && reaches_image(film, cam.filter, pr.rx, pr.ry)) {
+    ++counters->rays;
+    ++counters->shadow_rays;
+    const Rgb tr = transmittance_along(scene, tracer, spawn_shadow_ray(p, Vec3(0.f), pr.wi, pr.dist, scene.ray_epsilon, ray.time),
+                                       medium, rng, counters);
+    if (!is_black(tr)) splat(film, cam.filter, pr.rx, pr.ry, *beta * tr * (hg_phase(dot(ray.d, pr.wi), g) * pr.factor * inv_paths));
+  }
+  if (segments + 1 >= max_segments) return false;
+  const Point2 u{sampler.at(light_dims::vertex(v, light_dims::kBsdfU)), sampler.at(light_dims::vertex(v, light_dims::kBsdfU + 1))};
+  const Vec3 wi = hg_sample(ray.d, g, u);
+  if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
+    const float q = fminf(1.f, max_component(*beta) / beta0);
+    if (sampler.at(light_dims::vertex(v, light_dims::kRoulette)) >= q) return false;
+    *beta *= 1.f / q;
+  }
+  *next = Ray{p, wi, 0.f, kInfinity, ray.time};
+  return true;
+}
 }  // namespace lt_detail
 
 // Traces one light path and splats all its camera connections; inv_paths = 1 / (light paths per
@@ -59,6 +108,10 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   const Light& light = *start.light;
   const EmissionSample& e = start.emission;
   const float inv_select = 1.f / start.select_prob;
+  // Media (docs/media.md): the medium the path travels in and its stream of numbers.
+  const bool media = scene.media.any();
+  Pcg32 rng;
+  if (media) rng = Pcg32(sampler.bits(light_dims::kMediumStream), 0u);
 
   // Path length 1: the emitter seen by the camera. Only area lights have a visible surface; point,
   // directional and environment lights are never hit by camera rays either (PT agrees).
@@ -70,9 +123,12 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         ++counters->rays;
         ++counters->shadow_rays;
         prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
-        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time))) {
+        const Ray shadow = spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time);
+        const Rgb tr = media ? transmittance_along(scene, tracer, shadow, light_medium(scene, start, pr.wi), rng, counters)
+                             : Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
+        if (!is_black(tr)) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
-          splat(film, cam.filter, pr.rx, pr.ry, le * scale);
+          splat(film, cam.filter, pr.rx, pr.ry, le * tr * scale);
         }
       }
     }
@@ -82,12 +138,33 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   Rgb beta = e.weight * inv_select;
   const float beta0 = max_component(beta);  // Russian roulette looks at the throughput relative to this
   Ray ray = first_light_ray(scene, e);
+  int32_t medium = media ? light_medium(scene, start, e.d) : kVacuum;
 
   // The vertex reached after `segments` segments; its camera connection makes segments + 1.
   for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;
-    ++counters->rays;
-    if (!tracer.intersect(ray, &hit)) break;
+    bool found;
+    FreeFlight flight;
+    for (;;) {  // to the next surface or medium event, passing surfaces that only bound media
+      ++counters->rays;
+      found = tracer.intersect(ray, &hit);
+      if (media && medium != kVacuum) {
+        flight = sample_free_flight(scene.media, medium, ray, found ? hit.t : kInfinity, beta, rng);
+        beta *= flight.weight;
+        if (flight.event != MediumEvent::passed) break;
+      }
+      if (!(found && media && scene.materials[hit.material].type == MaterialType::interface)) break;
+      medium = scene.media.after(hit, ray.d, medium);
+      ray = spawn_ray(hit.p, hit.ng, ray.d, scene.ray_epsilon, ray.time);
+    }
+    if (flight.event == MediumEvent::absorbed) break;
+    if (flight.event == MediumEvent::scattered) {
+      if (!lt_medium_vertex(scene, tracer, sampler, settings, cam, film, ray, flight.t, medium, segments, max_segments, beta0,
+                            inv_paths, rng, counters, &beta, &ray))
+        break;
+      continue;
+    }
+    if (!found) break;
     Material textured;
     const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
@@ -108,9 +185,12 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
           ++counters->rays;
           ++counters->shadow_rays;
           prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
-          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time))) {
+          const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time);
+          const Rgb tr = media ? transmittance_along(scene, tracer, shadow, scene.media.after(hit, pr.wi, medium), rng, counters)
+                               : Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
+          if (!is_black(tr)) {
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
-            splat(film, cam.filter, pr.rx, pr.ry, beta * f * (cosines * pr.factor * inv_paths));
+            splat(film, cam.filter, pr.rx, pr.ry, beta * f * tr * (cosines * pr.factor * inv_paths));
           }
         }
       }
@@ -120,6 +200,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
     if (!continue_light_path(sampler, v, mat, frame, hit, wo, wo_ng, segments, settings.roulette_start, beta0,
                              scene.ray_epsilon, &beta, &ray))
       break;
+    medium = scene.media.after(hit, ray.d, medium);
   }
 }
 

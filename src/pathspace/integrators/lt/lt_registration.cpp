@@ -17,10 +17,10 @@ OptionTable<LtSettings> lt_options() {
   return t;
 }
 
-const IntegratorRegistrar kRegistrar{make_integrator_entry<LtSettings>(
+const IntegratorRegistrar kRegistrar{with_media(make_integrator_entry<LtSettings>(
     "lt", "light tracing: light paths connected to the camera and splatted (fixed-point, deterministic)",
     "Veach 1997, ch. 10 (the t = 1 strategies); camera projection: PCLT paper sec. 5.2", lt_options(), {},
-    construct_with_seed<LtIntegrator, LtSettings>())};
+    construct_with_seed<LtIntegrator, LtSettings>()))};
 
 }  // namespace
 

@@ -9,6 +9,8 @@
 #pragma once
 
 #include "pathspace/integrators/common/dimensions.h"
+#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
 #include "pathspace/integrators/pt/selectable_vertex.h"
@@ -144,6 +146,11 @@ struct PtPathState {
   int shadow_owner = -1;
   Ray shadow_ray;
   Rgb shadow_value[kMaxBsdfLayers];
+  // Media (docs/media.md): the medium the path's ray travels in, the one its shadow ray starts in,
+  // and the path's stream of numbers for distance sampling and transmittance (dims::kMediumStream).
+  int32_t medium = kVacuum;
+  int32_t shadow_medium = kVacuum;
+  Pcg32 medium_rng;
 
   PS_HD Rgb& radiance() { return owner < 0 ? prefix : open[owner].after; }
 };
@@ -278,6 +285,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
       const Rgb f = bsdf_eval(mat, wo, wi, TransportMode::radiance);
       if (!is_black(f)) {
         s->shadow_ray = spawn_shadow_ray(hit.p, hit.ng, ls.wi, ls.dist, scene.ray_epsilon, hit.time);
+        s->shadow_medium = scene.media.after(hit, ls.wi, s->medium);
         ++counters->rays;
         ++counters->shadow_rays;
         const float pdf_light = select_prob * ls.pdf_w;
@@ -337,7 +345,64 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     s->beta *= 1.f / q;
     s->abs_beta *= 1.f / q;
   }
-  s->ray = spawn_ray(hit.p, hit.ng, frame.to_world(bs.wi), scene.ray_epsilon, hit.time);
+  const Vec3 wi_world = frame.to_world(bs.wi);
+  s->medium = scene.media.after(hit, wi_world, s->medium);
+  s->ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon, hit.time);
+  ++s->segments;
+  return PtNext::extend;
+}
+
+// The path's ray scatters in its medium at distance `t` (media/free_flight.h; the flight's weight is
+// in s->beta already): next event estimation through the media (its shadow ray's transmittance is
+// pt_resolve_shadow's), then a new direction from the Henyey-Greenstein phase function, whose pdf
+// takes the place of the BSDF's in MIS. A medium vertex is a path vertex like a surface's: it counts
+// a segment and uses its vertex's sampler dimensions. Filters do not select it (yet).
+PS_INLINE PtNext pt_on_medium(const SceneView& scene, const Sampler& sampler, const PtSettings& settings, float t,
+                              PathCounters* counters, PtPathState* s) {
+  using namespace pt_detail;
+  const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
+  const Ray ray = s->ray;
+  const int segments = s->segments;
+  const Vec3 p = ray.at(t);
+  const float g = scene.media.media[s->medium].g;
+  s->prev_distance = s->path_distance;
+  s->path_distance += t;
+  if (segments >= max_segments) return PtNext::end;
+  const uint32_t v = uint32_t(segments - 1);
+
+  if (settings.nee && scene.num_lights > 0) {
+    float select_prob;
+    const uint32_t li = select_light_at(scene, p, Vec3(0.f), sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
+    LightSample ls;
+    const Point2 ul{sampler.at(dims::vertex(v, dims::kLightU)), sampler.at(dims::vertex(v, dims::kLightU + 1))};
+    if (li != LightTreeView::kNone && sample_light(scene, scene.lights[li], p, ray.time, ul, &ls)) {
+      const float phase = hg_phase(dot(ray.d, ls.wi), g);
+      s->shadow_ray = spawn_shadow_ray(p, Vec3(0.f), ls.wi, ls.dist, scene.ray_epsilon, ray.time);
+      s->shadow_medium = s->medium;
+      ++counters->rays;
+      ++counters->shadow_rays;
+      const float pdf_light = select_prob * ls.pdf_w;
+      const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, phase);
+      s->shadow_pending = true;
+      s->shadow_value[0] = s->beta * ls.li * (phase * w / pdf_light);
+      s->shadow_vertex = -1;
+      s->shadow_owner = s->owner;
+    }
+  }
+
+  const Point2 u{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
+  const Vec3 wi = hg_sample(ray.d, g, u);
+  s->after_delta = false;
+  s->prev_bsdf_pdf = hg_phase(dot(ray.d, wi), g);
+  s->prev_p = p;
+  s->prev_ns = Vec3(0.f);
+  if (settings.roulette_start >= 0 && segments >= settings.roulette_start) {
+    const float q = fminf(1.f, max_component(s->abs_beta));
+    if (sampler.at(dims::vertex(v, dims::kRoulette)) >= q) return PtNext::end;
+    s->beta *= 1.f / q;
+    s->abs_beta *= 1.f / q;
+  }
+  s->ray = Ray{p, wi, 0.f, kInfinity, ray.time};
   ++s->segments;
   return PtNext::extend;
 }
@@ -353,6 +418,13 @@ PS_INLINE void pt_resolve_shadow(PtPathState* s, bool occluded) {
   } else {
     (s->shadow_owner < 0 ? s->prefix : s->open[s->shadow_owner].after) += s->shadow_value[0];
   }
+}
+
+// The same with the shadow ray's transmittance through media (integrators/common/transmittance_along.h).
+PS_INLINE void pt_resolve_shadow(PtPathState* s, const Rgb& transmittance) {
+  if (!s->shadow_pending) return;
+  for (int l = 0; l < kMaxBsdfLayers; ++l) s->shadow_value[l] *= transmittance;
+  pt_resolve_shadow(s, is_black(transmittance));
 }
 
 // The ended path as a PathSample: its prefix and its selected vertices' records. With `append` they
@@ -378,14 +450,48 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
   OpenVertex open[kMaxSelectedVertices];
   PtPathState s;
   pt_begin(&s, ray, open, split_code);
+  const bool media = scene.media.any();
+  if (media) {
+    s.medium = scene.media.camera_medium;
+    s.medium_rng = Pcg32(sampler.bits(dims::kMediumStream), 0u);
+  }
   SurfaceHit hit = first;
   for (;;) {
+    if (media && s.medium != kVacuum) {
+      const FreeFlight flight = sample_free_flight(scene.media, s.medium, s.ray, found ? hit.t : kInfinity, s.abs_beta, s.medium_rng);
+      if (flight.event == MediumEvent::absorbed) break;
+      s.beta *= flight.weight;
+      s.abs_beta *= flight.weight;
+      if (flight.event == MediumEvent::scattered) {
+        const PtNext next = pt_on_medium(scene, sampler, settings, flight.t, counters, &s);
+        if (s.shadow_pending)
+          pt_resolve_shadow(&s, transmittance_along(scene, tracer, s.shadow_ray, s.shadow_medium, s.medium_rng, counters));
+        if (next == PtNext::end) break;
+        ++counters->rays;
+        found = tracer.intersect(s.ray, &hit);
+        continue;
+      }
+    }
     if (!found) {
       pt_on_miss(scene, settings, &s);
       break;
     }
+    if (media && scene.materials[hit.material].type == MaterialType::interface) {
+      // A surface that only bounds media: the ray goes on unchanged, in the medium beyond it.
+      s.medium = scene.media.after(hit, s.ray.d, s.medium);
+      s.path_distance += hit.t;
+      s.ray = spawn_ray(hit.p, hit.ng, s.ray.d, scene.ray_epsilon, s.ray.time);
+      ++counters->rays;
+      found = tracer.intersect(s.ray, &hit);
+      continue;
+    }
     const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, &s, probes, query_only, caustics);
-    if (s.shadow_pending) pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
+    if (s.shadow_pending) {
+      if (media)
+        pt_resolve_shadow(&s, transmittance_along(scene, tracer, s.shadow_ray, s.shadow_medium, s.medium_rng, counters));
+      else
+        pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
+    }
     if (next == PtNext::end) break;
     ++counters->rays;
     found = tracer.intersect(s.ray, &hit);

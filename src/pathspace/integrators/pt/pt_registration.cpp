@@ -50,13 +50,13 @@ OptionTable<PtSettings> pt_options() {
   return t;
 }
 
-const IntegratorRegistrar kRegistrar{make_integrator_entry<PtSettings>(
+const IntegratorRegistrar kRegistrar{with_media(make_integrator_entry<PtSettings>(
     "pt", "path tracing with next event estimation and MIS; filters the selected vertices with --filter",
     "Veach 1997 (MIS); path split for filtering: Binder, Fricke, Keller 2021, sec. 3", pt_options(),
     {IntegratorEntry::kAllFilters},
     [](const IntegratorContext& ctx, const PtSettings& s) -> std::unique_ptr<Integrator> {
       return std::make_unique<PtIntegrator>(ctx.scene, ctx.accel, s, ctx.seed, ctx.filter, ctx.carried_filter);
-    })};
+    }))};
 
 }  // namespace
 

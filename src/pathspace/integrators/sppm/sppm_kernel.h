@@ -60,6 +60,7 @@ PS_INLINE bool stores_visible_point(const Material& m, float glossy_roughness) {
     case MaterialType::rough_dielectric: return m.alpha >= glossy_roughness;
     case MaterialType::coated_diffuse: return true;
     case MaterialType::coated_conductor: return fmaxf(m.alpha, m.base_alpha) >= glossy_roughness;
+    case MaterialType::interface: return false;
   }
   return true;
 }

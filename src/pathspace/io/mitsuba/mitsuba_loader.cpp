@@ -13,6 +13,7 @@
 #include "pathspace/io/environment_file.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/mitsuba/mitsuba_materials.h"
+#include "pathspace/io/mitsuba/mitsuba_media.h"
 #include "pathspace/io/mitsuba/mitsuba_object.h"
 #include "pathspace/io/mitsuba/mitsuba_shapes.h"
 #include "pathspace/io/pbrt/pbrt_animated_transform.h"
@@ -46,6 +47,7 @@ class Builder {
       else if (tag == "bsdf") define_bsdf(n);
       else if (tag == "shape") shape(Object(doc_, n));
       else if (tag == "emitter") emitter(Object(doc_, n));
+      else if (tag == "medium") media_.define(n);
       else if (tag == "path") {}  // read by Document (file resolution)
       else w_->add(doc_.loc(n), "<" + tag + "> is not supported; ignored");
       before.mark_since(&scene_, doc_.loc(n));
@@ -212,6 +214,7 @@ class Builder {
     o.ignore({"near_clip", "far_clip", "shutter_open", "shutter_close", "principal_point_offset_x", "principal_point_offset_y"});
     for (const pugi::xml_node& n : o.children("film")) film(Object(doc_, n));
     for (const pugi::xml_node& n : o.children("sampler")) sampler(Object(doc_, n));
+    scene_.media.camera_medium = media_.endpoint_medium(o);
     o.warn_unused(w_);
   }
 
@@ -275,7 +278,8 @@ class Builder {
 
   uint32_t shape_material(const Object& o) {
     std::vector<pugi::xml_node> b = o.children("bsdf");
-    for (const pugi::xml_node& r : o.children("ref")) b.push_back(r);
+    for (const pugi::xml_node& r : o.children("ref"))
+      if (!media_.is_medium_ref(r)) b.push_back(r);  // media refs: shape_media
     if (b.size() > 1) w_->add(o.loc(), o.title() + " has more than one BSDF; the first is used");
     if (b.empty()) {
       if (default_material_ < 0) default_material_ = int(scene_.add_material(default_bsdf()));
@@ -295,6 +299,8 @@ class Builder {
   void shape(const Object& o, const InstanceTransform& instance = {}) {
     if (o.type() == "shapegroup") return shape_group(o);
     if (o.type() == "instance") return place_instance(o);
+    const pbrt::SceneCounts before = pbrt::SceneCounts::of(scene_);
+    const MediumInterface media = media_.shape_media(o);
     const uint32_t material = shape_material(o);
     Rgb radiance;
     for (const pugi::xml_node& n : o.children("emitter")) {
@@ -311,6 +317,7 @@ class Builder {
     if (!is_black(radiance) && (!is_black(m.diffuse) || !is_black(m.glossy) || !is_black(m.specular) || m.type != MaterialType::standard))
       w_->add(o.loc(), "an emissive shape's BSDF is ignored (pathspace emitters do not reflect light)");
     add_shape(o, material, radiance, folder_, shutter_, w_, &scene_, instance);
+    pbrt::bind_added(media, before, pbrt::SceneCounts::of(scene_), &scene_.media);
     o.warn_unused(w_);
   }
 
@@ -340,7 +347,15 @@ class Builder {
     o.warn_unused(w_);
   }
 
+  // An emitter with a medium (nested or <ref>) emits into it.
   void emitter(const Object& o) {
+    const pbrt::SceneCounts before = pbrt::SceneCounts::of(scene_);
+    const int32_t medium = media_.endpoint_medium(o);
+    placed_emitter(o);
+    pbrt::bind_added(make_medium_interface(medium, medium), before, pbrt::SceneCounts::of(scene_), &scene_.media);
+  }
+
+  void placed_emitter(const Object& o) {
     const std::string& t = o.type();
     if (t == "point") {
       Mat4 close;
@@ -467,6 +482,7 @@ class Builder {
   std::string folder_;
   Scene scene_;
   TextureBinding textures_{&scene_, {}};
+  MediaReader media_{doc_, folder_, w_, &scene_.media};
   NamedMaterials named_;
   std::map<std::string, uint32_t> material_index_;
   int default_material_ = -1;

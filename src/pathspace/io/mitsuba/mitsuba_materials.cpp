@@ -182,6 +182,8 @@ Material make_bsdf_nested(const Document& doc, const pugi::xml_node& node, const
     m = dielectric(o, folder, w);
   } else if (t == "plastic" || t == "roughplastic") {
     m = plastic(o, folder, textures, w);
+  } else if (t == "null") {  // no surface: the shape only bounds media (mitsuba_media.h)
+    m.type = MaterialType::interface;
   } else {
     w->add(o.loc(), "BSDF type '" + t + "' not supported; using grey diffuse 0.5");
     o.ignore_all();

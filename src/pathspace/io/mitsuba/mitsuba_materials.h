@@ -1,7 +1,8 @@
 // Mitsuba BSDFs mapped onto pathspace materials: twosided, diffuse, conductor/roughconductor (named
 // metals through the table shared with the pbrt loader), dielectric/roughdielectric map directly;
-// thindielectric, plastic/roughplastic and wrappers (bumpmap, mask, ...) are approximated with a
-// warning. Mitsuba BSDFs are one-sided unless wrapped in `twosided`, as pathspace's diffuse lobes.
+// null is an interface (it only bounds media); thindielectric, plastic/roughplastic and wrappers
+// (bumpmap, mask, ...) are approximated with a warning. Mitsuba BSDFs are one-sided unless wrapped
+// in `twosided`, as pathspace's diffuse lobes.
 #pragma once
 
 #include <map>

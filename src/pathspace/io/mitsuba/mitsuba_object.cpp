@@ -308,6 +308,11 @@ void Object::ignore(std::initializer_list<const char*> names) const {
   for (const char* n : names) find(n);
 }
 
+void Object::mark_used(const pugi::xml_node& node) const {
+  for (const Property& p : props_)
+    if (p.node == node) p.used = true;
+}
+
 void Object::ignore_all() const {
   for (const Property& p : props_) p.used = true;
 }

@@ -71,6 +71,8 @@ class Object {
 
   void ignore(std::initializer_list<const char*> names) const;
   void ignore_all() const;
+  // Marks the one nested element `node` used (a <ref> among others of the same tag).
+  void mark_used(const pugi::xml_node& node) const;
   // One warning per property or nested object nobody read.
   void warn_unused(LoadWarnings* w) const;
 

@@ -63,6 +63,7 @@ Scene SceneBuilder::finish(SceneFileSettings* settings) {
     settings->image_name = image_name_;
   }
   apply_imaging_ratio();
+  media_.finish(&scene_.media);
   scene_.finalize();
   return std::move(scene_);
 }
@@ -154,7 +155,11 @@ void SceneBuilder::dispatch(const Statement& st) {
     transform_end_time_ = n[1];
   } else if (d == "ColorSpace") {
     if (st.strings[0] != "srgb") warn(st.loc, "ColorSpace \"" + st.strings[0] + "\" ignored: pathspace renders in linear sRGB");
-  } else if (d == "Option" || d == "Attribute" || d == "MakeNamedMedium" || d == "MediumInterface") {
+  } else if (d == "MakeNamedMedium") {
+    media_.define(st, gs_.ctm, textures_, warnings_, &scene_.media);
+  } else if (d == "MediumInterface") {
+    gs_.media = media_.interface_of(st);
+  } else if (d == "Option" || d == "Attribute") {
     warn(st.loc, d + " is not supported; ignored");
     mark_all(st);
   } else if (d == "Camera") {
@@ -198,7 +203,9 @@ void SceneBuilder::dispatch(const Statement& st) {
   } else if (d == "Material") {
     gs_.material = material_index(st.strings[0], st);
   } else if (d == "LightSource") {
+    const SceneCounts before = SceneCounts::of(scene_);
     light(st);
+    media_.bind(gs_.media, before, SceneCounts::of(scene_));
   } else if (d == "AreaLightSource") {
     if (st.strings[0] != "diffuse") throw Error(st.loc, "AreaLightSource \"" + st.strings[0] + "\" is not supported (only \"diffuse\")");
     gs_.area_light = true;
@@ -250,7 +257,14 @@ bool SceneBuilder::missing_image_texture(const Statement& st) {
 }
 
 int SceneBuilder::material_index(const std::string& type, const Statement& st) {
-  if (type == "interface") return kInterfaceMaterial;
+  if (type == "interface") {  // a surface that only bounds media: paths pass it unchanged
+    if (interface_material_ < 0) {
+      Material m;
+      m.type = MaterialType::interface;
+      interface_material_ = int(scene_.add_material(m));
+    }
+    return interface_material_;
+  }
   if (type == "" || type == "none") {
     warn(st.loc, "material \"" + type + "\": shapes are rendered with grey diffuse 0.5");
     return -1;
@@ -320,6 +334,7 @@ void SceneBuilder::camera(const Statement& st) {
   camera_time_end_ = transform_end_time_;
   has_camera_ = true;
   camera_loc_ = st.loc;
+  media_.bind_camera(gs_.media);  // pbrt-v4's CameraMedium: the outside medium current here
   Mat4 inv;
   if (camera_from_world_.inverse(&inv)) coord_systems_["camera"] = {inv, inv};
 }

@@ -2,10 +2,11 @@
 // transform at the start and end time, material, area light, attribute stack) against which the
 // parser's statements are executed to fill a pathspace Scene. Its steps are in three files: the
 // graphics state, camera, film and materials (pbrt_builder.cpp), lights (pbrt_builder_lights.cpp)
-// and shapes (pbrt_builder_shapes.cpp). Shapes are transformed to world space on the way in;
-// triangle winding is flipped where pbrt's surface normal (from the per-vertex normals N, else
-// ReverseOrientation xor a handedness-swapping transform) disagrees with pathspace's winding normal,
-// so one-sided area lights emit to the same side as in pbrt. Internal to io/pbrt.
+// and shapes (pbrt_builder_shapes.cpp); participating media are read by pbrt_media.h. Shapes are
+// transformed to world space on the way in; triangle winding is flipped where pbrt's surface normal
+// (from the per-vertex normals N, else ReverseOrientation xor a handedness-swapping transform)
+// disagrees with pathspace's winding normal, so one-sided area lights emit to the same side as in
+// pbrt. Internal to io/pbrt.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +19,7 @@
 
 #include "pathspace/io/load_warnings.h"
 #include "pathspace/io/pbrt/pbrt_materials.h"
+#include "pathspace/io/pbrt/pbrt_media.h"
 #include "pathspace/io/pbrt/pbrt_missing_files.h"
 #include "pathspace/io/pbrt/pbrt_statement.h"
 #include "pathspace/io/pbrt/pbrt_transform.h"
@@ -25,8 +27,6 @@
 #include "pathspace/scene/scene.h"
 
 namespace pathspace::pbrt {
-
-constexpr int kInterfaceMaterial = -2;  // "interface": a medium boundary, not a visible surface
 
 struct GraphicsState {
   Mat4 ctm;      // at the start time of TransformTimes
@@ -37,6 +37,7 @@ struct GraphicsState {
   Rgb area_radiance;
   bool area_two_sided = false;
   float area_power = 0.f;  // pbrt-v4's "power" (> 0): each shape emits this much (shape_radiance)
+  int media = -1;          // the MediumInterface's id in PbrtMedia; -1: vacuum on both sides
 };
 
 // pbrt-v4's optional "power" of a light: > 0 rescales the emission so that the light emits it (0:
@@ -115,7 +116,9 @@ class SceneBuilder {
   // applied on top of the one each shape was defined with (Embree instances would save memory;
   // the scenes we read have few instances). Unsupported parameters are reported at the first use.
   void instance(const Statement& st);
+  // A Shape statement: its geometry (shape_geometry), bound to the graphics state's media.
   void shape(const Statement& st);
+  void shape_geometry(const Statement& st);
   // The shape's material; with pbrt-v4's shape "alpha" (a float, or a float imagemap texture) a copy
   // of it with that cutout opacity (scene/surface_opacity.h), one copy per material and alpha.
   uint32_t shape_material(const Statement& st);
@@ -138,6 +141,8 @@ class SceneBuilder {
   GraphicsState gs_;
   std::vector<std::pair<GraphicsState, bool>> stack_;  // bool: pushed by TransformBegin
   std::map<std::string, int> named_materials_;
+  int interface_material_ = -1;  // pbrt-v4's "interface": one material of MaterialType::interface
+  PbrtMedia media_;
   std::map<std::tuple<uint32_t, float, int32_t>, uint32_t> cutout_materials_;  // shape_material's copies
   std::map<std::string, std::pair<Mat4, Mat4>> coord_systems_;  // start and end transforms
   TextureTable textures_;

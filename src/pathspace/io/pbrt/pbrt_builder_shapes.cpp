@@ -37,17 +37,18 @@ void SceneBuilder::instance(const Statement& st) {
 }
 
 void SceneBuilder::shape(const Statement& st) {
-  const std::string& type = st.strings[0];
   if (object_depth_ > 0) {  // kept for ObjectInstance, with the graphics state it was defined in
     objects_[current_object_].push_back({st, gs_});
     mark_all(st);
     return;
   }
-  if (gs_.material == kInterfaceMaterial) {
-    warn(st.loc, "shape with material \"interface\" skipped (participating media are not supported)");
-    mark_all(st);
-    return;
-  }
+  const SceneCounts before = SceneCounts::of(scene_);
+  shape_geometry(st);
+  media_.bind(gs_.media, before, SceneCounts::of(scene_));
+}
+
+void SceneBuilder::shape_geometry(const Statement& st) {
+  const std::string& type = st.strings[0];
   st.ignore({"faceIndices"});
   if (type == "trianglemesh") {
     const std::vector<double> p = st.get_numbers("P");

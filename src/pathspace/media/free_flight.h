@@ -1,0 +1,171 @@
+// Distance sampling and transmittance in one medium along one ray segment (pbrt-v4 ch. 14.1;
+// Novak et al. 2018, "Monte Carlo methods for volumetric light transport simulation"):
+//  - homogeneous: closed form, the distance drawn from one channel's exponential and weighted by
+//    the mixture's density over the three channels (single-sample MIS over RGB);
+//  - grid: weighted delta tracking against the per-cell majorants (null-scattering formulation,
+//    Miller, Georgiev, Jarosz 2019): at a tentative collision the path scatters, passes on (null
+//    collision) or is absorbed with probabilities from the channels' mixture, and the weight carries
+//    the per-channel ratios; transmittance by ratio tracking with Russian roulette on small values.
+// The channels are mixed in proportion to the path's throughput (Chiang, Kutz, Burley 2016): with
+// equal shares, each event's weight may reach 3 in one channel and a long walk in a chromatic medium
+// multiplies them into fireflies; weighted by the throughput, a channel the path has lost no longer
+// drives the sampling and the weights stay near 1.
+// All of it is unbiased; the random numbers come from a stream owned by the path (Pcg32).
+#pragma once
+
+#include "pathspace/media/majorant_walk.h"
+#include "pathspace/media/media_view.h"
+#include "pathspace/sampling/rng.h"
+
+namespace pathspace {
+
+enum class MediumEvent : uint8_t { passed, scattered, absorbed };
+
+struct FreeFlight {
+  MediumEvent event = MediumEvent::passed;
+  float t = 0.f;       // scattered: where along the ray
+  Rgb weight{1.f};     // passed: transmittance / probability; scattered: sigma_s transmittance / density
+};
+
+namespace media_detail {
+// exp(-sigma d) per channel, 1 where sigma is 0 (also for an infinite d).
+PS_INLINE Rgb beer_lambert(const Rgb& sigma, float d) {
+  Rgb out;
+  for (int c = 0; c < 3; ++c) out[c] = sigma[c] > 0.f ? expf(-sigma[c] * d) : 1.f;
+  return out;
+}
+PS_INLINE float exponential_step(float sigma, float u) { return -log1pf(-u) / sigma; }
+PS_INLINE Rgb nonnegative(const Rgb& c) { return {fmaxf(c.r, 0.f), fmaxf(c.g, 0.f), fmaxf(c.b, 0.f)}; }
+PS_INLINE float mix(const Rgb& shares, const Rgb& c) { return shares.r * c.r + shares.g * c.g + shares.b * c.b; }
+
+// The channels' shares of the sampling: the throughput's, or equal ones for a throughput that is
+// black or not finite.
+PS_INLINE Rgb channel_shares(const Rgb& throughput) {
+  const Rgb t = nonnegative(throughput);
+  const float sum = t.r + t.g + t.b;
+  if (!(sum > 0.f) || !isfinite(sum)) return Rgb(1.f / 3.f);
+  return t / sum;
+}
+
+// The channel whose share covers u (u in [0, 1)).
+PS_INLINE int pick_channel(const Rgb& shares, float u) {
+  if (u < shares.r) return 0;
+  return u < shares.r + shares.g ? 1 : 2;
+}
+
+PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& shares, Pcg32& rng) {
+  FreeFlight f;
+  const Rgb st = m.sigma_t;
+  if (is_black(m.albedo)) {  // nothing scatters: the path passes with the transmittance, or not at all
+    f.weight = beer_lambert(st, tmax);
+    if (is_black(f.weight)) f.event = MediumEvent::absorbed;
+    return f;
+  }
+  const int c = pick_channel(shares, rng.next_float());
+  const float u = rng.next_float();
+  const float t = st[c] > 0.f ? exponential_step(st[c], u) : kInfinity;
+  if (t < tmax) {
+    const Rgb tr = beer_lambert(st, t);
+    const float density = mix(shares, st * tr);
+    f.event = MediumEvent::scattered;
+    f.t = t;
+    f.weight = m.albedo * st * tr / density;
+    return f;
+  }
+  const Rgb tr = beer_lambert(st, tmax);
+  const float p = mix(shares, tr);
+  if (!(p > 0.f)) {
+    f.event = MediumEvent::absorbed;
+    f.weight = Rgb();
+    return f;
+  }
+  f.weight = tr / p;
+  return f;
+}
+
+PS_INLINE FreeFlight grid_flight(const Medium& m, const float* values, const Ray& ray, float tmax, const Rgb& shares,
+                                 Pcg32& rng) {
+  FreeFlight f;
+  MajorantWalk walk(m, values, ray, tmax);
+  MajorantSegment seg;
+  while (walk.next(&seg)) {
+    if (!(seg.sigma > 0.f)) continue;
+    float t = seg.t0;
+    for (;;) {
+      t += exponential_step(seg.sigma, rng.next_float());
+      if (!(t < seg.t1)) break;
+      const Vec3 g = grid_point(m, ray.at(t));
+      const Rgb st = medium_sigma_t(m, values, g);
+      const Rgb ss = medium_albedo(m, values, g) * st;
+      const Rgb sn = nonnegative(Rgb(seg.sigma) - st);
+      // The shares weigh the path's own weight: a channel's ratio is divided by the mixture, so
+      // the weighted sum of the new weights equals that of the old ones in expectation.
+      const Rgb sw = shares * f.weight;
+      const float norm = sw.r + sw.g + sw.b;
+      const Rgb mixw = norm > 0.f ? sw / norm : shares;
+      const float ps = mix(mixw, ss) / seg.sigma, pn = mix(mixw, sn) / seg.sigma;
+      const float u = rng.next_float();
+      if (u < ps) {
+        f.event = MediumEvent::scattered;
+        f.t = t;
+        f.weight *= ss / (seg.sigma * ps);
+        return f;
+      }
+      if (u < ps + pn) {
+        f.weight *= sn / (seg.sigma * pn);
+        continue;
+      }
+      f.event = MediumEvent::absorbed;
+      f.weight = Rgb();
+      return f;
+    }
+  }
+  return f;
+}
+
+PS_INLINE Rgb grid_transmittance(const Medium& m, const float* values, const Ray& ray, float tmax, Pcg32& rng) {
+  Rgb tr(1.f);
+  MajorantWalk walk(m, values, ray, tmax);
+  MajorantSegment seg;
+  while (walk.next(&seg)) {
+    if (!(seg.sigma > 0.f)) continue;
+    float t = seg.t0;
+    for (;;) {
+      t += exponential_step(seg.sigma, rng.next_float());
+      if (!(t < seg.t1)) break;
+      const Rgb st = medium_sigma_t(m, values, grid_point(m, ray.at(t)));
+      tr *= nonnegative(Rgb(seg.sigma) - st) / seg.sigma;
+      if (max_component(tr) < 0.05f) {  // Russian roulette: survive with 1/4, weighted by 4
+        if (rng.next_float() < 0.75f) return Rgb();
+        tr *= 4.f;
+      }
+    }
+  }
+  return tr;
+}
+}  // namespace media_detail
+
+// Where the path travelling along `ray` in medium `medium` interacts before `tmax` (the next surface,
+// or infinity), and the factor its throughput takes. `throughput`: the path's so far (the channels'
+// shares of the sampling; any value gives an unbiased estimate).
+PS_INLINE FreeFlight sample_free_flight(const MediaView& media, int32_t medium, const Ray& ray, float tmax,
+                                        const Rgb& throughput, Pcg32& rng) {
+  const Medium& m = media.media[medium];
+  const Rgb shares = media_detail::channel_shares(throughput);
+  if (m.type == MediumType::homogeneous) {
+    FreeFlight f = media_detail::homogeneous_flight(m, tmax - ray.tmin, shares, rng);
+    f.t += ray.tmin;
+    return f;
+  }
+  return media_detail::grid_flight(m, media.grid_values, ray, tmax, shares, rng);
+}
+
+// The transmittance of medium `medium` along `ray` from ray.tmin to tmax (exact for homogeneous
+// media, an unbiased estimate for grids).
+PS_INLINE Rgb medium_transmittance(const MediaView& media, int32_t medium, const Ray& ray, float tmax, Pcg32& rng) {
+  const Medium& m = media.media[medium];
+  if (m.type == MediumType::homogeneous) return media_detail::beer_lambert(m.sigma_t, tmax - ray.tmin);
+  return media_detail::grid_transmittance(m, media.grid_values, ray, tmax, rng);
+}
+
+}  // namespace pathspace

@@ -1,0 +1,120 @@
+// Closed forms for participating media (docs/media.md):
+//  - furnace: a sphere of non-absorbing medium (albedo 1, chromatic sigma_s, g = 0.6) under a
+//    constant environment L changes nothing: every pixel is L, whether the sphere is bounded by a
+//    surface that only bounds media or by smooth glass (PT);
+//  - transmittance: an emitter seen through an absorbing chromatic slab is le exp(-sigma_a d) (PT,
+//    and LT through the emitter's connection to the camera);
+//  - single scattering: the camera in an infinite chromatic homogeneous medium with a point light
+//    outside the view, paths of two segments (camera ray, one scattering, the light):
+//    L = int sigma_s e^{-sigma_t t} p_HG(d, w_l) I e^{-sigma_t r} / r^2 dt along each camera ray,
+//    by quadrature over each pixel's footprint (PT against that exact image).
+// LT is not tested on the furnace and single scattering: it cannot see the environment (no surface to connect from), and with the
+// camera inside a medium its connections from medium vertices weigh 1 / d^2 near the camera, an
+// estimator of infinite variance (docs/media.md); the consistency tests compare LT with PT in scenes
+// whose camera is outside the media.
+// Per-pixel z-tests against exact images (support/integrator_comparison.h), alpha = 0.01
+// Sidak-corrected over the file's kTests tests.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pathspace/media/henyey_greenstein.h"
+#include "support/integrator_comparison.h"
+#include "support/media_scenes.h"
+#include "support/statistics.h"
+
+namespace pathspace {
+namespace {
+
+constexpr int kTests = 5;
+const double kAlpha = testing::sidak(0.01, kTests);
+constexpr float kSky = 0.7f;
+
+Image constant_image(int w, int h, float v) {
+  Image img(w, h);
+  for (Rgb& p : img.pixels) p = Rgb(v);
+  return img;
+}
+
+TEST(MediumFurnace, PtSeesTheSkyThroughAnInterfaceSphere) {
+  const Scene s = testing::make_medium_furnace(12, false, kSky);
+  const testing::Rendered r = testing::render_integrator(s, make_render_config("pt", PtSettings{}, testing::test_seed(1)), 64);
+  testing::expect_matches_exact(r, constant_image(12, 12, kSky), "pt, interface sphere", kAlpha);
+}
+
+TEST(MediumFurnace, PtSeesTheSkyThroughAGlassSphere) {
+  const Scene s = testing::make_medium_furnace(12, true, kSky);
+  const testing::Rendered r = testing::render_integrator(s, make_render_config("pt", PtSettings{}, testing::test_seed(2)), 64);
+  testing::expect_matches_exact(r, constant_image(12, 12, kSky), "pt, glass sphere", kAlpha);
+}
+
+// Transmittance: an emitter seen through an absorbing slab, each pixel's mean over an n x n grid
+// of camera rays of le exp(-sigma_a / |d.z|) (slab thickness 1), by PT and by LT (the emitter's
+// own connection to the camera, through the slab).
+Image slab_image(const Scene& s, const Rgb& sigma_a, float le, int n) {
+  const PerspectiveCamera& cam = s.camera;
+  Image img(cam.width, cam.height);
+  for (int y = 0; y < cam.height; ++y)
+    for (int x = 0; x < cam.width; ++x) {
+      double sum[3] = {0, 0, 0};
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const Ray ray = cam.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
+          for (int c = 0; c < 3; ++c) sum[c] += le * std::exp(-double(sigma_a[c]) / std::fabs(double(ray.d.z)));
+        }
+      img.at(x, y) = Rgb(float(sum[0]), float(sum[1]), float(sum[2])) * (1.f / float(n * n));
+    }
+  return img;
+}
+
+TEST(MediumTransmittance, SlabIsBeerLambertForPtAndLt) {
+  const Rgb sigma_a(0.3f, 0.8f, 1.5f);
+  const Scene s = testing::make_absorbing_slab(12, sigma_a, 2.f);
+  const Image exact = slab_image(s, sigma_a, 2.f, 8);
+  const testing::Rendered pt = testing::render_integrator(s, make_render_config("pt", PtSettings{}, testing::test_seed(6)), 32);
+  testing::expect_matches_exact(pt, exact, "pt, absorbing slab", kAlpha);
+  LtSettings lts;
+  lts.skip_emitter = false;
+  const testing::Rendered lt = testing::render_integrator(s, make_render_config("lt", lts, testing::test_seed(7)), 1024);
+  testing::expect_matches_exact(lt, exact, "lt, absorbing slab", kAlpha);
+}
+
+// The exact single-scattering image: each pixel's mean over an n x n grid of camera rays of the
+// radiance integral along the ray (midpoint rule on t in [0, 80], the medium's e^{-sigma_t t} < 1e-9).
+Image single_scattering_image(const Scene& s, const testing::SingleScattering& p, int n) {
+  const PerspectiveCamera& cam = s.camera;
+  const Rgb st = p.sigma_a + p.sigma_s;
+  Image img(cam.width, cam.height);
+  constexpr int steps = 8000;
+  constexpr double t_end = 80.0;
+  for (int y = 0; y < cam.height; ++y)
+    for (int x = 0; x < cam.width; ++x) {
+      double sum[3] = {0, 0, 0};
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const Ray ray = cam.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
+          for (int k = 0; k < steps; ++k) {
+            const double t = (k + 0.5) * t_end / steps;
+            const Vec3 q = ray.at(float(t));
+            const Vec3 to = p.light - q;
+            const double r = length(to);
+            const double phase = hg_phase(dot(ray.d, to / float(r)), p.g);
+            for (int c = 0; c < 3; ++c)
+              sum[c] += p.sigma_s[c] * std::exp(-st[c] * (t + r)) * phase * p.intensity[c] / (r * r) * (t_end / steps);
+          }
+        }
+      img.at(x, y) = Rgb(float(sum[0]), float(sum[1]), float(sum[2])) * (1.f / float(n * n));
+    }
+  return img;
+}
+
+TEST(SingleScattering, PtMatchesQuadrature) {
+  const testing::SingleScattering p;
+  const Scene s = testing::make_single_scattering_scene(10, p);
+  const Image exact = single_scattering_image(s, p, 6);
+  const testing::Rendered r = testing::render_integrator(s, make_render_config("pt", PtSettings{}, testing::test_seed(4)), 256);
+  testing::expect_matches_exact(r, exact, "pt, single scattering", kAlpha);
+}
+
+}  // namespace
+}  // namespace pathspace
