@@ -9,7 +9,9 @@
 namespace pathspace {
 
 inline constexpr int kMaxBsdfLayers = 2;
-enum BsdfLayerId : uint8_t { kLayerDiffuse = 0, kLayerGlossy = 1 };
+// kLayerMedium: a vertex in a participating medium (integrators/pt/pt_kernel.h, pt_on_medium), so
+// that filters never average it with surface vertices.
+enum BsdfLayerId : uint8_t { kLayerDiffuse = 0, kLayerGlossy = 1, kLayerMedium = 2 };
 
 struct BsdfLayers {
   int count = 0;                  // 0: not filterable

@@ -356,9 +356,17 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
 // in s->beta already): next event estimation through the media (its shadow ray's transmittance is
 // pt_resolve_shadow's), then a new direction from the Henyey-Greenstein phase function, whose pdf
 // takes the place of the BSDF's in MIS. A medium vertex is a path vertex like a surface's: it counts
-// a segment and uses its vertex's sampler dimensions. Filters do not select it (yet).
-PS_INLINE PtNext pt_on_medium(const SceneView& scene, const Sampler& sampler, const PtSettings& settings, float t,
-                              PathCounters* counters, PtPathState* s) {
+// a segment and uses its vertex's sampler dimensions.
+// Path space filtering selects it like a diffuse surface vertex (2014 paper sec. 3; docs/media.md): one
+// layer of its own (kLayerMedium, never averaged with surfaces) whose albedo stays in the
+// throughput (the flight's weight carries it), so the filter averages the phase-weighted incident
+// radiance; its "normal" is the reversed incident direction, so the hashed filter jitters it across
+// the ray, as a pixel's footprint spreads, and its normal bin and the consistent filter's direction
+// test separate vertices by the axis of the phase lobe. Its roughness 1 - |g| keys strongly
+// anisotropic media by direction as glossy surfaces are.
+template <typename Tracer>
+PS_HD PtNext pt_on_medium(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const PtSettings& settings,
+                          float t, PathCounters* counters, PtPathState* s, const VisibilityProbes& probes, bool query_only) {
   using namespace pt_detail;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const Ray ray = s->ray;
@@ -369,6 +377,42 @@ PS_INLINE PtNext pt_on_medium(const SceneView& scene, const Sampler& sampler, co
   s->path_distance += t;
   if (segments >= max_segments) return PtNext::end;
   const uint32_t v = uint32_t(segments - 1);
+
+  OpenVertex* sel = nullptr;
+  const VertexSelection& selection = settings.selection;
+  if (selection.mode != VertexSelectionMode::none) {
+    BsdfLayers layers;
+    layers.count = 1;
+    layers.id[0] = kLayerMedium;
+    layers.albedo[0] = Rgb(1.f);
+    layers.roughness[0] = 1.f - fabsf(g);
+    if (is_selectable(layers, selection)) {
+      ++s->diffuse_index;
+      if (wants_vertex(selection, s->diffuse_index, s->selected)) {
+        sel = &s->open[s->selected];
+        SurfaceHit at;  // the vertex as the probes see a surface: its normal faces the incident ray
+        at.p = p;
+        at.ng = at.ns = -ray.d;
+        at.time = ray.time;
+        FilterVertex& gv = sel->geometry;
+        gv.p = p;
+        gv.ng = gv.ns = gv.wo = -ray.d;
+        gv.prev_p = s->prev_p;
+        gv.prefix_distance = s->prev_distance;
+        gv.segments = uint8_t(segments);
+        gv.selected = uint8_t(s->selected);
+        sel->layers = layers;
+        sel->throughput = s->abs_beta;
+        for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
+        sel->after = Rgb();
+        gv.visible_lights = 0;
+        gv.open_distance = 0.f;
+        if (probes.any()) probe_visibility(scene, tracer, at, -ray.d, probes, counters, &gv);
+        ++s->selected;
+        if (query_only && !selects_more(selection, s->selected)) return PtNext::end;
+      }
+    }
+  }
 
   if (settings.nee && scene.num_lights > 0) {
     float select_prob;
@@ -384,14 +428,24 @@ PS_INLINE PtNext pt_on_medium(const SceneView& scene, const Sampler& sampler, co
       const float pdf_light = select_prob * ls.pdf_w;
       const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, phase);
       s->shadow_pending = true;
-      s->shadow_value[0] = s->beta * ls.li * (phase * w / pdf_light);
-      s->shadow_vertex = -1;
-      s->shadow_owner = s->owner;
+      if (sel) {
+        s->shadow_value[0] = ls.li * (phase * w / pdf_light);
+        s->shadow_vertex = s->selected - 1;
+      } else {
+        s->shadow_value[0] = s->beta * ls.li * (phase * w / pdf_light);
+        s->shadow_vertex = -1;
+        s->shadow_owner = s->owner;
+      }
     }
   }
 
   const Point2 u{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
   const Vec3 wi = hg_sample(ray.d, g, u);
+  if (sel) {  // exact sampling: phase / pdf = 1
+    sel->continuation[0] = Rgb(1.f);
+    s->owner = s->selected - 1;
+    s->beta = Rgb(1.f);
+  }
   s->after_delta = false;
   s->prev_bsdf_pdf = hg_phase(dot(ray.d, wi), g);
   s->prev_p = p;
@@ -463,7 +517,7 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       s.beta *= flight.weight;
       s.abs_beta *= flight.weight;
       if (flight.event == MediumEvent::scattered) {
-        const PtNext next = pt_on_medium(scene, sampler, settings, flight.t, counters, &s);
+        const PtNext next = pt_on_medium(scene, tracer, sampler, settings, flight.t, counters, &s, probes, query_only);
         if (s.shadow_pending)
           pt_resolve_shadow(&s, transmittance_along(scene, tracer, s.shadow_ray, s.shadow_medium, s.medium_rng, counters));
         if (next == PtNext::end) break;
