@@ -33,6 +33,12 @@
 #include "pathspace/hashgrid/hash_grid_view.h"
 #include "pathspace/hashgrid/stochastic_hash_map_view.h"
 
+#include "pathspace/media/free_flight.h"
+#include "pathspace/media/grid_lookup.h"
+#include "pathspace/media/henyey_greenstein.h"
+#include "pathspace/media/majorant_walk.h"
+#include "pathspace/media/media_view.h"
+#include "pathspace/media/medium.h"
 #include "pathspace/materials/bsdf.h"
 #include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/materials/bsdf_sample.h"
@@ -71,6 +77,30 @@
 #include "pathspace/filters/vertex_selection.h"
 
 namespace pathspace {
+
+// Media: distance sampling, transmittance, the majorant walk, the phase function (media/).
+__global__ void media_compile_check(MediaView media, Rgb* out, uint32_t n) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n || media.count == 0) return;
+  Pcg32 rng(i, 2);
+  const Ray ray{Vec3(0.f), Vec3(0.f, 0.f, 1.f), 0.f, kInfinity, 0.f};
+  const int32_t m = int32_t(i % media.count);
+  const FreeFlight f = sample_free_flight(media, m, ray, 10.f, Rgb(1.f), rng);
+  Rgb sum = f.weight + medium_transmittance(media, m, ray, 5.f, rng);
+  const Medium& medium = media.media[m];
+  sum += medium_sigma_t(medium, media.grid_values, grid_point(medium, ray.at(f.t))) +
+         medium_albedo(medium, media.grid_values, grid_vector(medium, ray.d));
+  if (medium.type == MediumType::grid) {
+    MajorantWalk walk(medium, media.grid_values, ray, 10.f);
+    MajorantSegment seg;
+    while (walk.next(&seg)) sum += Rgb(seg.sigma);
+  }
+  const Vec3 w = hg_sample(ray.d, medium.g, {rng.next_float(), rng.next_float()});
+  sum += Rgb(hg_phase(dot(ray.d, w), medium.g));
+  SurfaceHit hit;
+  sum += Rgb(float(media.after(hit, w, m)) + float(medium_after(make_medium_interface(0, kVacuum), hit.ng, w, m)));
+  out[i] = sum;
+}
 
 // Camera, lights, light sampling and emission, environment, materials and textures of a SceneView.
 __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb* out, uint32_t n) {
