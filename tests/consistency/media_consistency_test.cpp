@@ -1,7 +1,7 @@
-// Path tracing and light tracing agree in scenes with participating media (docs/media.md): per-pixel
-// z-tests of PT against LT on the Cornell box filled with homogeneous fog, with a chromatic grid of
-// fog, with a sphere of smoke bounded by a surface that only bounds media, and with a translucent
-// sphere (rough dielectric boundary, scattering interior); renders with media are bit-identical for
+// Path tracing, light tracing and bidirectional path tracing agree in scenes with participating media
+// (docs/media.md): per-pixel z-tests of PT against LT and against BPT on the Cornell box filled with
+// homogeneous fog, with a chromatic grid of fog, with a sphere of smoke bounded by a surface that only
+// bounds media, and with a translucent sphere (rough dielectric boundary, scattering interior); renders with media are bit-identical for
 // one and two threads; integrators and devices without media refuse such scenes.
 // PT runs 16 times LT's passes: fog next to the small ceiling light glows with nearly the light's
 // radiance, and PT reaches that glow only when a vertex lands within a few centimetres of the light
@@ -21,7 +21,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kComparisons = 4;
+constexpr int kComparisons = 8;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 constexpr int kRes = 20;
 constexpr uint32_t kPasses = 256;
@@ -46,6 +46,19 @@ TEST_P(MediaPtLt, PerPixelZTest) {
   testing::expect_same_image(lt, pt, GetParam(), kAlphaImage, "lt", "pt");
 }
 
+// BPT against PT: every strategy, medium vertices on both subpaths.
+class MediaPtBpt : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MediaPtBpt, PerPixelZTest) {
+  const Scene scene = media_scene(GetParam());
+  const uint64_t seed = testing::test_seed(41);
+  const testing::Rendered pt = testing::render_integrator(scene, make_render_config("pt", PtSettings{}, seed), 16 * kPasses);
+  const testing::Rendered bpt = testing::render_integrator(scene, make_render_config("bpt", BptSettings{}, seed + 1), 4 * kPasses);
+  testing::expect_same_image(bpt, pt, GetParam(), kAlphaImage, "bpt", "pt");
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, MediaPtBpt, ::testing::Values("fog", "fog-grid", "smoke-sphere", "translucent-sphere"));
+
 INSTANTIATE_TEST_SUITE_P(Scenes, MediaPtLt, ::testing::Values("fog", "fog-grid", "smoke-sphere", "translucent-sphere"));
 
 TEST(MediaRenders, BitIdenticalForOneAndTwoThreads) {
@@ -66,7 +79,7 @@ TEST(MediaRenders, BitIdenticalForOneAndTwoThreads) {
 
 TEST(MediaRenders, IntegratorsWithoutMediaRefuse) {
   const Scene scene = testing::make_fog_cornell_box(8, 8, false);
-  for (const char* integrator : {"bpt", "sppm", "pclt"}) {
+  for (const char* integrator : {"sppm", "pclt"}) {
     RenderConfig config = testing::default_config(integrator, 1);
     try {
       testing::render_integrator(scene, config, 1);

@@ -4,6 +4,12 @@
 // (t = 1, splatted as in lt_kernel.h) — with MIS weights from the recursive quantities dVCM / dVC of
 // Georgiev et al. 2012 (VCM tech. report, eqs. 31-47, merging terms dropped), as SmallVCM's BPT does.
 // Throughput follows Veach 1997 (§10.2); light subpaths use the adjoint shading-normal factor (§5.3).
+// Media (docs/media.md): both subpaths sample distances as PT and LT do and store medium vertices
+// (phase function for the BSDF, no cosines: a medium vertex's area measure is a volume measure);
+// connections carry the transmittance. The MIS weights use the directional densities alone and leave
+// the distance sampling's densities out (as pbrt-v3's BDPT does): they still sum to one over the
+// strategies of each path, so the estimate is unbiased, though not the balance heuristic of the full
+// densities.
 // Thin lens: the camera vertex is the sampled lens point; every t = 1 connection samples its own
 // lens point with the same density 1 / A_lens, which cancels from the weights (perspective_camera.h).
 #pragma once
@@ -14,6 +20,8 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
+#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/scene/light_emission.h"
 #include "pathspace/materials/bsdf.h"
@@ -47,7 +55,56 @@ struct LightVertex {
   uint32_t material = 0;
   Point2 uv;           // texture coordinates (the material is shaded again at connection time)
   int segments = 0;    // segments from the light to this vertex (1: first hit)
+  // Media: a vertex in a medium (ng, ns zero; its phase asymmetry g), or the medium the path arrived
+  // in at a surface and the media the surface separates.
+  bool in_medium = false;
+  float g = 0.f;
+  int32_t medium = kVacuum;
+  MediumInterface iface;
 };
+
+// The medium a connection leaving a vertex along d starts in.
+PS_INLINE int32_t connection_medium(bool in_medium, int32_t medium, const MediumInterface& iface, const Vec3& ng,
+                                    const Vec3& d) {
+  return in_medium ? medium : medium_after(iface, ng, d, medium);
+}
+
+// Whether the shadow ray is unoccluded, as a factor: with media, the transmittance along it
+// (integrators/common/transmittance_along.h); without, 0 or 1 from one occlusion test.
+template <typename Tracer>
+PS_HD Rgb visibility(const SceneView& scene, const Tracer& tracer, const Ray& shadow, int32_t medium, Pcg32* rng,
+                     PathCounters* counters) {
+  if (!scene.media.any()) return Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
+  return transmittance_along(scene, tracer, shadow, medium, *rng, counters);
+}
+
+// Where a subpath goes next in a scene with media.
+enum class NextVertex : uint8_t { missed, surface, medium, absorbed };
+
+// The next vertex along `ray` in medium *medium: crosses surfaces that only bound media and samples
+// the distance in media (media/free_flight.h), multiplying *beta by the flight's weight. A medium
+// vertex lies at distance *t_medium along the (possibly advanced) *ray, a surface vertex at *hit.
+template <typename Tracer>
+PS_HD NextVertex next_vertex(const SceneView& scene, const Tracer& tracer, Ray* ray, int32_t* medium, Pcg32* rng,
+                             PathCounters* counters, Rgb* beta, SurfaceHit* hit, float* t_medium) {
+  for (;;) {
+    const bool found = tracer.intersect(*ray, hit);
+    if (*medium != kVacuum) {
+      const FreeFlight f = sample_free_flight(scene.media, *medium, *ray, found ? hit->t : kInfinity, *beta, *rng);
+      *beta *= f.weight;
+      if (f.event == MediumEvent::absorbed) return NextVertex::absorbed;
+      if (f.event == MediumEvent::scattered) {
+        *t_medium = f.t;
+        return NextVertex::medium;
+      }
+    }
+    if (!found) return NextVertex::missed;
+    if (scene.materials[hit->material].type != MaterialType::interface) return NextVertex::surface;
+    *medium = scene.media.after(*hit, ray->d, *medium);
+    *ray = spawn_ray(hit->p, hit->ng, ray->d, scene.ray_epsilon, ray->time);
+    ++counters->rays;
+  }
+}
 
 PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const Vec3& p, float time) {
   if (l.type == LightType::area_triangle) {
@@ -78,6 +135,63 @@ PS_INLINE bool connect_to_film(const PerspectiveCamera& cam, const Vec3& p, Poin
   return cam.project(p, lens_u, pr) && filter_reaches_image(cam.filter, cam.width, cam.height, pr->rx, pr->ry);
 }
 
+// A light-subpath vertex in a medium at p, reached along `ray`: its camera connection (t = 1: phase
+// function and transmittance, no cosines), its storage for inner connections, then a direction from
+// the phase function (exact sampling: weight 1; reverse density = forward density) and Russian
+// roulette. False when the subpath ends.
+template <typename Tracer>
+PS_HD bool light_medium_vertex(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const BptSettings& st,
+                               const PerspectiveCamera& cam, const BptFilms& films, Ray* ray_io, const Vec3& p,
+                               int32_t medium, int segments, int max_segments, float beta0, Pcg32* rng,
+                               PathCounters* counters, Rgb* beta, float* dvcm, float* dvc, LightVertex* verts, int* stored) {
+  const Ray ray = *ray_io;
+  const MisHeuristic h = st.mis;
+  const float n_light = float(films.light_paths), inv_paths = 1.f / n_light;
+  const float g = scene.media.media[medium].g;
+  CameraProjection pr;
+  if (connect_to_film(cam, p, connection_lens_sample(cam, sampler, uint32_t(segments)), &pr)) {
+    ++counters->rays;
+    ++counters->shadow_rays;
+    prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
+    const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(p, Vec3(0.f), pr.wi, pr.dist, scene.ray_epsilon, ray.time),
+                              medium, rng, counters);
+    if (!is_black(tr)) {
+      const float phase = hg_phase(dot(ray.d, pr.wi), g);
+      const float w_light = mis(h, pr.factor / n_light) * (*dvcm + *dvc * mis(h, phase));
+      splat(films, cam.filter, segments + 1, pr.rx, pr.ry, *beta * tr * (phase * pr.factor * inv_paths / (1.f + w_light)));
+    }
+  }
+  if (segments + 2 <= max_segments) {
+    LightVertex& v = verts[(*stored)++];
+    v.p = p;
+    v.ng = v.ns = Vec3(0.f);
+    v.wo = -ray.d;
+    v.beta = *beta;
+    v.cos_in = 1.f;
+    v.dvcm = *dvcm;
+    v.dvc = *dvc;
+    v.segments = segments;
+    v.in_medium = true;
+    v.g = g;
+    v.medium = medium;
+    v.iface = MediumInterface{};
+  }
+  if (segments + 1 >= max_segments) return false;
+  const uint32_t vi = uint32_t(segments - 1);
+  const Point2 u{sampler.at(light_dims::vertex(vi, light_dims::kBsdfU)), sampler.at(light_dims::vertex(vi, light_dims::kBsdfU + 1))};
+  const Vec3 wi = hg_sample(ray.d, g, u);
+  const float pdf = hg_phase(dot(ray.d, wi), g);
+  *dvc = mis(h, 1.f / pdf) * (*dvc * mis(h, pdf) + *dvcm);
+  *dvcm = mis(h, 1.f / pdf);
+  if (st.roulette_start >= 0 && segments >= st.roulette_start) {
+    const float q = fminf(1.f, max_component(*beta) / beta0);
+    if (sampler.at(light_dims::vertex(vi, light_dims::kRoulette)) >= q) return false;
+    *beta *= 1.f / q;
+  }
+  *ray_io = Ray{p, wi, 0.f, kInfinity, ray.time};
+  return true;
+}
+
 // Traces the light subpath, splats its camera connections (t = 1, including the emitter itself:
 // s = 1, t = 1) and stores the connectible vertices that can still take part in an inner connection
 // (at most max_segments - 2 segments from the light). Returns the number stored.
@@ -98,6 +212,9 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   const float emit_pdf_a = e.pdf_a * select_prob;  // of the origin (on the disk for infinite lights)
   const float emit_pdf = emit_pdf_a * e.pdf_w;     // of origin and direction
   const bool delta_light = e.delta_position || e.delta_direction;
+  const bool media = scene.media.any();
+  Pcg32 rng;
+  if (media) rng = Pcg32(sampler.bits(light_dims::kMediumStream), 0u);
 
   // s = 1, t = 1: the emitter point seen by the camera. Its rival is s = 0 (the camera ray hits the
   // point, density camera_pdf_a per camera sample) against n_light light paths.
@@ -109,10 +226,13 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         ++counters->rays;
         ++counters->shadow_rays;
         prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
-        if (!tracer.occluded(spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
+        const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
+                                  media ? light_path_medium(scene, start, pr.wi) : kVacuum, &rng, counters);
+        if (!is_black(tr)) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
           const float w_light = mis(h, pr.factor * cos_light / (n_light * emit_pdf_a));
-          splat(films, cam.filter, 1, pr.rx, pr.ry, le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light)));
+          const Rgb c = le * (cos_light / emit_pdf_a * pr.factor * inv_paths / (1.f + w_light));
+          splat(films, cam.filter, 1, pr.rx, pr.ry, media ? c * tr : c);
         }
       }
     }
@@ -129,13 +249,23 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
   float dvcm = 0.f;
   Vec3 prev_p = e.p;
   int stored = 0;
+  int32_t medium = media ? light_path_medium(scene, start, e.d) : kVacuum;
 
   for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;
     ++counters->rays;
-    if (!tracer.intersect(ray, &hit)) break;
+    float t_medium = 0.f;
+    bool in_medium = false;
+    if (media) {
+      const NextVertex next = next_vertex(scene, tracer, &ray, &medium, &rng, counters, &beta, &hit, &t_medium);
+      if (next == NextVertex::missed || next == NextVertex::absorbed) break;
+      in_medium = next == NextVertex::medium;
+      if (in_medium) hit.p = ray.at(t_medium);
+    } else if (!tracer.intersect(ray, &hit)) {
+      break;
+    }
     const Vec3 wo_world = -ray.d;
-    const float cos_in = fabsf(dot(wo_world, hit.ng));
+    const float cos_in = in_medium ? 1.f : fabsf(dot(wo_world, hit.ng));  // a medium vertex has no cosine
     if (!(cos_in > 0.f)) break;
     // Distances between vertices, not hit.t: the camera side measures the same segments that way.
     const float d2 = distance_squared(hit.p, prev_p);
@@ -153,6 +283,13 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
     }
     dvcm /= mis(h, cos_in);
     dvc /= mis(h, cos_in);
+    if (in_medium) {
+      if (!light_medium_vertex(scene, tracer, sampler, st, cam, films, &ray, hit.p, medium, segments, max_segments, beta0,
+                               &rng, counters, &beta, &dvcm, &dvc, verts, &stored))
+        break;
+      prev_p = hit.p;
+      continue;
+    }
 
     Material textured;
     const Material& mat = shading_material(scene, hit, &textured);
@@ -168,13 +305,16 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
           ++counters->rays;
           ++counters->shadow_rays;
           prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
-          if (!tracer.occluded(spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time))) {
+          const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
+                                    scene.media.after(hit, pr.wi, medium), &rng, counters);
+          if (!is_black(tr)) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
             const float cos_cam = fabsf(dot(pr.wi, hit.ng));
             const float pdf_rev = bsdf_pdf(mat, wi, wo, TransportMode::radiance);
             const float w_light = mis(h, pr.factor * cos_cam / n_light) * (dvcm + dvc * mis(h, pdf_rev));
             const float scale = fabsf(wo.z) * cos_cam / cos_in * pr.factor * inv_paths / (1.f + w_light);
-            splat(films, cam.filter, segments + 1, pr.rx, pr.ry, beta * f * scale);
+            const Rgb c = beta * f * scale;
+            splat(films, cam.filter, segments + 1, pr.rx, pr.ry, media ? c * tr : c);
           }
         }
       }
@@ -191,6 +331,9 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         v.material = hit.material;
         v.uv = hit.uv;
         v.segments = segments;
+        v.in_medium = false;
+        v.medium = medium;
+        v.iface = scene.media.interface_at(hit);
       }
     }
     if (segments + 1 >= max_segments) break;  // a further vertex could not connect within the limit
@@ -222,6 +365,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
       beta *= 1.f / q;
     }
     prev_p = hit.p;
+    medium = scene.media.after(hit, wi_world, medium);
     ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon, time);
   }
   return stored;
@@ -229,12 +373,20 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
 
 // The camera-side state at a connectible vertex.
 struct CameraVertex {
-  const Material* mat;
+  const Material* mat;  // null at a medium vertex
   Frame frame;
-  Vec3 p, ng, wo;  // wo local
+  Vec3 p, ng, wo;  // wo local (surfaces)
   Rgb beta;
   float dvcm, dvc;
   float time;  // the sample's (camera and light subpath share it; scene/motion.h)
+  // Media: a vertex in a medium (its phase asymmetry g, wo_world towards the previous vertex), or the
+  // medium the path arrived in at a surface and the media the surface separates.
+  bool in_medium = false;
+  float g = 0.f;
+  Vec3 wo_world;
+  int32_t medium = kVacuum;
+  MediumInterface iface;
+  Pcg32* rng = nullptr;  // the camera subpath's stream (transmittance of connections)
 };
 
 // s = 1: next event estimation from camera vertex z, weighted against BSDF sampling (s = 0) and the
@@ -249,10 +401,11 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   LightSample ls;
   const Point2 ul{sampler.at(dims::vertex(vi, dims::kLightU)), sampler.at(dims::vertex(vi, dims::kLightU + 1))};
   if (!sample_light(scene, light, z.p, z.time, ul, &ls)) return {};
-  const Vec3 wi = z.frame.to_local(ls.wi);
-  const Rgb f = bsdf_eval(*z.mat, z.wo, wi, TransportMode::radiance);
+  const Vec3 wi = z.in_medium ? ls.wi : z.frame.to_local(ls.wi);
+  const float phase = z.in_medium ? hg_phase(dot(-z.wo_world, ls.wi), z.g) : 0.f;  // symmetric in its directions
+  const Rgb f = z.in_medium ? Rgb(phase) : bsdf_eval(*z.mat, z.wo, wi, TransportMode::radiance);
   if (is_black(f)) return {};
-  const float cos_z = fabsf(dot(ls.wi, z.ng));
+  const float cos_z = z.in_medium ? 1.f : fabsf(dot(ls.wi, z.ng));
   // Emission density of the light vertex towards z, in z's area measure, over NEE's density of the
   // light vertex (area measure; solid angle for infinite lights). Light selection cancels.
   float pa, pw, emit_to_z, direct;
@@ -269,14 +422,17 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   }
   if (!(direct > 0.f)) return {};
   const float pdf_light_w = select_prob * ls.pdf_w;
-  const float cam_dir = ls.delta ? 0.f : bsdf_pdf(*z.mat, z.wo, wi, TransportMode::radiance);
-  const float cam_rev = bsdf_pdf(*z.mat, wi, z.wo, TransportMode::importance);
+  const float cam_dir = ls.delta ? 0.f : (z.in_medium ? phase : bsdf_pdf(*z.mat, z.wo, wi, TransportMode::radiance));
+  const float cam_rev = z.in_medium ? phase : bsdf_pdf(*z.mat, wi, z.wo, TransportMode::importance);
   const float w_light = mis(h, cam_dir / pdf_light_w);
   const float w_camera = mis(h, emit_to_z / direct) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon, z.time))) return {};
-  return f * ls.li * (fabsf(wi.z) / (pdf_light_w * (w_light + 1.f + w_camera)));
+  const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon, z.time),
+                            connection_medium(z.in_medium, z.medium, z.iface, z.ng, ls.wi), z.rng, counters);
+  if (is_black(tr)) return {};
+  const Rgb c = f * ls.li * ((z.in_medium ? 1.f : fabsf(wi.z)) / (pdf_light_w * (w_light + 1.f + w_camera)));
+  return scene.media.any() ? c * tr : c;
 }
 
 // s >= 2, t >= 2: connects camera vertex z to light vertex y (tech. report eqs. 37-41). The light
@@ -289,27 +445,34 @@ PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeur
   if (!(d2 > 0.f)) return {};
   const float dist = sqrtf(d2);
   const Vec3 dir = d / dist;  // from z towards y
-  const Vec3 wz = z.frame.to_local(dir);
-  const Rgb fz = bsdf_eval(*z.mat, z.wo, wz, TransportMode::radiance);
+  // Medium vertices: the phase function (symmetric in its directions) in place of the BSDF and its
+  // densities, and no cosines.
+  const Vec3 wz = z.in_medium ? dir : z.frame.to_local(dir);
+  const float phase_z = z.in_medium ? hg_phase(dot(-z.wo_world, dir), z.g) : 0.f;
+  const Rgb fz = z.in_medium ? Rgb(phase_z) : bsdf_eval(*z.mat, z.wo, wz, TransportMode::radiance);
   if (is_black(fz)) return {};
   Material textured;
-  const Material& ymat = shading_material(scene, y.material, y.uv, &textured);
-  const Frame yframe(y.ns);
+  const Material& ymat = y.in_medium ? textured : shading_material(scene, y.material, y.uv, &textured);
+  const Frame yframe(y.in_medium ? -dir : y.ns);
   const Vec3 ywo = yframe.to_local(y.wo), ywi = yframe.to_local(-dir);
-  const Rgb fy = bsdf_eval(ymat, ywo, ywi, TransportMode::importance);
+  const float phase_y = y.in_medium ? hg_phase(dot(y.wo, dir), y.g) : 0.f;
+  const Rgb fy = y.in_medium ? Rgb(phase_y) : bsdf_eval(ymat, ywo, ywi, TransportMode::importance);
   if (is_black(fy)) return {};
-  const float cos_z = fabsf(dot(dir, z.ng)), cos_y = fabsf(dot(dir, y.ng));
-  const float cam_dir_a = bsdf_pdf(*z.mat, z.wo, wz, TransportMode::radiance) * cos_y / d2;
-  const float cam_rev = bsdf_pdf(*z.mat, wz, z.wo, TransportMode::importance);
-  const float light_dir_a = bsdf_pdf(ymat, ywo, ywi, TransportMode::importance) * cos_z / d2;
-  const float light_rev = bsdf_pdf(ymat, ywi, ywo, TransportMode::radiance);
+  const float cos_z = z.in_medium ? 1.f : fabsf(dot(dir, z.ng)), cos_y = y.in_medium ? 1.f : fabsf(dot(dir, y.ng));
+  const float cam_dir_a = (z.in_medium ? phase_z : bsdf_pdf(*z.mat, z.wo, wz, TransportMode::radiance)) * cos_y / d2;
+  const float cam_rev = z.in_medium ? phase_z : bsdf_pdf(*z.mat, wz, z.wo, TransportMode::importance);
+  const float light_dir_a = (y.in_medium ? phase_y : bsdf_pdf(ymat, ywo, ywi, TransportMode::importance)) * cos_z / d2;
+  const float light_rev = y.in_medium ? phase_y : bsdf_pdf(ymat, ywi, ywo, TransportMode::radiance);
   const float w_light = mis(h, cam_dir_a) * (y.dvcm + y.dvc * mis(h, light_rev));
   const float w_camera = mis(h, light_dir_a) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  if (tracer.occluded(spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon, z.time))) return {};
-  const float g = fabsf(wz.z) * fabsf(ywo.z) * cos_y / (y.cos_in * d2);
-  return fz * fy * y.beta * (g / (w_light + 1.f + w_camera));
+  const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon, z.time),
+                            connection_medium(z.in_medium, z.medium, z.iface, z.ng, dir), z.rng, counters);
+  if (is_black(tr)) return {};
+  const float g = (z.in_medium ? 1.f : fabsf(wz.z)) * (y.in_medium ? 1.f : fabsf(ywo.z)) * cos_y / (y.cos_in * d2);
+  const Rgb c = fz * fy * y.beta * (g / (w_light + 1.f + w_camera));
+  return scene.media.any() ? c * tr : c;
 }
 
 }  // namespace bpt_detail
@@ -339,11 +502,64 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
   float dvcm = mis(h, float(films.light_paths) / pdf_pixel_w), dvc = 0.f;
   Rgb radiance, beta(1.f);
   Vec3 prev_p = ray.o;  // the pinhole or the sampled lens point
+  const bool media = scene.media.any();
+  Pcg32 rng;
+  int32_t medium = kVacuum;
+  if (media) {
+    rng = Pcg32(sampler.bits(dims::kMediumStream), 0u);
+    medium = scene.media.camera_medium;
+  }
 
   for (int segments = 1;; ++segments) {
     SurfaceHit hit;
     ++counters->rays;
-    if (!tracer.intersect(ray, &hit)) {
+    bool found;
+    float t_medium = 0.f;
+    NextVertex next = NextVertex::surface;
+    if (media) {
+      next = next_vertex(scene, tracer, &ray, &medium, &rng, counters, &beta, &hit, &t_medium);
+      if (next == NextVertex::absorbed) break;
+      found = next != NextVertex::missed;
+    } else {
+      found = tracer.intersect(ray, &hit);
+    }
+    if (next == NextVertex::medium) {
+      const Vec3 p = ray.at(t_medium);
+      dvcm *= mis(h, distance_squared(p, prev_p));  // no cosine at a medium vertex
+      if (segments >= max_segments) break;
+      const uint32_t vi = uint32_t(segments - 1);
+      CameraVertex z{nullptr, Frame(), p, Vec3(0.f), Vec3(0.f), beta, dvcm, dvc, time};
+      z.in_medium = true;
+      z.g = scene.media.media[medium].g;
+      z.wo_world = -ray.d;
+      z.medium = medium;
+      z.rng = &rng;
+      if (scene.num_lights > 0) {
+        const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
+        radiance += c;
+        record(films, 1, segments + 1, pixel, c);
+      }
+      for (int k = 0; k < nv && verts[k].segments + 1 + segments <= max_segments; ++k) {
+        const Rgb c = beta * connect_vertices(scene, tracer, h, z, verts[k], counters);
+        radiance += c;
+        record(films, verts[k].segments + 1, segments + 1, pixel, c);
+      }
+      // A new direction from the phase function (exact sampling: weight 1, reverse density = forward).
+      const Point2 u{sampler.at(dims::vertex(vi, dims::kBsdfU)), sampler.at(dims::vertex(vi, dims::kBsdfU + 1))};
+      const Vec3 wi = hg_sample(ray.d, z.g, u);
+      const float pdf = hg_phase(dot(ray.d, wi), z.g);
+      dvc = mis(h, 1.f / pdf) * (dvc * mis(h, pdf) + dvcm);
+      dvcm = mis(h, 1.f / pdf);
+      if (st.roulette_start >= 0 && segments >= st.roulette_start) {
+        const float q = fminf(1.f, max_component(beta));
+        if (sampler.at(dims::vertex(vi, dims::kRoulette)) >= q) break;
+        beta *= 1.f / q;
+      }
+      prev_p = p;
+      ray = Ray{p, wi, 0.f, kInfinity, time};
+      continue;
+    }
+    if (!found) {
       // s = 0 on the environment (tech. report eq. 43 without the distance term). Seen directly it
       // has no rival: the light subpath's proxy origin is not a surface the camera can connect to.
       if (scene.environment_light >= 0) {
@@ -396,7 +612,10 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t vi = uint32_t(segments - 1);
     if (bsdf_has_non_delta(mat)) {
-      const CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc, time};
+      CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc, time};
+      z.medium = medium;
+      z.iface = scene.media.interface_at(hit);
+      z.rng = &rng;
       if (scene.num_lights > 0) {
         const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
         radiance += c;
@@ -431,6 +650,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       beta *= 1.f / q;
     }
     prev_p = hit.p;
+    medium = scene.media.after(hit, wi_world, medium);
     ray = spawn_ray(hit.p, hit.ng, wi_world, scene.ray_epsilon, time);
   }
   return radiance;

@@ -20,10 +20,10 @@ OptionTable<BptSettings> bpt_options() {
   return t;
 }
 
-const IntegratorRegistrar kRegistrar{make_integrator_entry<BptSettings>(
+const IntegratorRegistrar kRegistrar{with_media(make_integrator_entry<BptSettings>(
     "bpt", "bidirectional path tracing, every strategy (s, t) weighted by MIS",
     "Veach 1997, ch. 10; MIS as in the VCM technical report (Georgiev et al. 2012)", bpt_options(), {},
-    construct_with_seed<BptIntegrator, BptSettings>())};
+    construct_with_seed<BptIntegrator, BptSettings>()))};
 
 }  // namespace
 

@@ -31,6 +31,20 @@ PS_INLINE bool start_light_path(const SceneView& scene, const Sampler& sampler, 
   return sample_emission(scene, *s->light, time, up, ud, &s->emission);
 }
 
+// The medium a light path leaves its light into along d (docs/media.md): the emitting shape's side
+// where the shape bounds media, else the light's own medium (MediaView::light_media).
+PS_INLINE int32_t light_path_medium(const SceneView& scene, const LightPathStart& start, const Vec3& d) {
+  const uint32_t index = uint32_t(start.light - scene.lights);
+  const int32_t own = scene.media.light_medium(index);
+  const Light& l = *start.light;
+  if (l.type != LightType::area_triangle && l.type != LightType::area_sphere) return own;
+  SurfaceHit at;
+  at.kind = l.type == LightType::area_triangle ? ShapeKind::triangle : ShapeKind::sphere;
+  at.prim = l.shape;
+  at.ng = start.emission.ng;
+  return scene.media.after(at, d, own);
+}
+
 // The time of a light path that no camera path shares (LT; scene/motion.h).
 PS_INLINE float light_path_time(const SceneView& scene, const Sampler& sampler) {
   return sample_time(scene, sampler, light_dims::kTime);

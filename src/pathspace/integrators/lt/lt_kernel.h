@@ -43,20 +43,6 @@ PS_INLINE bool reaches_image(const SplatFilmView& film, const PixelFilter& filte
   return filter_reaches_image(filter, film.width, film.height, rx, ry);
 }
 
-// The medium a light path leaves its light into along d: the emitting shape's side where the shape
-// bounds media, else the light's own medium (MediaView::light_media).
-PS_INLINE int32_t light_medium(const SceneView& scene, const LightPathStart& start, const Vec3& d) {
-  const uint32_t index = uint32_t(start.light - scene.lights);
-  const int32_t own = scene.media.light_medium(index);
-  const Light& l = *start.light;
-  if (l.type != LightType::area_triangle && l.type != LightType::area_sphere) return own;
-  SurfaceHit at;
-  at.kind = l.type == LightType::area_triangle ? ShapeKind::triangle : ShapeKind::sphere;
-  at.prim = l.shape;
-  at.ng = start.emission.ng;
-  return scene.media.after(at, d, own);
-}
-
 }  // namespace lt_detail
 
 namespace lt_detail {
@@ -124,7 +110,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         ++counters->shadow_rays;
         prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
         const Ray shadow = spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time);
-        const Rgb tr = media ? transmittance_along(scene, tracer, shadow, light_medium(scene, start, pr.wi), rng, counters)
+        const Rgb tr = media ? transmittance_along(scene, tracer, shadow, light_path_medium(scene, start, pr.wi), rng, counters)
                              : Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
         if (!is_black(tr)) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
@@ -138,7 +124,7 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   Rgb beta = e.weight * inv_select;
   const float beta0 = max_component(beta);  // Russian roulette looks at the throughput relative to this
   Ray ray = first_light_ray(scene, e);
-  int32_t medium = media ? light_medium(scene, start, e.d) : kVacuum;
+  int32_t medium = media ? light_path_medium(scene, start, e.d) : kVacuum;
 
   // The vertex reached after `segments` segments; its camera connection makes segments + 1.
   for (int segments = 1; segments < max_segments; ++segments) {
