@@ -68,6 +68,9 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const ImageTexture& t : scene.textures) texels += t.texel_count(), texture_bytes += t.memory_bytes();
   size_t moving_vertices = 0;  // motion blur (scene/motion.h): vertices that move while the shutter is open
   for (size_t i = 0; i < scene.positions_end.size(); ++i) moving_vertices += !(scene.positions_end[i] == scene.positions[i]);
+  // Participating media (docs/media.md): how many of each kind, and whether the camera sits in one.
+  size_t homogeneous_media = 0, grid_media = 0;
+  for (const Medium& m : scene.media.media) ++(m.type == MediumType::homogeneous ? homogeneous_media : grid_media);
   const PerspectiveCamera& c = scene.camera;
   if (json) {
     nlohmann::ordered_json j;
@@ -84,6 +87,7 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
                                                              : nlohmann::json{scene.environment_image.width, scene.environment_image.height};
     j["lights"] = lights;
     j["materials"] = materials;
+    j["media"] = {{"homogeneous", homogeneous_media}, {"grid", grid_media}, {"camera_in_medium", scene.media.camera_medium != kVacuum}};
     j["camera"] = {{"width", c.width}, {"height", c.height}, {"lens_radius", c.lens_radius}, {"moves", scene.camera_moves},
                    {"pixel_filter", describe_pixel_filter(c.filter)}};
     j["file_spp"] = settings.spp;
@@ -110,6 +114,9 @@ void print_summary(const std::string& path, bool builtin, const Scene& scene, co
   for (const auto& [kind, n] : lights) fmt::print("    {:<26} {}\n", kind, n);
   fmt::print("  materials    {}\n", scene.materials.size());
   for (const auto& [kind, n] : materials) fmt::print("    {:<26} {}\n", kind, n);
+  if (!scene.media.empty())
+    fmt::print("  media        {} homogeneous, {} grid{}\n", homogeneous_media, grid_media,
+               scene.media.camera_medium != kVacuum ? "; the camera is in a medium" : "");
   fmt::print("  camera       {}x{}{}, pixel filter {}\n", c.width, c.height,
              c.is_pinhole() ? "" : fmt::format(", thin lens radius {:g}", c.lens_radius), describe_pixel_filter(c.filter));
   fmt::print("  path length  at most {} segments{}\n", scene.max_path_segments,

@@ -19,7 +19,8 @@ std::vector<ShippedScene> shipped_scenes() {
   room.obj_camera.camera_target = Vec3(0.f, 1.1f, -2.f);
   room.obj_camera.camera_up = Vec3(0.f, 1.f, 0.f);
   room.obj_camera.fov_degrees = 65.f;
-  return {caustic, room};
+  const ShippedScene fog{"fog-room", {"scene.pbrt", "scene.xml"}, {}};  // media: no OBJ form
+  return {caustic, room, fog};
 }
 
 const ShippedScene& shipped_scene(const std::string& name) {

@@ -528,12 +528,8 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       dvcm *= mis(h, distance_squared(p, prev_p));  // no cosine at a medium vertex
       if (segments >= max_segments) break;
       const uint32_t vi = uint32_t(segments - 1);
-      CameraVertex z{nullptr, Frame(), p, Vec3(0.f), Vec3(0.f), beta, dvcm, dvc, time};
-      z.in_medium = true;
-      z.g = scene.media.media[medium].g;
-      z.wo_world = -ray.d;
-      z.medium = medium;
-      z.rng = &rng;
+      const CameraVertex z{nullptr, Frame(), p,    Vec3(0.f), Vec3(0.f),         beta, dvcm, dvc, time,
+                           true,    scene.media.media[medium].g, -ray.d, medium, MediumInterface{}, &rng};
       if (scene.num_lights > 0) {
         const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
         radiance += c;
@@ -612,10 +608,8 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     const Vec3 wo = frame.to_local(-ray.d);
     const uint32_t vi = uint32_t(segments - 1);
     if (bsdf_has_non_delta(mat)) {
-      CameraVertex z{&mat, frame, hit.p, hit.ng, wo, beta, dvcm, dvc, time};
-      z.medium = medium;
-      z.iface = scene.media.interface_at(hit);
-      z.rng = &rng;
+      const CameraVertex z{&mat, frame, hit.p,  hit.ng, wo,    beta, dvcm, dvc, time,
+                           false, 0.f,  -ray.d, medium, scene.media.interface_at(hit), &rng};
       if (scene.num_lights > 0) {
         const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
         radiance += c;
