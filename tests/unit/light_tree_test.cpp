@@ -163,6 +163,26 @@ TEST(LightTree, EveryLightThatReachesAPointCanBePicked) {
   EXPECT_GT(checked, 5000);
 }
 
+// A hard-edged spot (pbrt-v4 conedelta 0, Mitsuba beam_width = cutoff_angle) has no spread beyond
+// its cone: its bounds once rejected even the points on its axis, so the tree never picked it and
+// the spot rendered black.
+TEST(LightTree, HardEdgedSpotIsPickedInsideItsCone) {
+  Scene s;
+  s.camera.width = s.camera.height = 4;
+  const uint32_t m = s.add_material(Material{});
+  s.add_quad(Vec3(-1.f, 2.f, -1.f), Vec3(-1.f, 2.f, 1.f), Vec3(1.f, 2.f, 1.f), Vec3(1.f, 2.f, -1.f), m, Rgb(1.f));
+  const float cos_cone = std::cos(0.3f);
+  s.add_spot_light(Vec3(3.f, 1.f, 0.f), Vec3(0.f, -1.f, 0.f), Rgb(5.f), cos_cone, cos_cone);
+  s.light_selection = LightSelection::bvh;
+  s.finalize();
+  const SceneView view = s.view();
+  ASSERT_TRUE(view.light_tree.active);
+  const uint32_t spot = uint32_t(s.lights.size() - 1);
+  EXPECT_GT(light_selection_probability_at(view, Vec3(3.f, 0.f, 0.f), Vec3(0.f, 1.f, 0.f), spot), 0.f) << "on the axis";
+  EXPECT_GT(light_selection_probability_at(view, Vec3(3.2f, 0.f, 0.f), Vec3(0.f), spot), 0.f) << "inside the cone, in a medium";
+  EXPECT_EQ(light_selection_probability_at(view, Vec3(5.f, 0.f, 0.f), Vec3(0.f, 1.f, 0.f), spot), 0.f) << "outside the cone";
+}
+
 TEST(LightTree, ThirtyThousandEmittersMakeAShallowTree) {
   Scene s;
   s.camera.width = s.camera.height = 4;

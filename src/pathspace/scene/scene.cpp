@@ -233,6 +233,10 @@ bool parse_light_selection(const std::string& name, LightSelection* out) {
   return false;
 }
 
+namespace {
+const float kHardSpotSpreadCos = std::cos(1e-3f);
+}  // namespace
+
 std::optional<LightBounds> Scene::light_bounds(size_t i) const {
   const Light& l = lights[i];
   LightBounds b;
@@ -284,6 +288,10 @@ std::optional<LightBounds> Scene::light_bounds(size_t i) const {
       b.w = l.direction;
       b.cos_theta_o = std::clamp(l.cos_falloff, -1.f, 1.f);
       b.cos_theta_e = std::cos(std::max(0.f, std::acos(std::clamp(l.cos_total, -1.f, 1.f)) - std::acos(b.cos_theta_o)));
+      // A hard-edged spot (cos_falloff = cos_total) has no spread: cos_theta_e = 1 would make the
+      // importance test (cos_p <= cos_theta_e) reject even the points on its axis, and the tree would
+      // never pick it. A spread of 1e-3 rad keeps the bound conservative.
+      b.cos_theta_e = std::min(b.cos_theta_e, kHardSpotSpreadCos);
       return b;
     }
     case LightType::projector: {  // within the cone through the image plane's corners
