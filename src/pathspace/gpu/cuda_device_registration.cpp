@@ -20,8 +20,9 @@ std::unique_ptr<Integrator> create_on_gpu(const IntegratorContext& context, cons
   throw Error("--device cuda does not run --integrator " + integrator);  // check_device rules this out first
 }
 
+// Media: PT's megakernel traces them with the CPU's device functions (docs/media.md).
 const DeviceRegistrar kRegistrar{DeviceEntry{"cuda", "an NVIDIA GPU through CUDA (device 0; 'pathspace info' names it)", {"pt"}, {"hashed"},
-                                             create_on_gpu}};
+                                             create_on_gpu, true}};
 
 }  // namespace
 

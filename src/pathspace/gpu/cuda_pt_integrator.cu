@@ -21,6 +21,7 @@
 #include "pathspace/gpu/device_scene.h"
 #include "pathspace/gpu/gpu_info.h"
 #include "pathspace/integrators/common/camera_sample.h"
+#include "pathspace/integrators/pt/caustic_photon_map.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/options/option_spec.h"
 #include "pathspace/scene/scene.h"
@@ -104,17 +105,20 @@ class CudaPtIntegrator final : public Integrator {
       buffer_.resize(pixels_, records_per_path(settings_.selection));
       filtered_.resize(size_t(pixels_) * size_t(records_per_path(settings_.selection)));
       // Photon-mapped caustics beside the filter (2014 paper, sec. 2.3), as PtIntegrator.
-      if (fs.caustics.enabled()) {
-        const SceneView host = ctx.scene.view();
-        caustics_.emplace(host, fs.caustics, settings_.max_segments > 0 ? settings_.max_segments : host.max_path_segments,
+      const SceneView host = ctx.scene.view();
+      const CausticSettings caustics = caustics_for_scene(fs.caustics, host);
+      if (caustics.enabled())
+        caustics_.emplace(host, caustics, settings_.max_segments > 0 ? settings_.max_segments : host.max_path_segments,
                           settings_.selection);
-      }
     } else {
       settings_.selection.mode = VertexSelectionMode::none;  // nothing to split a path for (as on the CPU)
     }
     image_.resize(pixels_);
     counters_.resize(1);
     if (pipeline_ == CudaPtPipeline::wavefront) {
+      // Its stages have no distance sampling in media (pt_trace_branch's loop is the megakernel's).
+      if (ctx.scene.view().media.any())
+        throw Error("the wavefront pipeline does not trace participating media (docs/media.md); use the megakernel");
       // Its paths are states in queues, one per pixel: branches of one path would need queues of their own.
       if (settings_.selection.mode != VertexSelectionMode::none && settings_.selection.camera_splits > 0)
         throw Error("the wavefront pipeline does not trace camera-side branches (--psf-camera-splits); use the megakernel");

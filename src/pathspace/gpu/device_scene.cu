@@ -54,6 +54,13 @@ DeviceScene::DeviceScene(const Scene& scene) {
     view_.light_tree.leaf_position = upload(h.light_tree.leaf_position, h.num_lights);
     view_.light_tree.infinite = upload(h.light_tree.infinite, h.light_tree.num_infinite);
   }
+  // Participating media (docs/media.md): the media, their grids and majorants, the bindings.
+  const MediaView& hm = h.media;
+  view_.media.media = upload(hm.media, hm.count);
+  view_.media.grid_values = upload(hm.grid_values, scene.media.grid_values.size());
+  view_.media.triangle_interfaces = upload(hm.triangle_interfaces, hm.triangle_interfaces ? h.num_triangles : 0);
+  view_.media.sphere_interfaces = upload(hm.sphere_interfaces, hm.sphere_interfaces ? h.num_spheres : 0);
+  view_.media.light_media = upload(hm.light_media, hm.light_media ? h.num_lights : 0);
   EnvironmentMapView& env = view_.environment_map;
   env.texels = upload(h.environment_map.texels, size_t(h.environment_map.width) * size_t(h.environment_map.height));
   const Piecewise2DView& dist = h.environment_map.distribution;

@@ -9,9 +9,19 @@
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
+#include "pathspace/base/log.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
+
+CausticSettings caustics_for_scene(const CausticSettings& asked, const SceneView& scene) {
+  if (!asked.enabled() || !scene.media.any()) return asked;
+  log::warning("the caustic photons (--psf-caustic-photons) do not travel through participating media yet: "
+               "filtering without them (docs/media.md)");
+  CausticSettings none = asked;
+  none.photons_per_pixel = 0.0;
+  return none;
+}
 
 CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings& settings, int max_segments,
                                    const VertexSelection& selection)

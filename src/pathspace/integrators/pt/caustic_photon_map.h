@@ -20,6 +20,11 @@ namespace pathspace {
 
 class Accel;
 
+// The caustic photons a filter asked for, as the scene allows them: none in a scene with
+// participating media (they do not travel through media yet; docs/media.md), with a warning. A
+// filter's default turns them on, so refusing them would refuse every filtered render of such a scene.
+CausticSettings caustics_for_scene(const CausticSettings& asked, const SceneView& scene);
+
 class CausticPhotonMap {
  public:
   // selection: the camera paths' vertex selection (where photons are stored: caustic_photons.h).

@@ -6,7 +6,6 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
-#include "pathspace/base/log.h"
 #include "pathspace/parallel/cancellable_work.h"
 #include "pathspace/parallel/parallel_for.h"
 #include "pathspace/sampling/hash.h"
@@ -85,13 +84,7 @@ PtIntegrator::PtIntegrator(const Scene& scene, const Accel& accel, const PtSetti
     probes_.delta_lights = probe_lights_.data();
     probes_.delta_count = int(probe_lights_.size());
   }
-  if (needs_.caustics.enabled() && view_.media.any()) {
-    // The photons do not travel through media yet: the filter runs without them (its default turns
-    // them on, so a refusal would refuse every filtered render of a scene with media).
-    log::warning("the caustic photons (--psf-caustic-photons) do not travel through participating media yet: "
-                 "filtering without them (docs/media.md)");
-    needs_.caustics.photons_per_pixel = 0.0;
-  }
+  needs_.caustics = caustics_for_scene(needs_.caustics, view_);
   if (needs_.caustics.enabled())
     caustics_ = std::make_unique<CausticPhotonMap>(view_, needs_.caustics,
                                                    settings_.max_segments > 0 ? settings_.max_segments : view_.max_path_segments,
