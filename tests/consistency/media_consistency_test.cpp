@@ -13,7 +13,9 @@
 // alpha = 0.01, Sidak-corrected over the file's kComparisons comparisons.
 #include <gtest/gtest.h>
 
+#include "pathspace/filters/hashed/hashed_filter_settings.h"
 #include "pathspace/options/option_spec.h"
+#include "pathspace/session/render_session.h"
 #include "support/integrator_comparison.h"
 #include "support/media_scenes.h"
 #include "support/statistics.h"
@@ -61,11 +63,17 @@ INSTANTIATE_TEST_SUITE_P(Scenes, MediaPtBpt, ::testing::Values("fog", "fog-grid"
 
 INSTANTIATE_TEST_SUITE_P(Scenes, MediaPtLt, ::testing::Values("fog", "fog-grid", "smoke-sphere", "translucent-sphere"));
 
+// The integrators that render media, the hashed filter included (its medium vertices).
+std::vector<std::pair<std::string, RenderConfig>> media_configs() {
+  return {{"pt", make_render_config("pt", PtSettings{}, 7)},
+          {"pt+hashed", with_filter(make_render_config("pt", PtSettings{}, 7), "hashed", HashedFilterSettings{})},
+          {"lt", make_render_config("lt", LtSettings{}, 7)},
+          {"bpt", make_render_config("bpt", BptSettings{}, 7)}};
+}
+
 TEST(MediaRenders, BitIdenticalForOneAndTwoThreads) {
   const Scene scene = testing::make_fog_cornell_box(16, 16, true);
-  for (const char* integrator : {"pt", "lt"}) {
-    const RenderConfig config = std::string(integrator) == "pt" ? make_render_config("pt", PtSettings{}, 7)
-                                                                : make_render_config("lt", LtSettings{}, 7);
+  for (const auto& [integrator, config] : media_configs()) {
     const testing::Rendered one = testing::render_integrator(scene, testing::with_threads(config, 1), 3);
     const testing::Rendered two = testing::render_integrator(scene, testing::with_threads(config, 2), 3);
     size_t lit = 0;
@@ -74,6 +82,31 @@ TEST(MediaRenders, BitIdenticalForOneAndTwoThreads) {
       lit += one.mean.pixels[i].r > 0.f;
     }
     EXPECT_GT(lit, one.mean.size() / 2) << integrator;
+  }
+}
+
+TEST(MediaRenders, RestoredSessionContinuesBitForBit) {
+  const auto scene = std::make_shared<const Scene>(testing::make_fog_cornell_box(16, 16, true));
+  const auto accel = std::make_shared<const Accel>(*scene);
+  for (auto [integrator, config] : media_configs()) {
+    config.threads = 2;
+    SessionState state;
+    {
+      RenderSession first(scene, accel, config);
+      first.run(RunLimit::for_passes(3));
+      state = first.save_state();
+    }
+    RenderSession restored(scene, accel, config);
+    restored.restore_state(state);
+    restored.run(RunLimit::for_passes(2));
+    RenderSession whole(scene, accel, config);
+    whole.run(RunLimit::for_passes(5));
+    const RenderSnapshot a = restored.snapshot(), b = whole.snapshot();
+    ASSERT_EQ(a.mean.pixels.size(), b.mean.pixels.size());
+    for (size_t i = 0; i < a.mean.pixels.size(); ++i) {
+      ASSERT_EQ(a.mean.pixels[i], b.mean.pixels[i]) << integrator << " pixel " << i;
+      ASSERT_EQ(a.variance.pixels[i], b.variance.pixels[i]) << integrator << " pixel " << i;
+    }
   }
 }
 

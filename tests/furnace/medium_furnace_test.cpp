@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "pathspace/media/henyey_greenstein.h"
 #include "support/integrator_comparison.h"
@@ -48,23 +49,26 @@ TEST(MediumFurnace, PtSeesTheSkyThroughAGlassSphere) {
   testing::expect_matches_exact(r, constant_image(12, 12, kSky), "pt, glass sphere", kAlpha);
 }
 
-// Transmittance: an emitter seen through an absorbing slab, each pixel's mean over an n x n grid
-// of camera rays of le exp(-sigma_a / |d.z|) (slab thickness 1), by PT and by LT (the emitter's
-// own connection to the camera, through the slab).
-Image slab_image(const Scene& s, const Rgb& sigma_a, float le, int n) {
-  const PerspectiveCamera& cam = s.camera;
+// Each pixel's mean over an n x n grid of camera rays of radiance(ray) (per channel, in double).
+Image footprint_image(const PerspectiveCamera& cam, int n, const std::function<void(const Ray&, double*)>& radiance) {
   Image img(cam.width, cam.height);
   for (int y = 0; y < cam.height; ++y)
     for (int x = 0; x < cam.width; ++x) {
       double sum[3] = {0, 0, 0};
       for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const Ray ray = cam.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
-          for (int c = 0; c < 3; ++c) sum[c] += le * std::exp(-double(sigma_a[c]) / std::fabs(double(ray.d.z)));
-        }
+        for (int i = 0; i < n; ++i)
+          radiance(cam.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n)), sum);
       img.at(x, y) = Rgb(float(sum[0]), float(sum[1]), float(sum[2])) * (1.f / float(n * n));
     }
   return img;
+}
+
+// Transmittance: an emitter seen through an absorbing slab, le exp(-sigma_a / |d.z|) along each camera
+// ray (slab thickness 1), by PT and by LT (the emitter's own connection to the camera, through the slab).
+Image slab_image(const Scene& s, const Rgb& sigma_a, float le, int n) {
+  return footprint_image(s.camera, n, [&](const Ray& ray, double* sum) {
+    for (int c = 0; c < 3; ++c) sum[c] += le * std::exp(-double(sigma_a[c]) / std::fabs(double(ray.d.z)));
+  });
 }
 
 TEST(MediumTransmittance, SlabIsBeerLambertForPtAndLt) {
@@ -82,30 +86,19 @@ TEST(MediumTransmittance, SlabIsBeerLambertForPtAndLt) {
 // The exact single-scattering image: each pixel's mean over an n x n grid of camera rays of the
 // radiance integral along the ray (midpoint rule on t in [0, 80], the medium's e^{-sigma_t t} < 1e-9).
 Image single_scattering_image(const Scene& s, const testing::SingleScattering& p, int n) {
-  const PerspectiveCamera& cam = s.camera;
   const Rgb st = p.sigma_a + p.sigma_s;
-  Image img(cam.width, cam.height);
   constexpr int steps = 8000;
   constexpr double t_end = 80.0;
-  for (int y = 0; y < cam.height; ++y)
-    for (int x = 0; x < cam.width; ++x) {
-      double sum[3] = {0, 0, 0};
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const Ray ray = cam.generate_ray(float(x) + (float(i) + 0.5f) / float(n), float(y) + (float(j) + 0.5f) / float(n));
-          for (int k = 0; k < steps; ++k) {
-            const double t = (k + 0.5) * t_end / steps;
-            const Vec3 q = ray.at(float(t));
-            const Vec3 to = p.light - q;
-            const double r = length(to);
-            const double phase = hg_phase(dot(ray.d, to / float(r)), p.g);
-            for (int c = 0; c < 3; ++c)
-              sum[c] += p.sigma_s[c] * std::exp(-st[c] * (t + r)) * phase * p.intensity[c] / (r * r) * (t_end / steps);
-          }
-        }
-      img.at(x, y) = Rgb(float(sum[0]), float(sum[1]), float(sum[2])) * (1.f / float(n * n));
+  return footprint_image(s.camera, n, [&](const Ray& ray, double* sum) {
+    for (int k = 0; k < steps; ++k) {
+      const double t = (k + 0.5) * t_end / steps;
+      const Vec3 to = p.light - ray.at(float(t));
+      const double r = length(to);
+      const double phase = hg_phase(dot(ray.d, to / float(r)), p.g);
+      for (int c = 0; c < 3; ++c)
+        sum[c] += p.sigma_s[c] * std::exp(-st[c] * (t + r)) * phase * p.intensity[c] / (r * r) * (t_end / steps);
     }
-  return img;
+  });
 }
 
 TEST(SingleScattering, PtMatchesQuadrature) {

@@ -85,28 +85,30 @@ Scene make_fog_cornell_box(int width, int height, bool grid) {
   return s;
 }
 
-Scene make_smoke_sphere_box(int width, int height) {
+namespace {
+// The Cornell box with a sphere of `boundary` around a homogeneous medium of the given coefficients
+// (per box size).
+Scene box_with_medium_sphere(int width, int height, const Material& boundary, const Rgb& sigma_a, const Rgb& sigma_s, float g) {
   Scene probe = make_cornell_box(kLightCeiling, 4, 4);
   const float size = probe.geometry_bounds().hi.x - probe.geometry_bounds().lo.x;
-  Scene s0;
-  const uint32_t m = s0.media.add_homogeneous(Rgb(0.5f, 1.f, 1.5f) / size, Rgb(8.f, 6.f, 4.f) / size, -0.3f);
-  Material boundary;
-  boundary.type = MaterialType::interface;
+  SceneMedia media;
+  const uint32_t m = media.add_homogeneous(sigma_a / size, sigma_s / size, g);
   Scene s = box_with_sphere(width, height, boundary, m);
-  s.media.media = s0.media.media;
+  s.media.media = media.media;
   s.finalize();
   return s;
 }
+}  // namespace
+
+Scene make_smoke_sphere_box(int width, int height) {
+  Material boundary;
+  boundary.type = MaterialType::interface;
+  return box_with_medium_sphere(width, height, boundary, Rgb(0.5f, 1.f, 1.5f), Rgb(8.f, 6.f, 4.f), -0.3f);
+}
 
 Scene make_translucent_sphere_box(int width, int height) {
-  Scene probe = make_cornell_box(kLightCeiling, 4, 4);
-  const float size = probe.geometry_bounds().hi.x - probe.geometry_bounds().lo.x;
-  Scene s0;
-  const uint32_t m = s0.media.add_homogeneous(Rgb(0.2f, 0.5f, 1.f) / size, Rgb(20.f, 16.f, 12.f) / size, 0.5f);
-  Scene s = box_with_sphere(width, height, make_rough_dielectric(0.8f, 1.33f), m);
-  s.media.media = s0.media.media;
-  s.finalize();
-  return s;
+  return box_with_medium_sphere(width, height, make_rough_dielectric(0.8f, 1.33f), Rgb(0.2f, 0.5f, 1.f), Rgb(20.f, 16.f, 12.f),
+                                0.5f);
 }
 
 Scene make_medium_furnace(int resolution, bool glass_boundary, float sky) {

@@ -12,6 +12,7 @@
 #include "pathspace/io/mitsuba/mitsuba_volume_file.h"
 #include "pathspace/media/grid_lookup.h"
 #include "support/temp_dir.h"
+#include "support/near_expectations.h"
 
 namespace pathspace {
 namespace {
@@ -55,15 +56,8 @@ std::string find_warning(const std::vector<std::string>& warnings, const std::st
   return {};
 }
 
-void expect_rgb_near(const Rgb& a, const Rgb& b, float eps = 1e-5f) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], eps) << "channel " << c;
-}
-
-void expect_vec_near(const Vec3& a, const Vec3& b, float eps = 1e-5f) {
-  EXPECT_NEAR(a.x, b.x, eps);
-  EXPECT_NEAR(a.y, b.y, eps);
-  EXPECT_NEAR(a.z, b.z, eps);
-}
+using testing::expect_rgb_near;
+using testing::expect_vec_near;
 
 // A Mitsuba .vol file's bytes (little-endian, whatever the host).
 void put32(std::string* b, uint32_t v) {

@@ -8,6 +8,7 @@
 
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/media/grid_lookup.h"
+#include "support/near_expectations.h"
 
 namespace pathspace {
 namespace {
@@ -33,15 +34,8 @@ void expect_error(const std::string& world, const std::string& where, const std:
   }
 }
 
-void expect_rgb_near(const Rgb& a, const Rgb& b, float eps = 1e-5f) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], eps) << "channel " << c;
-}
-
-void expect_vec_near(const Vec3& a, const Vec3& b, float eps = 1e-5f) {
-  EXPECT_NEAR(a.x, b.x, eps);
-  EXPECT_NEAR(a.y, b.y, eps);
-  EXPECT_NEAR(a.z, b.z, eps);
-}
+using testing::expect_rgb_near;
+using testing::expect_vec_near;
 
 const char* kQuad = "Shape \"trianglemesh\" \"point3 P\" [ -1 -1 0  1 -1 0  1 1 0  -1 1 0 ] \"integer indices\" [ 0 1 2  0 2 3 ]\n";
 

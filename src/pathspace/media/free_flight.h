@@ -83,9 +83,11 @@ PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& 
   return f;
 }
 
-PS_INLINE FreeFlight grid_flight(const Medium& m, const float* values, const Ray& ray, float tmax, const Rgb& shares,
-                                 Pcg32& rng) {
-  FreeFlight f;
+// Calls collide(t, sigma_bar) at each tentative collision along `ray` up to tmax: exponential steps
+// against the majorant of each cell the ray crosses (media/majorant_walk.h), until it returns false.
+template <typename Collide>
+PS_INLINE void for_each_tentative_collision(const Medium& m, const float* values, const Ray& ray, float tmax, Pcg32& rng,
+                                            Collide collide) {
   MajorantWalk walk(m, values, ray, tmax);
   MajorantSegment seg;
   while (walk.next(&seg)) {
@@ -94,53 +96,57 @@ PS_INLINE FreeFlight grid_flight(const Medium& m, const float* values, const Ray
     for (;;) {
       t += exponential_step(seg.sigma, rng.next_float());
       if (!(t < seg.t1)) break;
-      const Vec3 g = grid_point(m, ray.at(t));
-      const Rgb st = medium_sigma_t(m, values, g);
-      const Rgb ss = medium_albedo(m, values, g) * st;
-      const Rgb sn = nonnegative(Rgb(seg.sigma) - st);
-      // The shares weigh the path's own weight: a channel's ratio is divided by the mixture, so
-      // the weighted sum of the new weights equals that of the old ones in expectation.
-      const Rgb sw = shares * f.weight;
-      const float norm = sw.r + sw.g + sw.b;
-      const Rgb mixw = norm > 0.f ? sw / norm : shares;
-      const float ps = mix(mixw, ss) / seg.sigma, pn = mix(mixw, sn) / seg.sigma;
-      const float u = rng.next_float();
-      if (u < ps) {
-        f.event = MediumEvent::scattered;
-        f.t = t;
-        f.weight *= ss / (seg.sigma * ps);
-        return f;
-      }
-      if (u < ps + pn) {
-        f.weight *= sn / (seg.sigma * pn);
-        continue;
-      }
-      f.event = MediumEvent::absorbed;
-      f.weight = Rgb();
-      return f;
+      if (!collide(t, seg.sigma)) return;
     }
   }
+}
+
+PS_INLINE FreeFlight grid_flight(const Medium& m, const float* values, const Ray& ray, float tmax, const Rgb& shares,
+                                 Pcg32& rng) {
+  FreeFlight f;
+  for_each_tentative_collision(m, values, ray, tmax, rng, [&](float t, float sigma) {
+    const Vec3 g = grid_point(m, ray.at(t));
+    const Rgb st = medium_sigma_t(m, values, g);
+    const Rgb ss = medium_albedo(m, values, g) * st;
+    const Rgb sn = nonnegative(Rgb(sigma) - st);
+    // The shares weigh the path's own weight: a channel's ratio is divided by the mixture, so the
+    // weighted sum of the new weights equals that of the old ones in expectation.
+    const Rgb sw = shares * f.weight;
+    const float norm = sw.r + sw.g + sw.b;
+    const Rgb mixw = norm > 0.f ? sw / norm : shares;
+    const float ps = mix(mixw, ss) / sigma, pn = mix(mixw, sn) / sigma;
+    const float u = rng.next_float();
+    if (u < ps) {
+      f.event = MediumEvent::scattered;
+      f.t = t;
+      f.weight *= ss / (sigma * ps);
+      return false;
+    }
+    if (u < ps + pn) {
+      f.weight *= sn / (sigma * pn);
+      return true;
+    }
+    f.event = MediumEvent::absorbed;
+    f.weight = Rgb();
+    return false;
+  });
   return f;
 }
 
 PS_INLINE Rgb grid_transmittance(const Medium& m, const float* values, const Ray& ray, float tmax, Pcg32& rng) {
   Rgb tr(1.f);
-  MajorantWalk walk(m, values, ray, tmax);
-  MajorantSegment seg;
-  while (walk.next(&seg)) {
-    if (!(seg.sigma > 0.f)) continue;
-    float t = seg.t0;
-    for (;;) {
-      t += exponential_step(seg.sigma, rng.next_float());
-      if (!(t < seg.t1)) break;
-      const Rgb st = medium_sigma_t(m, values, grid_point(m, ray.at(t)));
-      tr *= nonnegative(Rgb(seg.sigma) - st) / seg.sigma;
-      if (max_component(tr) < 0.05f) {  // Russian roulette: survive with 1/4, weighted by 4
-        if (rng.next_float() < 0.75f) return Rgb();
-        tr *= 4.f;
+  for_each_tentative_collision(m, values, ray, tmax, rng, [&](float t, float sigma) {
+    const Rgb st = medium_sigma_t(m, values, grid_point(m, ray.at(t)));
+    tr *= nonnegative(Rgb(sigma) - st) / sigma;
+    if (max_component(tr) < 0.05f) {  // Russian roulette: survive with 1/4, weighted by 4
+      if (rng.next_float() < 0.75f) {
+        tr = Rgb();
+        return false;
       }
+      tr *= 4.f;
     }
-  }
+    return true;
+  });
   return tr;
 }
 }  // namespace media_detail

@@ -475,6 +475,25 @@ PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeur
   return scene.media.any() ? c * tr : c;
 }
 
+// Every connection of camera vertex z (reached after `segments` segments): next event estimation
+// (s = 1) and the inner connections to the stored light vertices within the path limit, each
+// recorded under its strategy and added to *radiance, times z's throughput, one by one.
+template <typename Tracer>
+PS_HD void connect_camera_vertex(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, uint32_t vi,
+                                 MisHeuristic h, const CameraVertex& z, const LightVertex* verts, int nv, int segments,
+                                 int max_segments, const BptFilms& films, uint32_t pixel, PathCounters* counters, Rgb* radiance) {
+  if (scene.num_lights > 0) {
+    const Rgb c = z.beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
+    *radiance += c;
+    record(films, 1, segments + 1, pixel, c);
+  }
+  for (int k = 0; k < nv && verts[k].segments + 1 + segments <= max_segments; ++k) {
+    const Rgb c = z.beta * connect_vertices(scene, tracer, h, z, verts[k], counters);
+    *radiance += c;
+    record(films, verts[k].segments + 1, segments + 1, pixel, c);
+  }
+}
+
 }  // namespace bpt_detail
 
 // One BPT sample of `pixel`: returns the camera-side estimate (strategies with t >= 2) and splats
@@ -530,16 +549,8 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       const uint32_t vi = uint32_t(segments - 1);
       const CameraVertex z{nullptr, Frame(), p,    Vec3(0.f), Vec3(0.f),         beta, dvcm, dvc, time,
                            true,    scene.media.media[medium].g, -ray.d, medium, MediumInterface{}, &rng};
-      if (scene.num_lights > 0) {
-        const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
-        radiance += c;
-        record(films, 1, segments + 1, pixel, c);
-      }
-      for (int k = 0; k < nv && verts[k].segments + 1 + segments <= max_segments; ++k) {
-        const Rgb c = beta * connect_vertices(scene, tracer, h, z, verts[k], counters);
-        radiance += c;
-        record(films, verts[k].segments + 1, segments + 1, pixel, c);
-      }
+      connect_camera_vertex(scene, tracer, sampler, vi, h, z, verts, nv, segments, max_segments, films, pixel, counters,
+                            &radiance);
       // A new direction from the phase function (exact sampling: weight 1, reverse density = forward).
       const Point2 u{sampler.at(dims::vertex(vi, dims::kBsdfU)), sampler.at(dims::vertex(vi, dims::kBsdfU + 1))};
       const Vec3 wi = hg_sample(ray.d, z.g, u);
@@ -610,16 +621,8 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
     if (bsdf_has_non_delta(mat)) {
       const CameraVertex z{&mat, frame, hit.p,  hit.ng, wo,    beta, dvcm, dvc, time,
                            false, 0.f,  -ray.d, medium, scene.media.interface_at(hit), &rng};
-      if (scene.num_lights > 0) {
-        const Rgb c = beta * connect_to_light(scene, tracer, sampler, vi, h, z, counters);
-        radiance += c;
-        record(films, 1, segments + 1, pixel, c);
-      }
-      for (int k = 0; k < nv && verts[k].segments + 1 + segments <= max_segments; ++k) {
-        const Rgb c = beta * connect_vertices(scene, tracer, h, z, verts[k], counters);
-        radiance += c;
-        record(films, verts[k].segments + 1, segments + 1, pixel, c);
-      }
+      connect_camera_vertex(scene, tracer, sampler, vi, h, z, verts, nv, segments, max_segments, films, pixel, counters,
+                            &radiance);
     }
 
     BsdfSample bs;
