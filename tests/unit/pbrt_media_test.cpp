@@ -1,7 +1,7 @@
 // pbrt-v4 participating media (io/pbrt/pbrt_media.h): MakeNamedMedium's homogeneous, uniformgrid
 // and rgbgrid media with pbrt-v4's defaults, MediumInterface bindings of shapes, lights and the
-// camera through the graphics state, Material "interface", and bad media as errors at their
-// file:line:column.
+// camera through the graphics state, Material "interface", the subsurface material (a dielectric
+// around its own medium), and bad media as errors at their file:line:column.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -146,6 +146,37 @@ TEST(PbrtMedia, NamedInterfaceMaterial) {
   const Scene s = load("MakeNamedMaterial \"boundary\" \"string type\" \"interface\"\nNamedMaterial \"boundary\"\nShape \"sphere\"\n");
   ASSERT_EQ(s.spheres.size(), 1u);
   EXPECT_EQ(s.materials[s.spheres[0].material].type, MaterialType::interface);
+}
+
+// pbrt-v4's subsurface material: a dielectric boundary around its own homogeneous medium, bound
+// inside the shapes that use it (outside: the graphics state's outside medium).
+TEST(PbrtMedia, SubsurfaceIsADielectricAroundItsMedium) {
+  const Scene s = load(
+      "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+      "MakeNamedMaterial \"skin\" \"string type\" \"subsurface\" \"float eta\" 1.4 \"rgb sigma_a\" [ 0.1 0.2 0.3 ]\n"
+      "  \"rgb sigma_s\" [ 1 2 3 ] \"float scale\" 10 \"float g\" 0.2\n"
+      "NamedMaterial \"skin\"\n"
+      "Shape \"sphere\"\n"
+      "MediumInterface \"\" \"fog\"\n"
+      "Material \"subsurface\"\n"
+      "Shape \"sphere\"\n");
+  ASSERT_EQ(s.media.media.size(), 3u);  // fog, skin's interior, the default subsurface's interior
+  ASSERT_EQ(s.spheres.size(), 2u);
+  const Material& skin = s.materials[s.spheres[0].material];
+  EXPECT_EQ(skin.type, MaterialType::standard);
+  EXPECT_FLOAT_EQ(skin.ior, 1.4f);
+  const MediumInterface a = s.media.sphere_interfaces.at(0), b = s.media.sphere_interfaces.at(1);
+  ASSERT_TRUE(a.transition);
+  EXPECT_EQ(a.outside, kVacuum);
+  const Medium& inside = s.media.media[size_t(a.inside)];
+  expect_rgb_near(inside.sigma_t, Rgb(11.f, 22.f, 33.f), 1e-4f);
+  EXPECT_FLOAT_EQ(inside.g, 0.2f);
+  ASSERT_TRUE(b.transition);
+  EXPECT_EQ(b.outside, 0);  // fog
+  expect_rgb_near(s.media.media[size_t(b.inside)].sigma_t, Rgb(2.5511f, 3.2124f, 3.784f), 1e-4f);  // pbrt-v4's defaults
+  EXPECT_FLOAT_EQ(s.materials[s.spheres[1].material].ior, 1.33f);
+  expect_error("Material \"subsurface\"\n  \"float mfp\" 1\nShape \"sphere\"\n", "test.pbrt:6:3:", "\"mfp\" is not supported");
+  expect_error("Material \"subsurface\" \"float g\" 1\nShape \"sphere\"\n", "test.pbrt:5:1:", "g must lie in (-1, 1)");
 }
 
 TEST(PbrtMedia, UniformGridPlacedByItsTransform) {

@@ -269,6 +269,16 @@ int SceneBuilder::material_index(const std::string& type, const Statement& st) {
     warn(st.loc, "material \"" + type + "\": shapes are rendered with grey diffuse 0.5");
     return -1;
   }
+  if (type == "subsurface") {  // a dielectric around its own medium (docs/media.md)
+    const SubsurfaceMaterial sub = make_subsurface(st, textures_, warnings_);
+    const int index = int(scene_.add_material(sub.boundary));
+    try {
+      interior_media_[index] = scene_.media.add_homogeneous(sub.sigma_a, sub.sigma_s, sub.g);
+    } catch (const Error& e) {
+      throw Error(st.loc, e.what());
+    }
+    return index;
+  }
   return int(scene_.add_material(make_material(type, st, textures_, warnings_)));
 }
 

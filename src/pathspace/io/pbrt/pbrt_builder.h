@@ -142,6 +142,7 @@ class SceneBuilder {
   std::vector<std::pair<GraphicsState, bool>> stack_;  // bool: pushed by TransformBegin
   std::map<std::string, int> named_materials_;
   int interface_material_ = -1;  // pbrt-v4's "interface": one material of MaterialType::interface
+  std::map<int, uint32_t> interior_media_;  // subsurface materials: material index -> its interior medium
   PbrtMedia media_;
   std::map<std::tuple<uint32_t, float, int32_t>, uint32_t> cutout_materials_;  // shape_material's copies
   std::map<std::string, std::pair<Mat4, Mat4>> coord_systems_;  // start and end transforms

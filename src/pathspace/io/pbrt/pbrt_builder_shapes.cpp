@@ -45,6 +45,8 @@ void SceneBuilder::shape(const Statement& st) {
   const SceneCounts before = SceneCounts::of(scene_);
   shape_geometry(st);
   media_.bind(gs_.media, before, SceneCounts::of(scene_));
+  if (const auto it = interior_media_.find(gs_.material); it != interior_media_.end())
+    media_.bind_interior(gs_.media, it->second, before, SceneCounts::of(scene_));
 }
 
 void SceneBuilder::shape_geometry(const Statement& st) {

@@ -352,4 +352,21 @@ Material make_material(const std::string& type, const Statement& st, const Textu
   return m;
 }
 
+SubsurfaceMaterial make_subsurface(const Statement& st, const TextureTable& textures, LoadWarnings* w) {
+  for (const char* refused : {"name", "reflectance", "mfp"})
+    if (const Param* p = st.find(refused))
+      throw Error(p->loc, std::string("subsurface material: \"") + refused +
+                              "\" is not supported; give \"sigma_a\" and \"sigma_s\" (docs/media.md)");
+  SubsurfaceMaterial r;
+  const float eta = st.find("eta") ? eta_from(st, textures, w, "eta") : 1.33f;  // pbrt-v4's default
+  const float alpha = alpha_from(st, w);
+  r.boundary = alpha < 1e-3f ? make_glass(eta) : make_rough_dielectric(alpha, eta);
+  const double scale = st.get_float("scale", 1.0);
+  if (!(scale >= 0.0) || !std::isfinite(scale)) throw Error(st.find("scale")->loc, "subsurface \"scale\" must be finite and >= 0");
+  r.sigma_a = spectrum_param(st, "sigma_a", Rgb(0.0011f, 0.0024f, 0.014f), textures, w, SpectrumUse::unbounded) * float(scale);
+  r.sigma_s = spectrum_param(st, "sigma_s", Rgb(2.55f, 3.21f, 3.77f), textures, w, SpectrumUse::unbounded) * float(scale);
+  r.g = float(st.get_float("g", 0.0));
+  return r;
+}
+
 }  // namespace pathspace::pbrt

@@ -47,6 +47,18 @@ struct TextureTable {
 // Error at the statement) and stores its constant stand-in.
 void add_texture(const Statement& st, const std::string& folder, TextureTable* textures, LoadWarnings* warnings);
 
+// pbrt-v4's "subsurface" material as what it models: a dielectric boundary (eta, roughness) around a
+// homogeneous medium of sigma_a and sigma_s (times "scale"; pbrt-v4's defaults, in mm^-1, when not
+// given) with Henyey-Greenstein g, rendered by the integrators' volumetric random walk instead of
+// pbrt's BSSRDF (docs/media.md). Measured presets ("name") and the "reflectance"/"mfp" form are
+// errors at the parameter.
+struct SubsurfaceMaterial {
+  Material boundary;
+  Rgb sigma_a, sigma_s;
+  float g = 0.f;
+};
+SubsurfaceMaterial make_subsurface(const Statement& st, const TextureTable& textures, LoadWarnings* warnings);
+
 // Converts Material / MakeNamedMaterial parameters of the given pbrt type.
 Material make_material(const std::string& type, const Statement& st, const TextureTable& textures, LoadWarnings* warnings);
 

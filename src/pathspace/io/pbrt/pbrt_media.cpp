@@ -202,6 +202,11 @@ void PbrtMedia::bind(int id, const SceneCounts& before, const SceneCounts& after
   bindings_.push_back({id, before, after});
 }
 
+void PbrtMedia::bind_interior(int id, uint32_t interior, const SceneCounts& before, const SceneCounts& after) {
+  if (after.triangles == before.triangles && after.spheres == before.spheres) return;
+  bindings_.push_back({id, before, after, int32_t(interior)});
+}
+
 int32_t PbrtMedia::resolve(const std::string& name, const FileLoc& loc) const {
   if (name.empty()) return kVacuum;
   const auto it = named_.find(name);
@@ -212,7 +217,14 @@ int32_t PbrtMedia::resolve(const std::string& name, const FileLoc& loc) const {
 void PbrtMedia::finish(SceneMedia* media) const {
   std::vector<MediumInterface> resolved;
   for (const Interface& i : interfaces_) resolved.push_back(make_medium_interface(resolve(i.inside, i.loc), resolve(i.outside, i.loc)));
-  for (const Binding& b : bindings_) bind_added(resolved[size_t(b.id)], b.before, b.after, media);
+  for (const Binding& b : bindings_) {
+    if (b.interior < 0) {
+      bind_added(resolved[size_t(b.id)], b.before, b.after, media);
+    } else {
+      const int32_t outside = b.id >= 0 ? resolved[size_t(b.id)].outside : kVacuum;
+      bind_added(make_medium_interface(b.interior, outside), b.before, b.after, media);
+    }
+  }
   if (camera_ >= 0) media->camera_medium = resolved[size_t(camera_)].outside;
 }
 

@@ -47,6 +47,10 @@ class PbrtMedia {
   // What was created between `before` and `after` under interface `id` (the graphics state's):
   // shapes separate its two media when they differ, lights emit into its outside medium.
   void bind(int id, const SceneCounts& before, const SceneCounts& after);
+  // What was created between `before` and `after` with a material whose interior is medium
+  // `interior` (pbrt-v4's subsurface): shapes separate it from the outside medium of interface `id`
+  // (vacuum when -1); it overrides bind() for those shapes.
+  void bind_interior(int id, uint32_t interior, const SceneCounts& before, const SceneCounts& after);
   // pbrt-v4's CameraMedium: the outside medium of the interface current at Camera.
   void bind_camera(int id) { camera_ = id; }
   // Resolves the names into *media's bindings; a name no MakeNamedMedium defines is an Error at the
@@ -61,6 +65,7 @@ class PbrtMedia {
   struct Binding {
     int id;
     SceneCounts before, after;
+    int32_t interior = -1;  // >= 0: the shapes' inside medium (bind_interior)
   };
   int32_t resolve(const std::string& name, const FileLoc& loc) const;
 
