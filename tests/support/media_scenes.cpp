@@ -1,6 +1,7 @@
 #include "support/media_scenes.h"
 
 #include "pathspace/scene/builtin_scenes.h"
+#include "pathspace/scene/media_scenes.h"
 
 namespace pathspace::testing {
 
@@ -32,23 +33,6 @@ GridMediumDesc fog_grid(const Bounds3& box) {
   return d;
 }
 
-// Six interface quads (surfaces that only bound media) around `box`, normals outwards: inside them
-// the medium, outside vacuum.
-void add_interface_box(Scene* s, const Bounds3& box, uint32_t medium) {
-  Material boundary;
-  boundary.type = MaterialType::interface;
-  const uint32_t mat = s->add_material(boundary);
-  const Vec3 a = box.lo, b = box.hi;
-  const Vec3 c[8] = {{a.x, a.y, a.z}, {b.x, a.y, a.z}, {b.x, b.y, a.z}, {a.x, b.y, a.z},
-                     {a.x, a.y, b.z}, {b.x, a.y, b.z}, {b.x, b.y, b.z}, {a.x, b.y, b.z}};
-  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-  for (const auto& f : faces) {
-    const uint32_t first = uint32_t(s->triangles.size());
-    s->add_quad(c[f[0]], c[f[1]], c[f[2]], c[f[3]], mat);
-    for (uint32_t t = first; t < s->triangles.size(); ++t) s->media.bind_triangle(t, make_medium_interface(int32_t(medium), kVacuum));
-  }
-}
-
 void fill_world(Scene* s, uint32_t medium) {
   s->media.camera_medium = int32_t(medium);
   for (uint32_t i = 0; i < s->lights.size(); ++i) s->media.bind_light(i, int32_t(medium));
@@ -68,18 +52,16 @@ Scene box_with_sphere(int width, int height, const Material& boundary, uint32_t 
 }  // namespace
 
 Scene make_fog_cornell_box(int width, int height, bool grid) {
+  if (!grid) return make_fog_box_scene(width, height);  // the built-in cornell-fog
   Scene s = make_cornell_box(kLightCeiling, width, height);
   const Bounds3 b = s.geometry_bounds();
   const float size = b.hi.x - b.lo.x;
-  // About one mean free path across the box in the homogeneous fog.
-  // The fog fills the box, bounded just outside its walls (so the light box hanging from the ceiling
-  // lies wholly in it); the camera, in front of the open box, is outside it.
+  // As cornell-fog, the grid filling the box just outside its walls.
   const Vec3 margin = (b.hi - b.lo) * 0.002f;
   const Bounds3 inside{b.lo - margin, b.hi + margin};
-  const uint32_t m = grid ? s.media.add_grid(fog_grid(inside))
-                          : s.media.add_homogeneous(Rgb(0.15f, 0.1f, 0.2f) / size, Rgb(0.6f, 0.8f, 0.7f) / size, 0.3f);
-  if (grid) s.media.media[m].sigma_t = Rgb(1.f / size);
-  add_interface_box(&s, inside, m);
+  const uint32_t m = s.media.add_grid(fog_grid(inside));
+  s.media.media[m].sigma_t = Rgb(1.f / size);
+  add_medium_box(&s, inside, m);
   for (uint32_t i = 0; i < s.lights.size(); ++i) s.media.bind_light(i, int32_t(m));
   s.finalize();
   return s;
@@ -137,7 +119,7 @@ Scene make_absorbing_slab(int resolution, const Rgb& sigma_a, float le) {
   const uint32_t black = s.add_material(make_diffuse(Rgb(0.f)));
   s.add_quad(Vec3(-4.f, -4.f, -3.f), Vec3(4.f, -4.f, -3.f), Vec3(4.f, 4.f, -3.f), Vec3(-4.f, 4.f, -3.f), black, Rgb(le));
   const uint32_t m = s.media.add_homogeneous(sigma_a, Rgb(0.f), 0.f);
-  add_interface_box(&s, Bounds3{Vec3(-20.f, -20.f, -1.f), Vec3(20.f, 20.f, 0.f)}, m);
+  add_medium_box(&s, Bounds3{Vec3(-20.f, -20.f, -1.f), Vec3(20.f, 20.f, 0.f)}, m);
   s.camera = make_perspective_camera(Vec3(0.f, 0.f, 2.f), Vec3(0.f, 0.f, -1.f), Vec3(0.f, 1.f, 0.f), 70.f, resolution, resolution);
   s.finalize();
   return s;

@@ -4,6 +4,7 @@
 #include "pathspace/scene/builtin_scenes.h"
 #include "pathspace/scene/animated_scenes.h"
 #include "pathspace/scene/filter_scenes.h"
+#include "pathspace/scene/media_scenes.h"
 
 namespace pathspace {
 
@@ -19,6 +20,7 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
       {"cornell-glossy-sun", "gbs_s", 450, "glossy floor, blue back wall, small spheres, directional sun"},
       {"filter-leak", "f_l", 0, "room split by a thin wall, point light on one side (light a filter leaks)", make_wall_leak_scene},
       {"filter-fence", "f_f", 0, "room with a fence of pixel-thin bars, ceiling light (anti-aliasing)", make_fence_scene},
+      {"cornell-fog", "fog_c", 0, "empty Cornell box filled with chromatic fog, area light (participating media)", make_fog_box_scene},
       {"cornell-moving-light", "ml_c", 0, "animated: Cornell box with a diffuse sphere, its ceiling light sweeping left and right (2021 paper fig. 9)",
        make_moving_light_frame0, make_moving_light_scene},
       {"cornell-moving-sphere", "ms_c", 0, "animated: Cornell box with a diffuse sphere circling on the floor", make_moving_sphere_frame0,
