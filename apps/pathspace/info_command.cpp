@@ -39,6 +39,7 @@ nlohmann::ordered_json registry_json() {
     i["paper"] = e.paper;
     i["filters"] = e.filter_names();
     i["devices"] = devices_of_integrator(e.name);
+    i["media"] = e.renders_media;  // participating media (docs/media.md)
     i["options"] = options_json(e.schema.options);
     j["integrators"].push_back(i);
   }
@@ -106,6 +107,7 @@ std::string registry_markdown() {
     const std::vector<std::string> filters = e.filter_names();
     if (!filters.empty()) out += fmt::format(" Filters: `{}`.", fmt::join(filters, "`, `"));
     out += fmt::format(" Devices: `{}`.", devices_of_integrator(e.name));
+    out += e.renders_media ? " Participating media: yes." : " Participating media: no (refused).";
     out += "\n\n" + markdown_options(e.schema.options);
   }
   for (const FilterEntry& e : filter_registry().entries()) {
@@ -131,6 +133,7 @@ void print_registry() {
     const std::vector<std::string> filters = e.filter_names();
     if (!filters.empty()) fmt::print("         filters: {}\n", fmt::join(filters, ", "));
     fmt::print("         devices: {}\n", devices_of_integrator(e.name));
+    fmt::print("         participating media: {}\n", e.renders_media ? "yes" : "no (refused)");
     print_options(e.schema);
   }
   fmt::print("\nPath space filters (--filter NAME, default none):\n");
