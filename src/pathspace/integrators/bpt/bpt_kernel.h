@@ -20,7 +20,7 @@
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
-#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/integrators/common/media_steps.h"
 #include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/scene/light_emission.h"
@@ -67,43 +67,6 @@ struct LightVertex {
 PS_INLINE int32_t connection_medium(bool in_medium, int32_t medium, const MediumInterface& iface, const Vec3& ng,
                                     const Vec3& d) {
   return in_medium ? medium : medium_after(iface, ng, d, medium);
-}
-
-// Whether the shadow ray is unoccluded, as a factor: with media, the transmittance along it
-// (integrators/common/transmittance_along.h); without, 0 or 1 from one occlusion test.
-template <typename Tracer>
-PS_HD Rgb visibility(const SceneView& scene, const Tracer& tracer, const Ray& shadow, int32_t medium, Pcg32* rng,
-                     PathCounters* counters) {
-  if (!scene.media.any()) return Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
-  return transmittance_along(scene, tracer, shadow, medium, *rng, counters);
-}
-
-// Where a subpath goes next in a scene with media.
-enum class NextVertex : uint8_t { missed, surface, medium, absorbed };
-
-// The next vertex along `ray` in medium *medium: crosses surfaces that only bound media and samples
-// the distance in media (media/free_flight.h), multiplying *beta by the flight's weight. A medium
-// vertex lies at distance *t_medium along the (possibly advanced) *ray, a surface vertex at *hit.
-template <typename Tracer>
-PS_HD NextVertex next_vertex(const SceneView& scene, const Tracer& tracer, Ray* ray, int32_t* medium, Pcg32* rng,
-                             PathCounters* counters, Rgb* beta, SurfaceHit* hit, float* t_medium) {
-  for (;;) {
-    const bool found = tracer.intersect(*ray, hit);
-    if (*medium != kVacuum) {
-      const FreeFlight f = sample_free_flight(scene.media, *medium, *ray, found ? hit->t : kInfinity, *beta, *rng);
-      *beta *= f.weight;
-      if (f.event == MediumEvent::absorbed) return NextVertex::absorbed;
-      if (f.event == MediumEvent::scattered) {
-        *t_medium = f.t;
-        return NextVertex::medium;
-      }
-    }
-    if (!found) return NextVertex::missed;
-    if (scene.materials[hit->material].type != MaterialType::interface) return NextVertex::surface;
-    *medium = scene.media.after(*hit, ray->d, *medium);
-    *ray = spawn_ray(hit->p, hit->ng, ray->d, scene.ray_epsilon, ray->time);
-    ++counters->rays;
-  }
 }
 
 PS_INLINE Vec3 area_light_normal(const SceneView& scene, const Light& l, const Vec3& p, float time) {
@@ -153,7 +116,7 @@ PS_HD bool light_medium_vertex(const SceneView& scene, const Tracer& tracer, con
     ++counters->rays;
     ++counters->shadow_rays;
     prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
-    const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(p, Vec3(0.f), pr.wi, pr.dist, scene.ray_epsilon, ray.time),
+    const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(p, Vec3(0.f), pr.wi, pr.dist, scene.ray_epsilon, ray.time),
                               medium, rng, counters);
     if (!is_black(tr)) {
       const float phase = hg_phase(dot(ray.d, pr.wi), g);
@@ -226,7 +189,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
         ++counters->rays;
         ++counters->shadow_rays;
         prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
-        const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
+        const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
                                   media ? light_path_medium(scene, start, pr.wi) : kVacuum, &rng, counters);
         if (!is_black(tr)) {
           const float cos_light = fabsf(dot(e.ng, pr.wi));
@@ -305,7 +268,7 @@ PS_HD int trace_light_subpath(const SceneView& scene, const Tracer& tracer, cons
           ++counters->rays;
           ++counters->shadow_rays;
           prefetch_filter_splat(films.splats, cam.filter, pr.rx, pr.ry);
-          const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
+          const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, time),
                                     scene.media.after(hit, pr.wi, medium), &rng, counters);
           if (!is_black(tr)) {
             // factor * cos_cam: the camera subpath's area density of this vertex from the lens point.
@@ -428,7 +391,7 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   const float w_camera = mis(h, emit_to_z / direct) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon, z.time),
+  const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, ls.wi, ls.dist, scene.ray_epsilon, z.time),
                             connection_medium(z.in_medium, z.medium, z.iface, z.ng, ls.wi), z.rng, counters);
   if (is_black(tr)) return {};
   const Rgb c = f * ls.li * ((z.in_medium ? 1.f : fabsf(wi.z)) / (pdf_light_w * (w_light + 1.f + w_camera)));
@@ -467,7 +430,7 @@ PS_HD Rgb connect_vertices(const SceneView& scene, const Tracer& tracer, MisHeur
   const float w_camera = mis(h, light_dir_a) * (z.dvcm + z.dvc * mis(h, cam_rev));
   ++counters->rays;
   ++counters->shadow_rays;
-  const Rgb tr = visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon, z.time),
+  const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(z.p, z.ng, dir, dist, scene.ray_epsilon, z.time),
                             connection_medium(z.in_medium, z.medium, z.iface, z.ng, dir), z.rng, counters);
   if (is_black(tr)) return {};
   const float g = (z.in_medium ? 1.f : fabsf(wz.z)) * (y.in_medium ? 1.f : fabsf(ywo.z)) * cos_y / (y.cos_in * d2);

@@ -13,7 +13,7 @@
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
-#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/integrators/common/media_steps.h"
 #include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/stats/path_counters.h"
 #include "pathspace/integrators/lt/lt_settings.h"
@@ -109,9 +109,8 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
         ++counters->rays;
         ++counters->shadow_rays;
         prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
-        const Ray shadow = spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time);
-        const Rgb tr = media ? transmittance_along(scene, tracer, shadow, light_path_medium(scene, start, pr.wi), rng, counters)
-                             : Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
+        const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(e.p, e.ng, pr.wi, pr.dist, scene.ray_epsilon, e.time),
+                                         media ? light_path_medium(scene, start, pr.wi) : kVacuum, &rng, counters);
         if (!is_black(tr)) {
           const float scale = fabsf(dot(e.ng, pr.wi)) / e.pdf_a * inv_select * pr.factor * inv_paths;
           splat(film, cam.filter, pr.rx, pr.ry, le * tr * scale);
@@ -129,28 +128,21 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
   // The vertex reached after `segments` segments; its camera connection makes segments + 1.
   for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;
-    bool found;
-    FreeFlight flight;
-    for (;;) {  // to the next surface or medium event, passing surfaces that only bound media
-      ++counters->rays;
-      found = tracer.intersect(ray, &hit);
-      if (media && medium != kVacuum) {
-        flight = sample_free_flight(scene.media, medium, ray, found ? hit.t : kInfinity, beta, rng);
-        beta *= flight.weight;
-        if (flight.event != MediumEvent::passed) break;
-      }
-      if (!(found && media && scene.materials[hit.material].type == MaterialType::interface)) break;
-      medium = scene.media.after(hit, ray.d, medium);
-      ray = spawn_ray(hit.p, hit.ng, ray.d, scene.ray_epsilon, ray.time);
+    ++counters->rays;
+    float t_medium = 0.f;
+    NextVertex next = NextVertex::surface;
+    if (media) {
+      next = next_vertex(scene, tracer, &ray, &medium, &rng, counters, &beta, &hit, &t_medium);
+    } else if (!tracer.intersect(ray, &hit)) {
+      next = NextVertex::missed;
     }
-    if (flight.event == MediumEvent::absorbed) break;
-    if (flight.event == MediumEvent::scattered) {
-      if (!lt_medium_vertex(scene, tracer, sampler, settings, cam, film, ray, flight.t, medium, segments, max_segments, beta0,
+    if (next == NextVertex::missed || next == NextVertex::absorbed) break;
+    if (next == NextVertex::medium) {
+      if (!lt_medium_vertex(scene, tracer, sampler, settings, cam, film, ray, t_medium, medium, segments, max_segments, beta0,
                             inv_paths, rng, counters, &beta, &ray))
         break;
       continue;
     }
-    if (!found) break;
     Material textured;
     const Material& mat = shading_material(scene, hit, &textured);
     const Frame frame(hit.ns);
@@ -171,9 +163,8 @@ PS_HD void lt_trace_path(const SceneView& scene, const Tracer& tracer, const Sam
           ++counters->rays;
           ++counters->shadow_rays;
           prefetch_filter_splat(film, cam.filter, pr.rx, pr.ry);
-          const Ray shadow = spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time);
-          const Rgb tr = media ? transmittance_along(scene, tracer, shadow, scene.media.after(hit, pr.wi, medium), rng, counters)
-                               : Rgb(tracer.occluded(shadow) ? 0.f : 1.f);
+          const Rgb tr = shadow_visibility(scene, tracer, spawn_shadow_ray(hit.p, hit.ng, pr.wi, pr.dist, scene.ray_epsilon, hit.time),
+                                           scene.media.after(hit, pr.wi, medium), &rng, counters);
           if (!is_black(tr)) {
             const float cosines = fabsf(wo.z) * fabsf(dot(pr.wi, hit.ng)) / wo_ng;
             splat(film, cam.filter, pr.rx, pr.ry, beta * f * tr * (cosines * pr.factor * inv_paths));

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "pathspace/integrators/common/dimensions.h"
-#include "pathspace/integrators/common/transmittance_along.h"
+#include "pathspace/integrators/common/media_steps.h"
 #include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
@@ -155,6 +155,34 @@ struct PtPathState {
   PS_HD Rgb& radiance() { return owner < 0 ? prefix : open[owner].after; }
 };
 
+namespace pt_detail {
+// Opens the path's next selected vertex at `at` (position, normals; a medium vertex passes the
+// reversed incident direction as both), reached along -wo after `segments` segments: its geometry,
+// layers and throughput, empty estimates, and the visibility probes when a filter asks for them.
+template <typename Tracer>
+PS_HD OpenVertex* open_selected_vertex(const SceneView& scene, const Tracer& tracer, const SurfaceHit& at, const Vec3& wo,
+                                       int segments, const BsdfLayers& layers, const VisibilityProbes& probes,
+                                       PathCounters* counters, PtPathState* s) {
+  OpenVertex* sel = &s->open[s->selected];
+  FilterVertex& g = sel->geometry;
+  g.p = at.p;
+  g.ng = at.ng;
+  g.ns = at.ns;
+  g.wo = wo;
+  g.prev_p = s->prev_p;
+  g.prefix_distance = s->prev_distance;
+  g.segments = uint8_t(segments);
+  g.selected = uint8_t(s->selected);
+  sel->layers = layers;
+  sel->throughput = s->abs_beta;
+  for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
+  sel->after = Rgb();
+  if (probes.any()) probe_visibility(scene, tracer, at, wo, probes, counters, &g);
+  ++s->selected;
+  return sel;
+}
+}  // namespace pt_detail
+
 // What follows a step: trace s.ray next, or the path has ended (after its pending shadow ray).
 enum class PtNext : uint8_t { extend, end };
 
@@ -251,22 +279,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
     if (gathers) s->radiance() += s->beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
     ++s->diffuse_index;
     if (wants_vertex(selection, s->diffuse_index, s->selected)) {
-      sel = &s->open[s->selected];
-      FilterVertex& g = sel->geometry;
-      g.p = hit.p;
-      g.ng = hit.ng;
-      g.ns = hit.ns;
-      g.wo = -ray.d;
-      g.prev_p = s->prev_p;
-      g.prefix_distance = s->prev_distance;
-      g.segments = uint8_t(segments);
-      g.selected = uint8_t(s->selected);
-      sel->layers = layers;
-      sel->throughput = s->abs_beta;
-      for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
-      sel->after = Rgb();
-      if (probes.any()) probe_visibility(scene, tracer, hit, -ray.d, probes, counters, &g);
-      ++s->selected;
+      sel = open_selected_vertex(scene, tracer, hit, -ray.d, segments, layers, probes, counters, s);
       if (query_only && !selects_more(selection, s->selected)) return PtNext::end;
     }
   }
@@ -389,26 +402,11 @@ PS_HD PtNext pt_on_medium(const SceneView& scene, const Tracer& tracer, const Sa
     if (is_selectable(layers, selection)) {
       ++s->diffuse_index;
       if (wants_vertex(selection, s->diffuse_index, s->selected)) {
-        sel = &s->open[s->selected];
-        SurfaceHit at;  // the vertex as the probes see a surface: its normal faces the incident ray
+        SurfaceHit at;  // the vertex as a surface would be: its normal faces the incident ray
         at.p = p;
         at.ng = at.ns = -ray.d;
         at.time = ray.time;
-        FilterVertex& gv = sel->geometry;
-        gv.p = p;
-        gv.ng = gv.ns = gv.wo = -ray.d;
-        gv.prev_p = s->prev_p;
-        gv.prefix_distance = s->prev_distance;
-        gv.segments = uint8_t(segments);
-        gv.selected = uint8_t(s->selected);
-        sel->layers = layers;
-        sel->throughput = s->abs_beta;
-        for (int l = 0; l < kMaxBsdfLayers; ++l) sel->nee[l] = sel->continuation[l] = Rgb();
-        sel->after = Rgb();
-        gv.visible_lights = 0;
-        gv.open_distance = 0.f;
-        if (probes.any()) probe_visibility(scene, tracer, at, -ray.d, probes, counters, &gv);
-        ++s->selected;
+        sel = open_selected_vertex(scene, tracer, at, -ray.d, segments, layers, probes, counters, s);
         if (query_only && !selects_more(selection, s->selected)) return PtNext::end;
       }
     }
@@ -474,7 +472,8 @@ PS_INLINE void pt_resolve_shadow(PtPathState* s, bool occluded) {
   }
 }
 
-// The same with the shadow ray's transmittance through media (integrators/common/transmittance_along.h).
+// The same with the shadow ray's visibility as a factor (integrators/common/media_steps.h: the
+// transmittance through media, or 0 or 1): multiplying by 1 changes no bit of the estimate.
 PS_INLINE void pt_resolve_shadow(PtPathState* s, const Rgb& transmittance) {
   if (!s->shadow_pending) return;
   for (int l = 0; l < kMaxBsdfLayers; ++l) s->shadow_value[l] *= transmittance;
@@ -519,7 +518,7 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       if (flight.event == MediumEvent::scattered) {
         const PtNext next = pt_on_medium(scene, tracer, sampler, settings, flight.t, counters, &s, probes, query_only);
         if (s.shadow_pending)
-          pt_resolve_shadow(&s, transmittance_along(scene, tracer, s.shadow_ray, s.shadow_medium, s.medium_rng, counters));
+          pt_resolve_shadow(&s, shadow_visibility(scene, tracer, s.shadow_ray, s.shadow_medium, &s.medium_rng, counters));
         if (next == PtNext::end) break;
         ++counters->rays;
         found = tracer.intersect(s.ray, &hit);
@@ -540,12 +539,8 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       continue;
     }
     const PtNext next = pt_on_hit(scene, tracer, sampler, settings, hit, counters, &s, probes, query_only, caustics);
-    if (s.shadow_pending) {
-      if (media)
-        pt_resolve_shadow(&s, transmittance_along(scene, tracer, s.shadow_ray, s.shadow_medium, s.medium_rng, counters));
-      else
-        pt_resolve_shadow(&s, tracer.occluded(s.shadow_ray));
-    }
+    if (s.shadow_pending)
+      pt_resolve_shadow(&s, shadow_visibility(scene, tracer, s.shadow_ray, s.shadow_medium, &s.medium_rng, counters));
     if (next == PtNext::end) break;
     ++counters->rays;
     found = tracer.intersect(s.ray, &hit);
