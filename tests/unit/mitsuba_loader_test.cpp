@@ -17,6 +17,7 @@
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/io/spectrum/spectrum_to_rgb.h"
 #include "pathspace/scene/scene_validation.h"
+#include "support/load_errors.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -54,14 +55,7 @@ std::string find_warning(const std::vector<std::string>& warnings, const std::st
 
 // Loads `text` expecting a pathspace::Error whose message starts with `where` and contains `what`.
 void expect_error(const std::string& text, const std::string& where, const std::string& what, const std::string& folder = ".") {
-  try {
-    load(text, folder);
-    ADD_FAILURE() << "no error for:\n" << text;
-  } catch (const Error& e) {
-    const std::string m = e.what();
-    EXPECT_EQ(m.rfind(where, 0), 0u) << m;
-    EXPECT_NE(m.find(what), std::string::npos) << m;
-  }
+  testing::expect_load_error([&] { load(text, folder); }, where, what, text);
 }
 
 Vec3 normal_of(const Scene& s, const Triangle& t) {

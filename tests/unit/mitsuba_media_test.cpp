@@ -11,6 +11,8 @@
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
 #include "pathspace/io/mitsuba/mitsuba_volume_file.h"
 #include "pathspace/media/grid_lookup.h"
+#include "support/load_errors.h"
+#include "support/mitsuba_text.h"
 #include "support/temp_dir.h"
 #include "support/near_expectations.h"
 
@@ -19,17 +21,9 @@ namespace {
 
 using pathspace::testing::TempDir;
 
-struct Loaded {
-  Scene scene;
-  std::vector<std::string> warnings;
-};
+using Loaded = testing::LoadedMitsuba;
 
-Loaded load(const std::string& text, const std::string& folder = ".") {
-  Loaded r;
-  LoadWarnings w(&r.warnings);
-  r.scene = mitsuba::load_mitsuba_string(text, "scene.xml", folder, {}, &w, nullptr);
-  return r;
-}
+Loaded load(const std::string& text, const std::string& folder = ".") { return testing::load_mitsuba_text(text, folder); }
 
 const char* kLight =
     "\n<shape type=\"rectangle\"><bsdf type=\"diffuse\"><rgb name=\"reflectance\" value=\"0\"/></bsdf>"
@@ -40,14 +34,7 @@ std::string scene3(const std::string& body) { return "<scene version=\"3.0.0\">\
 std::string scene06(const std::string& body) { return "<scene version=\"0.6.0\">\n" + body + kLight; }
 
 void expect_error(const std::string& text, const std::string& where, const std::string& what, const std::string& folder = ".") {
-  try {
-    load(text, folder);
-    ADD_FAILURE() << "no error for:\n" << text;
-  } catch (const Error& e) {
-    const std::string m = e.what();
-    EXPECT_EQ(m.rfind(where, 0), 0u) << m;
-    EXPECT_NE(m.find(what), std::string::npos) << m;
-  }
+  testing::expect_load_error([&] { load(text, folder); }, where, what, text);
 }
 
 std::string find_warning(const std::vector<std::string>& warnings, const std::string& text) {

@@ -11,23 +11,17 @@
 
 #include "pathspace/base/error.h"
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
+#include "support/mitsuba_text.h"
 
 namespace pathspace {
 namespace {
 
-struct Loaded {
-  Scene scene;
-  std::vector<std::string> warnings;
-};
+using Loaded = testing::LoadedMitsuba;
 
 Loaded load(const std::string& body, const std::string& shutter = "") {
-  Loaded r;
-  LoadWarnings w(&r.warnings);
-  r.scene = mitsuba::load_mitsuba_string("<scene version=\"3.0.0\">\n<sensor type=\"perspective\">" + shutter +
-                                             "<transform name=\"to_world\"><lookat origin=\"0,0,5\" target=\"0,0,0\"/></transform>"
-                                             "</sensor>\n" + body + "\n</scene>\n",
-                                         "scene.xml", ".", {}, &w, nullptr);
-  return r;
+  return testing::load_mitsuba_text("<scene version=\"3.0.0\">\n<sensor type=\"perspective\">" + shutter +
+                                    "<transform name=\"to_world\"><lookat origin=\"0,0,5\" target=\"0,0,0\"/></transform>"
+                                    "</sensor>\n" + body + "\n</scene>\n");
 }
 
 bool any_warning(const Loaded& l, const std::string& part) {

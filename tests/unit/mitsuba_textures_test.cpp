@@ -8,6 +8,7 @@
 #include "pathspace/io/image_io.h"
 #include "pathspace/io/mitsuba/mitsuba_loader.h"
 #include "pathspace/scene/texture.h"
+#include "support/mitsuba_text.h"
 #include "support/temp_dir.h"
 
 namespace pathspace {
@@ -15,18 +16,11 @@ namespace {
 
 using pathspace::testing::TempDir;
 
-struct Loaded {
-  Scene scene;
-  std::vector<std::string> warnings;
-};
+using Loaded = testing::LoadedMitsuba;
 
 Loaded load(const std::string& body, const std::string& folder) {
-  Loaded r;
-  LoadWarnings w(&r.warnings);
-  const std::string text = "<scene version=\"3.0.0\"><sensor type=\"perspective\"/>\n" + body +
-                           "\n<emitter type=\"constant\"/>\n</scene>\n";
-  r.scene = mitsuba::load_mitsuba_string(text, "scene.xml", folder, {}, &w, nullptr);
-  return r;
+  return testing::load_mitsuba_text(
+      "<scene version=\"3.0.0\"><sensor type=\"perspective\"/>\n" + body + "\n<emitter type=\"constant\"/>\n</scene>\n", folder);
 }
 
 bool has_warning(const Loaded& r, const std::string& text) {

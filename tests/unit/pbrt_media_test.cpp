@@ -8,6 +8,7 @@
 
 #include "pathspace/io/pbrt/pbrt_scene_builder.h"
 #include "pathspace/media/grid_lookup.h"
+#include "support/load_errors.h"
 #include "support/near_expectations.h"
 
 namespace pathspace {
@@ -24,14 +25,7 @@ Scene load(const std::string& world, std::vector<std::string>* warnings = nullpt
 
 // Loads `world` expecting an Error whose message starts with `where` and contains `what`.
 void expect_error(const std::string& world, const std::string& where, const std::string& what) {
-  try {
-    load(world);
-    ADD_FAILURE() << "no error for:\n" << world;
-  } catch (const Error& e) {
-    const std::string m = e.what();
-    EXPECT_EQ(m.rfind(where, 0), 0u) << m;
-    EXPECT_NE(m.find(what), std::string::npos) << m;
-  }
+  testing::expect_load_error([&] { load(world); }, where, what, world);
 }
 
 using testing::expect_rgb_near;
