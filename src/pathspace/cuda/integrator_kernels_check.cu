@@ -12,6 +12,7 @@
 #include "pathspace/integrators/common/light_dimensions.h"
 #include "pathspace/integrators/common/light_path_start.h"
 #include "pathspace/integrators/common/light_path_step.h"
+#include "pathspace/integrators/common/media_steps.h"
 #include "pathspace/integrators/common/transmittance_along.h"
 #include "pathspace/integrators/lt/lt_kernel.h"
 #include "pathspace/integrators/lt/lt_settings.h"
