@@ -1,6 +1,7 @@
 // Camera-side branches (VertexSelection::camera_splits; pt_kernel.h, pt_continue_path): a path that
-// follows both the reflection and the refraction at smooth glass before its first selected vertex
-// is the same estimator as one that picks a lobe at random.
+// follows both the reflection and the refraction at smooth glass, or both the scattering and the
+// passing way through fog (media/free_flight.h), before its first selected vertex is the same
+// estimator as one that picks at random.
 // The path values (prefix + records, as resolved without a filter) are compared per pixel.
 #include <gtest/gtest.h>
 
@@ -18,15 +19,15 @@ namespace {
 
 constexpr int kSize = 32;
 constexpr uint32_t kPasses = 512;
-// The one comparison of this file, at alpha = 0.01.
-const double kAlphaImage = 0.01;
+// The file's two image comparisons, at alpha = 0.01 together.
+const double kAlphaImage = testing::sidak(0.01, 2);
 
 struct PathStatistics {
   Image mean, variance;  // the variance of the mean
   Image records;         // records per path, averaged (channel 0)
 };
 
-PathStatistics trace(const Scene& scene, const Accel& accel, int camera_splits, uint64_t seed) {
+PathStatistics trace(const Scene& scene, const Accel& accel, int camera_splits, uint64_t seed, uint32_t passes = kPasses) {
   const SceneView view = scene.view();
   PtSettings settings;
   settings.selection.camera_splits = camera_splits;
@@ -35,7 +36,7 @@ PathStatistics trace(const Scene& scene, const Accel& accel, int camera_splits, 
   for (uint32_t pixel = 0; pixel < uint32_t(kSize * kSize); ++pixel) {
     Rgb sum, sum_sq;
     double records = 0.0;
-    for (uint32_t pass = 0; pass < kPasses; ++pass) {
+    for (uint32_t pass = 0; pass < passes; ++pass) {
       const Sampler sampler(seed, pixel, pass);
       const Ray ray = sample_camera_ray(view.camera, sampler, pixel, 0.f);
       PathCounters counters;
@@ -45,10 +46,10 @@ PathStatistics trace(const Scene& scene, const Accel& accel, int camera_splits, 
       sum_sq += v * v;
       records += sample.count;
     }
-    const Rgb mean = sum / float(kPasses);
+    const Rgb mean = sum / float(passes);
     out.mean.pixels[pixel] = mean;
-    out.variance.pixels[pixel] = (sum_sq / float(kPasses) - mean * mean) / float(kPasses - 1);
-    out.records.pixels[pixel] = Rgb(float(records / kPasses), 0.f, 0.f);
+    out.variance.pixels[pixel] = (sum_sq / float(passes) - mean * mean) / float(passes - 1);
+    out.records.pixels[pixel] = Rgb(float(records / passes), 0.f, 0.f);
   }
   return out;
 }
@@ -69,6 +70,21 @@ TEST(CameraBranches, SameEstimateAndBranchesOnGlass) {
   int branched = 0;
   for (size_t i = 0; i < split.mean.size(); ++i) branched += split.records.pixels[i][0] > single.records.pixels[i][0] + 1.f ? 1 : 0;
   EXPECT_GT(branched, 20) << "the glass sphere covers about 5% of the image";
+}
+
+// In the fog box every camera ray starts in the fog: each path splits there into a vertex in the fog
+// and one on the surface behind it (with the transmittance as its weight).
+TEST(CameraBranches, SameEstimateAndBranchesInFog) {
+  const Scene scene = make_builtin_scene("cornell-fog", kSize, kSize);
+  const Accel accel(scene);
+  const PathStatistics split = trace(scene, accel, 2, testing::test_seed(13), kPasses / 2);
+  const PathStatistics single = trace(scene, accel, 0, testing::test_seed(14), kPasses / 2);
+  const testing::ImageZTest z = testing::image_z_test(split.mean, split.variance, single.mean, single.variance, 1e-3, kAlphaImage);
+  EXPECT_TRUE(z.passed()) << z.failed << " pixels failed (allowed " << z.allowed << "), image means " << z.mean_a << " vs "
+                          << z.mean_b << " (p " << z.mean_p << ")";
+  int branched = 0;
+  for (size_t i = 0; i < split.mean.size(); ++i) branched += split.records.pixels[i][0] > single.records.pixels[i][0] + 0.5f ? 1 : 0;
+  EXPECT_GT(branched, int(split.mean.size()) * 9 / 10) << "every pixel looks through fog";
 }
 
 TEST(CameraBranches, OnlyWithAFilterAndDeterministic) {

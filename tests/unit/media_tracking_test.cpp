@@ -5,7 +5,8 @@
 //    holds at every point of them;
 //  - a grid's ratio-tracking transmittance and the free flight's "passed" weight estimate the
 //    transmittance from quadrature of the trilinear field, and the free flight's scattering weight
-//    estimates the integral of sigma_s T over an interval (t-tests, alpha = 0.01 Sidak-corrected
+//    estimates the integral of sigma_s T over an interval, and so do the camera-side branches'
+//    scatter and pass weights (t-tests, alpha = 0.01 Sidak-corrected
 //    over the file's kTests tests), for chromatic homogeneous media and a chromatic grid.
 #include <gtest/gtest.h>
 
@@ -20,7 +21,7 @@
 namespace pathspace {
 namespace {
 
-constexpr int kTests = 36;
+constexpr int kTests = 60;
 const double kAlpha = testing::sidak(0.01, kTests);
 
 // A 5x4x3 grid with 3 channels of varying values, over the box [-1, 2] x [0, 1] x [0, 2].
@@ -169,6 +170,56 @@ TEST_P(MediaEstimators, FreeFlightPassAndScatterWeightsAreUnbiased) {
   for (int c = 0; c < 3; ++c) {
     expect_mean(xp[c], pass[c], "passed");
     expect_mean(xs[c], scatter[c], "scattered in [a, b)");
+  }
+}
+
+// Camera-side branches (free_flight.h): the scatter branch's weight over [a, b) and the pass branch's
+// weight estimate what the free flight's two outcomes do; a homogeneous scatter branch always collides.
+TEST_P(MediaEstimators, BranchWeightsAreUnbiased) {
+  const SceneMedia m = grid_scene();
+  const MediaView v = m.view();
+  const int medium = GetParam() % 2;
+  const Rgb throughput = GetParam() < 2 ? Rgb(1.f) : Rgb(0.2f, 1.5f, 0.05f);
+  const Medium& med = m.media[size_t(medium)];
+  const float* values = m.grid_values.data();
+  const float tmax = 3.f, a = 0.8f, b = 1.9f;
+  const Rgb tau_max = optical_depth(med, values, kRay, 0.f, tmax);
+  Rgb scatter;  // the integral over [a, b) of sigma_s(t) T(t) dt (midpoint rule)
+  {
+    constexpr int n = 4000;
+    const float h = (b - a) / float(n);
+    Rgb tau = optical_depth(med, values, kRay, 0.f, a);
+    for (int i = 0; i < n; ++i) {
+      const float t = a + (float(i) + 0.5f) * h;
+      const Vec3 gp = grid_point(med, kRay.at(t));
+      const Rgb st = medium_sigma_t(med, values, gp);
+      const Rgb tr = Rgb(std::exp(-(tau.r + st.r * h / 2)), std::exp(-(tau.g + st.g * h / 2)), std::exp(-(tau.b + st.b * h / 2)));
+      scatter += medium_albedo(med, values, gp) * st * tr * h;
+      tau += st * h;
+    }
+  }
+  Pcg32 rng(29, uint64_t(medium));
+  std::vector<double> xp[3], xs[3];
+  int passed = 0;
+  for (int i = 0; i < 400000; ++i) {
+    const FreeFlight s = sample_scatter_branch(v, medium, kRay, tmax, throughput, rng);
+    const FreeFlight p = sample_pass_branch(v, medium, kRay, tmax, rng);
+    passed += s.event == MediumEvent::passed ? 1 : 0;
+    const bool in = s.event == MediumEvent::scattered && s.t >= a && s.t < b;
+    for (int c = 0; c < 3; ++c) {
+      xs[c].push_back(in ? s.weight[c] : 0.0);
+      xp[c].push_back(p.event == MediumEvent::passed ? p.weight[c] : 0.0);
+    }
+  }
+  EXPECT_EQ(passed, 0) << "a scatter branch never passes";
+  for (int c = 0; c < 3; ++c) {
+    expect_mean(xp[c], std::exp(-double(tau_max[c])), "pass branch");
+    expect_mean(xs[c], scatter[c], "scatter branch in [a, b)");
+  }
+  if (medium == 1) {  // homogeneous: every scatter branch collides before tmax
+    const FreeFlight s = sample_scatter_branch(v, medium, kRay, tmax, throughput, rng);
+    EXPECT_EQ(s.event, MediumEvent::scattered);
+    EXPECT_LT(s.t, tmax);
   }
 }
 

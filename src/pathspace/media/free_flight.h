@@ -133,6 +133,35 @@ PS_INLINE FreeFlight grid_flight(const Medium& m, const float* values, const Ray
   return f;
 }
 
+// A collision on [0, d) always: one channel's exponential truncated to the interval (mass
+// 1 - exp(-sigma d) before d), weighted by the mixture's density; absorbed with weight 0 where
+// nothing scatters or the picked channel has no collisions (its density is 0 there, so the estimate
+// stays unbiased).
+PS_INLINE FreeFlight homogeneous_collision(const Medium& m, float d, const Rgb& shares, Pcg32& rng) {
+  FreeFlight f;
+  f.event = MediumEvent::absorbed;
+  f.weight = Rgb();
+  const Rgb st = m.sigma_t;
+  const int c = pick_channel(shares, rng.next_float());
+  const float u = rng.next_float();
+  if (is_black(m.albedo)) return f;
+  const auto mass = [d](float sigma) { return isinf(d) ? 1.f : -expm1f(-sigma * d); };
+  const float mass_c = st[c] > 0.f ? mass(st[c]) : 0.f;
+  if (!(mass_c > 0.f)) return f;
+  const float t = -log1pf(-u * mass_c) / st[c];
+  if (!(t < d)) return f;
+  const Rgb tr = beer_lambert(st, t);
+  float density = 0.f;
+  for (int k = 0; k < 3; ++k) {
+    const float mk = st[k] > 0.f ? mass(st[k]) : 0.f;
+    if (mk > 0.f) density += shares[k] * st[k] * tr[k] / mk;
+  }
+  f.event = MediumEvent::scattered;
+  f.t = t;
+  f.weight = m.albedo * st * tr / density;
+  return f;
+}
+
 PS_INLINE Rgb grid_transmittance(const Medium& m, const float* values, const Ray& ray, float tmax, Pcg32& rng) {
   Rgb tr(1.f);
   for_each_tentative_collision(m, values, ray, tmax, rng, [&](float t, float sigma) {
@@ -172,6 +201,41 @@ PS_INLINE Rgb medium_transmittance(const MediaView& media, int32_t medium, const
   const Medium& m = media.media[medium];
   if (m.type == MediumType::homogeneous) return media_detail::beer_lambert(m.sigma_t, tmax - ray.tmin);
   return media_detail::grid_transmittance(m, media.grid_values, ray, tmax, rng);
+}
+
+// Camera-side branches in media (VertexSelection::camera_splits, pt_kernel.h): instead of one free
+// flight that either scatters or passes, a path follows both, each weighted so that the two add up
+// to the free flight's estimate:
+//  - the scatter branch: a collision before tmax, drawn from the truncated exponential in a
+//    homogeneous medium (always, where anything scatters); in a grid the free flight, whose "passed"
+//    outcome then ends the branch (weight 0);
+//  - the pass branch: passes with the transmittance (exact, or ratio tracking in a grid).
+// What a pixel sees through fog is then no longer a random pick between the fog and the surface
+// behind it: each is filtered at its own vertex.
+PS_INLINE bool medium_scatters(const MediaView& media, int32_t medium) {
+  const Medium& m = media.media[medium];
+  return m.type != MediumType::homogeneous || !is_black(m.albedo);
+}
+
+PS_INLINE FreeFlight sample_scatter_branch(const MediaView& media, int32_t medium, const Ray& ray, float tmax,
+                                           const Rgb& throughput, Pcg32& rng) {
+  const Medium& m = media.media[medium];
+  const Rgb shares = media_detail::channel_shares(throughput);
+  if (m.type == MediumType::homogeneous) {
+    FreeFlight f = media_detail::homogeneous_collision(m, tmax - ray.tmin, shares, rng);
+    f.t += ray.tmin;
+    return f;
+  }
+  FreeFlight f = media_detail::grid_flight(m, media.grid_values, ray, tmax, shares, rng);
+  if (f.event == MediumEvent::passed) f = FreeFlight{MediumEvent::absorbed, 0.f, Rgb()};
+  return f;
+}
+
+PS_INLINE FreeFlight sample_pass_branch(const MediaView& media, int32_t medium, const Ray& ray, float tmax, Pcg32& rng) {
+  FreeFlight f;
+  f.weight = medium_transmittance(media, medium, ray, tmax, rng);
+  if (is_black(f.weight)) f.event = MediumEvent::absorbed;
+  return f;
 }
 
 }  // namespace pathspace

@@ -136,8 +136,9 @@ struct PtPathState {
   int caustic_chain = 0;
   int selected = 0, diffuse_index = 0;
   int segments = 1;          // of the ray being traced (camera ray = segment 1)
-  // Camera-side branches (VertexSelection::camera_splits): bit k of split_code picks refraction (1)
-  // or reflection (0) at the path's k-th split; `splits` counts the splits passed so far.
+  // Camera-side branches (VertexSelection::camera_splits): bit k of split_code picks the path's
+  // way at its k-th split, refraction (1) or reflection (0) at smooth glass, passing (1) or
+  // scattering (0) in a medium; `splits` counts the splits passed so far.
   uint32_t split_code = 0;
   int splits = 0;
   // Next event estimation waiting for its shadow ray: added if the ray is unoccluded.
@@ -493,6 +494,13 @@ PS_INLINE void pt_finish(PtPathState* s, PathSample* out, bool append = false) {
 }
 
 namespace pt_detail {
+// Whether the path splits at its free flight through a medium (the same budget as the splits at
+// smooth glass: VertexSelection::camera_splits), before its first selectable vertex.
+PS_INLINE bool splits_in_medium(const SceneView& scene, const VertexSelection& selection, const PtPathState& s) {
+  return selection.mode != VertexSelectionMode::none && selection.medium_splits && s.diffuse_index == 0 &&
+         s.splits < selection.camera_splits && medium_scatters(scene.media, s.medium);
+}
+
 // One branch of a camera path (its split code) from its traced camera ray; appends its prefix and
 // records to *out when `append`. Returns the number of camera-side splits it passed.
 template <typename Tracer>
@@ -511,7 +519,17 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
   SurfaceHit hit = first;
   for (;;) {
     if (media && s.medium != kVacuum) {
-      const FreeFlight flight = sample_free_flight(scene.media, s.medium, s.ray, found ? hit.t : kInfinity, s.abs_beta, s.medium_rng);
+      const float tmax = found ? hit.t : kInfinity;
+      FreeFlight flight;
+      if (splits_in_medium(scene, settings.selection, s)) {
+        // A camera-side split in the medium: bit 0 scatters, bit 1 passes (free_flight.h).
+        const bool pass = ((s.split_code >> s.splits) & 1u) != 0u;
+        ++s.splits;
+        flight = pass ? sample_pass_branch(scene.media, s.medium, s.ray, tmax, s.medium_rng)
+                      : sample_scatter_branch(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
+      } else {
+        flight = sample_free_flight(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
+      }
       if (flight.event == MediumEvent::absorbed) break;
       s.beta *= flight.weight;
       s.abs_beta *= flight.weight;

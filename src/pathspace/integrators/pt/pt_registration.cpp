@@ -36,9 +36,12 @@ OptionTable<PtSettings> pt_options() {
   t.flag("psf-no-layers", [](S& s) -> bool& { return s.selection.split_layers; }, false,
          "One average per vertex instead of one per material layer", "2021 paper, sec. 3.1.2");
   t.number("psf-camera-splits", [](S& s) -> int& { return s.selection.camera_splits; }, 0, kMaxCameraSplits,
-           "With --filter: at smooth glass before the first selected vertex, follow both reflection and refraction, "
-           "up to N times per path, each branch filtered (no speckle in and through glass)",
+           "With --filter: before the first selected vertex, follow both reflection and refraction at smooth glass, "
+           "and both scattering and passing in a scattering medium, up to N times per path, each branch filtered "
+           "(no speckle in and through glass or fog)",
            "docs/hashed-filter.md, camera-side branches");
+  t.flag("psf-no-medium-splits", [](S& s) -> bool& { return s.selection.medium_splits; }, false,
+         "Camera-side splits at glass only, not in media (thin fog around small lights)", "docs/media.md, path space filtering in media");
   t.check([](const S& s) {
     if (!s.nee && !s.bsdf_sampling) throw OptionError("--no-nee and --no-bsdf-sampling together would render black");
     const int records = records_per_path(s.selection);
