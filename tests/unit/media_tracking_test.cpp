@@ -56,6 +56,23 @@ Rgb optical_depth(const Medium& m, const float* values, const Ray& ray, float a,
   return tau;
 }
 
+// The integral over [a, b) of sigma_s(t) T(t) dt along kRay (midpoint rule): what a flight's
+// scattering weight estimates over that interval.
+Rgb scatter_integral(const Medium& med, const float* values, float a, float b) {
+  constexpr int n = 4000;
+  const float h = (b - a) / float(n);
+  Rgb tau = optical_depth(med, values, kRay, 0.f, a), scatter;
+  for (int i = 0; i < n; ++i) {
+    const float t = a + (float(i) + 0.5f) * h;
+    const Vec3 gp = grid_point(med, kRay.at(t));
+    const Rgb st = medium_sigma_t(med, values, gp);
+    const Rgb tr = Rgb(std::exp(-(tau.r + st.r * h / 2)), std::exp(-(tau.g + st.g * h / 2)), std::exp(-(tau.b + st.b * h / 2)));
+    scatter += medium_albedo(med, values, gp) * st * tr * h;
+    tau += st * h;
+  }
+  return scatter;
+}
+
 void expect_mean(const std::vector<double>& x, double expected, const char* what) {
   double s = 0, s2 = 0;
   for (double v : x) {
@@ -112,14 +129,20 @@ TEST(MediaTracking, MajorantWalkCoversTheBoxAndBoundsTheField) {
 
 // 0: the grid, 1: homogeneous; 2, 3: the same with a chromatic path throughput (the channels'
 // shares of the sampling, media/free_flight.h).
-class MediaEstimators : public ::testing::TestWithParam<int> {};
-
-TEST_P(MediaEstimators, TransmittanceIsUnbiased) {
+class MediaEstimators : public ::testing::TestWithParam<int> {
+ protected:
   const SceneMedia m = grid_scene();
   const MediaView v = m.view();
   const int medium = GetParam() % 2;
-  const float tmax = 3.f;
-  const Rgb tau = optical_depth(m.media[size_t(medium)], m.grid_values.data(), kRay, 0.f, tmax);
+  const Rgb throughput = GetParam() < 2 ? Rgb(1.f) : Rgb(0.2f, 1.5f, 0.05f);
+  const Medium& med = m.media[size_t(medium)];
+  const float* values = m.grid_values.data();
+  // The segment's end, and the interval over which the scattering weights are checked.
+  const float tmax = 3.f, a = 0.8f, b = 1.9f;
+};
+
+TEST_P(MediaEstimators, TransmittanceIsUnbiased) {
+  const Rgb tau = optical_depth(med, values, kRay, 0.f, tmax);
   Pcg32 rng(11, uint64_t(medium));
   std::vector<double> x[3];
   for (int i = 0; i < 200000; ++i) {
@@ -130,32 +153,12 @@ TEST_P(MediaEstimators, TransmittanceIsUnbiased) {
 }
 
 TEST_P(MediaEstimators, FreeFlightPassAndScatterWeightsAreUnbiased) {
-  const SceneMedia m = grid_scene();
-  const MediaView v = m.view();
-  const int medium = GetParam() % 2;
-  const Rgb throughput = GetParam() < 2 ? Rgb(1.f) : Rgb(0.2f, 1.5f, 0.05f);
-  const Medium& med = m.media[size_t(medium)];
-  const float* values = m.grid_values.data();
-  const float tmax = 3.f, a = 0.8f, b = 1.9f;
   // Expected: T(tmax), and the integral over [a, b] of sigma_s(t) T(t) dt (midpoint rule).
   const Rgb pass = [&] {
     const Rgb tau = optical_depth(med, values, kRay, 0.f, tmax);
     return Rgb(std::exp(-tau.r), std::exp(-tau.g), std::exp(-tau.b));
   }();
-  Rgb scatter;
-  {
-    constexpr int n = 4000;
-    const float h = (b - a) / float(n);
-    Rgb tau = optical_depth(med, values, kRay, 0.f, a);
-    for (int i = 0; i < n; ++i) {
-      const float t = a + (float(i) + 0.5f) * h;
-      const Vec3 gp = grid_point(med, kRay.at(t));
-      const Rgb st = medium_sigma_t(med, values, gp);
-      const Rgb tr = Rgb(std::exp(-(tau.r + st.r * h / 2)), std::exp(-(tau.g + st.g * h / 2)), std::exp(-(tau.b + st.b * h / 2)));
-      scatter += medium_albedo(med, values, gp) * st * tr * h;
-      tau += st * h;
-    }
-  }
+  const Rgb scatter = scatter_integral(med, values, a, b);
   Pcg32 rng(23, uint64_t(medium));
   std::vector<double> xp[3], xs[3];
   for (int i = 0; i < 400000; ++i) {
@@ -176,28 +179,8 @@ TEST_P(MediaEstimators, FreeFlightPassAndScatterWeightsAreUnbiased) {
 // Camera-side branches (free_flight.h): the scatter branch's weight over [a, b) and the pass branch's
 // weight estimate what the free flight's two outcomes do; a homogeneous scatter branch always collides.
 TEST_P(MediaEstimators, BranchWeightsAreUnbiased) {
-  const SceneMedia m = grid_scene();
-  const MediaView v = m.view();
-  const int medium = GetParam() % 2;
-  const Rgb throughput = GetParam() < 2 ? Rgb(1.f) : Rgb(0.2f, 1.5f, 0.05f);
-  const Medium& med = m.media[size_t(medium)];
-  const float* values = m.grid_values.data();
-  const float tmax = 3.f, a = 0.8f, b = 1.9f;
   const Rgb tau_max = optical_depth(med, values, kRay, 0.f, tmax);
-  Rgb scatter;  // the integral over [a, b) of sigma_s(t) T(t) dt (midpoint rule)
-  {
-    constexpr int n = 4000;
-    const float h = (b - a) / float(n);
-    Rgb tau = optical_depth(med, values, kRay, 0.f, a);
-    for (int i = 0; i < n; ++i) {
-      const float t = a + (float(i) + 0.5f) * h;
-      const Vec3 gp = grid_point(med, kRay.at(t));
-      const Rgb st = medium_sigma_t(med, values, gp);
-      const Rgb tr = Rgb(std::exp(-(tau.r + st.r * h / 2)), std::exp(-(tau.g + st.g * h / 2)), std::exp(-(tau.b + st.b * h / 2)));
-      scatter += medium_albedo(med, values, gp) * st * tr * h;
-      tau += st * h;
-    }
-  }
+  const Rgb scatter = scatter_integral(med, values, a, b);
   Pcg32 rng(29, uint64_t(medium));
   std::vector<double> xp[3], xs[3];
   int passed = 0;

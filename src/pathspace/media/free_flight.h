@@ -178,6 +178,22 @@ PS_INLINE Rgb grid_transmittance(const Medium& m, const float* values, const Ray
   });
   return tr;
 }
+
+// A flight along `ray` over [ray.tmin, tmax): in a homogeneous medium the closed form (kCollide: the
+// collision drawn before tmax, homogeneous_collision), in a grid weighted delta tracking.
+template <bool kCollide>
+PS_INLINE FreeFlight flight(const MediaView& media, int32_t medium, const Ray& ray, float tmax, const Rgb& throughput,
+                            Pcg32& rng) {
+  const Medium& m = media.media[medium];
+  const Rgb shares = channel_shares(throughput);
+  if (m.type == MediumType::homogeneous) {
+    const float d = tmax - ray.tmin;
+    FreeFlight f = kCollide ? homogeneous_collision(m, d, shares, rng) : homogeneous_flight(m, d, shares, rng);
+    f.t += ray.tmin;
+    return f;
+  }
+  return grid_flight(m, media.grid_values, ray, tmax, shares, rng);
+}
 }  // namespace media_detail
 
 // Where the path travelling along `ray` in medium `medium` interacts before `tmax` (the next surface,
@@ -185,14 +201,7 @@ PS_INLINE Rgb grid_transmittance(const Medium& m, const float* values, const Ray
 // shares of the sampling; any value gives an unbiased estimate).
 PS_INLINE FreeFlight sample_free_flight(const MediaView& media, int32_t medium, const Ray& ray, float tmax,
                                         const Rgb& throughput, Pcg32& rng) {
-  const Medium& m = media.media[medium];
-  const Rgb shares = media_detail::channel_shares(throughput);
-  if (m.type == MediumType::homogeneous) {
-    FreeFlight f = media_detail::homogeneous_flight(m, tmax - ray.tmin, shares, rng);
-    f.t += ray.tmin;
-    return f;
-  }
-  return media_detail::grid_flight(m, media.grid_values, ray, tmax, shares, rng);
+  return media_detail::flight<false>(media, medium, ray, tmax, throughput, rng);
 }
 
 // The transmittance of medium `medium` along `ray` from ray.tmin to tmax (exact for homogeneous
@@ -219,15 +228,8 @@ PS_INLINE bool medium_scatters(const MediaView& media, int32_t medium) {
 
 PS_INLINE FreeFlight sample_scatter_branch(const MediaView& media, int32_t medium, const Ray& ray, float tmax,
                                            const Rgb& throughput, Pcg32& rng) {
-  const Medium& m = media.media[medium];
-  const Rgb shares = media_detail::channel_shares(throughput);
-  if (m.type == MediumType::homogeneous) {
-    FreeFlight f = media_detail::homogeneous_collision(m, tmax - ray.tmin, shares, rng);
-    f.t += ray.tmin;
-    return f;
-  }
-  FreeFlight f = media_detail::grid_flight(m, media.grid_values, ray, tmax, shares, rng);
-  if (f.event == MediumEvent::passed) f = FreeFlight{MediumEvent::absorbed, 0.f, Rgb()};
+  FreeFlight f = media_detail::flight<true>(media, medium, ray, tmax, throughput, rng);
+  if (f.event == MediumEvent::passed) f = FreeFlight{MediumEvent::absorbed, 0.f, Rgb()};  // a grid's
   return f;
 }
 
