@@ -145,17 +145,15 @@ PS_INLINE FreeFlight homogeneous_collision(const Medium& m, float d, const Rgb& 
   const int c = pick_channel(shares, rng.next_float());
   const float u = rng.next_float();
   if (is_black(m.albedo)) return f;
-  const auto mass = [d](float sigma) { return isinf(d) ? 1.f : -expm1f(-sigma * d); };
-  const float mass_c = st[c] > 0.f ? mass(st[c]) : 0.f;
-  if (!(mass_c > 0.f)) return f;
-  const float t = -log1pf(-u * mass_c) / st[c];
+  Rgb mass;  // of each channel's exponential before d
+  for (int k = 0; k < 3; ++k) mass[k] = !(st[k] > 0.f) ? 0.f : isinf(d) ? 1.f : -expm1f(-st[k] * d);
+  if (!(mass[c] > 0.f)) return f;
+  const float t = -log1pf(-u * mass[c]) / st[c];
   if (!(t < d)) return f;
   const Rgb tr = beer_lambert(st, t);
   float density = 0.f;
-  for (int k = 0; k < 3; ++k) {
-    const float mk = st[k] > 0.f ? mass(st[k]) : 0.f;
-    if (mk > 0.f) density += shares[k] * st[k] * tr[k] / mk;
-  }
+  for (int k = 0; k < 3; ++k)
+    if (mass[k] > 0.f) density += shares[k] * st[k] * tr[k] / mass[k];
   f.event = MediumEvent::scattered;
   f.t = t;
   f.weight = m.albedo * st * tr / density;

@@ -154,6 +154,13 @@ struct PtPathState {
   Pcg32 medium_rng;
 
   PS_HD Rgb& radiance() { return owner < 0 ? prefix : open[owner].after; }
+  // Whether the path may split here (at smooth glass, in a scattering medium): a filter selects
+  // vertices, none is selectable yet, and the split budget is not spent.
+  PS_HD bool may_split(const VertexSelection& selection) const {
+    return selection.mode != VertexSelectionMode::none && diffuse_index == 0 && splits < selection.camera_splits;
+  }
+  // Passes a split: true for the second way (refraction, passing), false for the first.
+  PS_HD bool take_split() { return ((split_code >> splits++) & 1u) != 0u; }
 };
 
 namespace pt_detail {
@@ -327,13 +334,8 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   const Point2 ub{sampler.at(dims::vertex(v, dims::kBsdfU)), sampler.at(dims::vertex(v, dims::kBsdfU + 1))};
   float u_lobe = sampler.at(dims::vertex(v, dims::kLobe));
   float p_reflect = 0.f;
-  const bool branch = selection.mode != VertexSelectionMode::none && s->diffuse_index == 0 &&
-                      s->splits < selection.camera_splits && bsdf_delta_branches(mat, wo, &p_reflect);
-  if (branch) {
-    const bool refract = ((s->split_code >> s->splits) & 1u) != 0u;
-    u_lobe = refract ? p_reflect + 0.5f * (1.f - p_reflect) : 0.5f * p_reflect;
-    ++s->splits;
-  }
+  const bool branch = s->may_split(selection) && bsdf_delta_branches(mat, wo, &p_reflect);
+  if (branch) u_lobe = s->take_split() ? p_reflect + 0.5f * (1.f - p_reflect) : 0.5f * p_reflect;
   if (!bsdf_sample(mat, wo, u_lobe, ub, TransportMode::radiance, &bs)) return PtNext::end;
   if (branch) bs.weight *= bs.pdf_w;
   s->abs_beta *= bs.weight;
@@ -497,8 +499,7 @@ namespace pt_detail {
 // Whether the path splits at its free flight through a medium (the same budget as the splits at
 // smooth glass: VertexSelection::camera_splits), before its first selectable vertex.
 PS_INLINE bool splits_in_medium(const SceneView& scene, const VertexSelection& selection, const PtPathState& s) {
-  return selection.mode != VertexSelectionMode::none && selection.medium_splits && s.diffuse_index == 0 &&
-         s.splits < selection.camera_splits && medium_scatters(scene.media, s.medium);
+  return selection.medium_splits && s.may_split(selection) && medium_scatters(scene.media, s.medium);
 }
 
 // One branch of a camera path (its split code) from its traced camera ray; appends its prefix and
@@ -523,9 +524,7 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       FreeFlight flight;
       if (splits_in_medium(scene, settings.selection, s)) {
         // A camera-side split in the medium: bit 0 scatters, bit 1 passes (free_flight.h).
-        const bool pass = ((s.split_code >> s.splits) & 1u) != 0u;
-        ++s.splits;
-        flight = pass ? sample_pass_branch(scene.media, s.medium, s.ray, tmax, s.medium_rng)
+        flight = s.take_split() ? sample_pass_branch(scene.media, s.medium, s.ray, tmax, s.medium_rng)
                       : sample_scatter_branch(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
       } else {
         flight = sample_free_flight(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
