@@ -3,7 +3,8 @@
 //    each pixel's footprint: path tracing sees it at camera-ray hits (hit uv), light tracing and
 //    BPT at the light path's first vertex (the emission sample's uv).
 //  - Lighting a floor beside it, path tracing (next event estimation at sampled points, and BSDF
-//    hits with MIS), light tracing and BPT agree pixel by pixel.
+//    hits with MIS), light tracing and BPT agree pixel by pixel, with the emitter's points sampled
+//    by the map's brightness (2 x 2 cells per triangle, lights/emission_cells.h).
 // Per-pixel z-tests at alpha 0.01 Sidak over the 5 comparisons.
 #include <gtest/gtest.h>
 
@@ -77,6 +78,7 @@ TEST(EmissionMapRender, ItLightsAFloorAlikeInEveryIntegrator) {
   // Seen from below the floor's plane is no good: from the side, above the floor, under the emitter.
   s.camera = make_perspective_camera(Vec3(2.6f, 0.1f, 0.3f), normalize(Vec3(-1, 0, -0.15f)), Vec3(0, 0, 1), 60.f, 16, 16);
   s.finalize();
+  ASSERT_EQ(s.lights[0].emission_grid, 2u);
   const Accel accel(s);
   const testing::Rendered pt = testing::render_integrator(s, accel, testing::default_config("pt", testing::test_seed(611)), 256);
   double mean = 0.0;

@@ -124,7 +124,7 @@ void expect_flux(const Scene& scene, double expected) {
       const float c = e.delta_position || e.infinite ? 1.f : fabsf(dot(e.n, e.d));
       EXPECT_NEAR(e.weight.r, e.le.r * c / (e.pdf_a * e.pdf_w), 1e-4f * e.weight.r);
       float pdf_a, pdf_w;
-      emission_pdf(view, light, e.ng, e.d, 0.f, &pdf_a, &pdf_w);
+      emission_pdf(view, light, e.p, e.ng, e.d, 0.f, &pdf_a, &pdf_w);
       EXPECT_NEAR(pdf_a, e.pdf_a, 1e-5f * pdf_a);
       EXPECT_NEAR(pdf_w, e.pdf_w, 1e-5f * pdf_w + 1e-6f);
     }

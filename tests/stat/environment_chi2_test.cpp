@@ -151,7 +151,7 @@ void check_emission(const char* name, EnvironmentMapping m, int w, int h, uint64
         if (!ok && !(e.pdf_w > 0.f && is_black(e.le))) return testing::Outcome{};
         if (!ok) return testing::Outcome{0, 0, 0, e.d};  // black direction: sampled, not emitted
         float pa, pw;
-        emission_pdf(v, s.light, e.n, e.d, 0.f, &pa, &pw);
+        emission_pdf(v, s.light, e.p, e.n, e.d, 0.f, &pa, &pw);
         const Rgb expected_weight = environment_radiance(v, s.light, -e.d) / (pa * pw);
         const bool weight_ok = fabsf(e.weight.r - expected_weight.r) <= 1e-5f * expected_weight.r;
         // The origin lies on the disk of the bounding sphere's radius, upstream of the scene.
@@ -164,7 +164,7 @@ void check_emission(const char* name, EnvironmentMapping m, int w, int h, uint64
       },
       [&](const Vec3& d) {
         float pa, pw;
-        emission_pdf(v, s.light, d, d, 0.f, &pa, &pw);
+        emission_pdf(v, s.light, d, d, d, 0.f, &pa, &pw);
         return double(pw);
       },
       o);

@@ -97,7 +97,7 @@ void expect_emission_carries_power(const Scene& s, double power, const std::stri
     const Point2 up{rng.next_float(), rng.next_float()}, ud{rng.next_float(), rng.next_float()};
     if (sample_emission(v, l, 0.f, up, ud, &e)) {
       float pa, pw;
-      emission_pdf(v, l, e.n, e.d, 0.f, &pa, &pw);
+      emission_pdf(v, l, e.p, e.n, e.d, 0.f, &pa, &pw);
       ASSERT_NEAR(pw, e.pdf_w, 1e-4f * e.pdf_w);
       sum += luminance(e.weight);
       sum_sq += double(luminance(e.weight)) * luminance(e.weight);

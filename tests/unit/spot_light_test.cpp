@@ -61,7 +61,7 @@ TEST(SpotLight, EmissionStaysInTheConeAndCarriesThePower) {
     if (!sample_emission(v, l, 0.f, up, ud, &e)) continue;  // falloff 0 at the cone's very edge: weight 0
     ASSERT_GE(dot(e.d, l.direction), l.cos_total - 1e-6f);
     float pa, pw;
-    emission_pdf(v, l, e.n, e.d, 0.f, &pa, &pw);
+    emission_pdf(v, l, e.p, e.n, e.d, 0.f, &pa, &pw);
     ASSERT_NEAR(pw, e.pdf_w, 1e-4f * e.pdf_w);
     sum += e.weight.r;
     sum_sq += double(e.weight.r) * e.weight.r;

@@ -51,6 +51,7 @@
 #include "pathspace/materials/rough_conductor.h"
 #include "pathspace/materials/rough_dielectric.h"
 #include "pathspace/materials/standard_material.h"
+#include "pathspace/lights/emission_cells.h"
 #include "pathspace/lights/environment_map.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/lights/light_bounds.h"
@@ -137,7 +138,7 @@ __global__ void scene_compile_check(SceneView scene, const SurfaceHit* hits, Rgb
   EmissionSample es;
   if (sample_emission(scene, light, hit.time, u, v, &es)) {
     float pdf_a = 0.f, pdf_w = 0.f;
-    emission_pdf(scene, light, es.n, es.d, es.time, &pdf_a, &pdf_w);
+    emission_pdf(scene, light, es.p, es.n, es.d, es.time, &pdf_a, &pdf_w);
     sum += es.weight * (pdf_a + pdf_w);
   }
   if (scene.environment_light >= 0) {

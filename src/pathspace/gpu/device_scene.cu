@@ -36,6 +36,7 @@ DeviceScene::DeviceScene(const Scene& scene) {
   view_.spheres = upload(h.spheres, h.num_spheres);
   view_.materials = upload(h.materials, h.num_materials);
   view_.lights = upload(h.lights, h.num_lights);
+  view_.emission_cells = upload(h.emission_cells, h.num_emission_cells);
   // Textures: each view's texels first, then the array of views pointing at them.
   std::vector<TextureView> textures(h.textures, h.textures + h.num_textures);
   for (TextureView& t : textures) {

@@ -47,12 +47,16 @@ struct Light {
   // [0, 1]^2. With irradiance_plane (Mitsuba's projector) the image is the irradiance on that plane,
   // so the intensity is value * image / cos^3; otherwise (pbrt-v4) value * image.
   // An area triangle's texture is its emission map (glTF emissiveTexture): radiance value * texture
-  // at the surface's uv (scene/light_sampling.h area_light_radiance), positions sampled by area.
+  // at the surface's uv (scene/light_sampling.h area_light_radiance), positions sampled by the map's
+  // brightness over emission_grid x emission_grid cells (lights/emission_cells.h; 0: by area).
   int32_t texture = -1;
   Vec3 axis_u, axis_v;
   float uv_scale_u = 0.5f, uv_scale_v = 0.5f;
   bool irradiance_plane = false;
   float image_max = 1.f;  // the texture's largest channel value (1 without one): bounds emission weights
+  // Set by Scene::finalize for a mapped area triangle: its cells' offset in SceneView::emission_cells.
+  uint32_t emission_cells = 0;
+  uint32_t emission_grid = 0;
 };
 
 // Where a point, spot or projector is at time t in [0, 1) (its position when it stands still).

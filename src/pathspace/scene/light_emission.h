@@ -1,6 +1,7 @@
 // Emission sampling: the first vertex and direction of a light path (light tracing, and BPT/PCLT
 // later), for every light type (Veach 1997 §10.2 "sampling the light sources"; SmallVCM's
-// Emit() conventions, docs/scenes.md §5). Area lights: uniform area, then cosine-weighted
+// Emit() conventions, docs/scenes.md §5). Area lights: uniform area (triangles with an emission map: by its
+// brightness, lights/emission_cells.h), then cosine-weighted
 // around the emitting side; point: uniform sphere; directional and environment: parallel rays
 // from a disk of the scene's bounding sphere perpendicular to the propagation direction.
 #pragma once
@@ -66,11 +67,11 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
     case LightType::area_triangle:
     case LightType::area_sphere: {
       Vec3 p, n;
-      float area;
+      float area, density_times_area = 1.f;
       if (l.type == LightType::area_triangle) {
         const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
         const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
-        const Point2 b = square_to_triangle_barycentric(u_pos);
+        const Point2 b = sample_triangle_emitter(scene, l, u_pos, &density_times_area);
         p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
         n = triangle_normal(p0, p1, p2);
         area = triangle_area(p0, p1, p2);
@@ -90,7 +91,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
       e->n = side;
       e->ng = n;
       e->le = area_light_radiance(scene, l, side, side, e->uv);  // along the emitting side: the light's value (and map)
-      e->pdf_a = 1.f / area;
+      e->pdf_a = density_times_area / area;
       e->pdf_w = pdf_w;
       e->weight = e->le * (c / (e->pdf_a * pdf_w));
       return !is_black(e->le);
@@ -160,26 +161,23 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
 }
 
 // Densities with which sample_emission produces the emission (p, d) from light l (for MIS in BPT):
-// pdf_a of the origin and pdf_w of the direction. For area lights n is the light's geometric normal at p,
-// at `time`.
-PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& n, const Vec3& d, float time, float* pdf_a,
-                            float* pdf_w) {
+// pdf_a of the origin and pdf_w of the direction. For area lights p is the origin and n the light's
+// geometric normal there, at `time`; other lights ignore p.
+PS_INLINE void emission_pdf(const SceneView& scene, const Light& l, const Vec3& p, const Vec3& n, const Vec3& d, float time,
+                            float* pdf_a, float* pdf_w) {
   *pdf_a = 0.f;
   *pdf_w = 0.f;
   switch (l.type) {
     case LightType::area_triangle:
     case LightType::area_sphere: {
-      float area;
       if (l.type == LightType::area_triangle) {
-        const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
-        area = triangle_area(tv.p0, tv.p1, tv.p2);
+        *pdf_a = triangle_emitter_pdf_a(scene, l, triangle_at(scene, scene.triangles[l.shape], time), p);
       } else {
         const float r = scene.spheres[l.shape].radius;
-        area = kFourPi * r * r;
+        *pdf_a = 1.f / (kFourPi * r * r);
       }
       const float c = dot(n, d);
       const bool emits = c > kMinEmitterCosine || (l.two_sided && c < -kMinEmitterCosine);
-      *pdf_a = area > 0.f ? 1.f / area : 0.f;
       *pdf_w = emits ? fabsf(c) * kInvPi * (l.two_sided ? 0.5f : 1.f) : 0.f;
       return;
     }

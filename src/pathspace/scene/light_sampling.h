@@ -1,6 +1,6 @@
 // Next-event estimation for every light type: sample a direction towards the light, its solid-angle
 // pdf (for MIS when a BSDF-sampled ray hits an emitter), and emitted radiance.
-// Triangles: uniform area sampling. Spheres: uniform cone of directions from outside, uniform area
+// Triangles: uniform area sampling, or by an emission map's brightness (lights/emission_cells.h). Spheres: uniform cone of directions from outside, uniform area
 // from inside (the only choice for the "inside of a sphere" test scenes).
 #pragma once
 
@@ -8,6 +8,7 @@
 #include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/scene/environment_light.h"
 #include "pathspace/scene/point_light_intensity.h"
+#include "pathspace/lights/emission_cells.h"
 #include "pathspace/lights/light.h"
 #include "pathspace/math/frame.h"
 #include "pathspace/sampling/warps.h"
@@ -39,6 +40,26 @@ PS_INLINE Point2 emission_map_uv(const SceneView& scene, const Light& l, Point2 
   return l.texture >= 0 ? triangle_uv(scene.triangles[l.shape], scene.uvs, b.y, 1.f - b.x - b.y) : Point2{};
 }
 
+// Where a sample lands on an area triangle: by its emission map's cells when it has them, else
+// uniformly by area. Returns barycentrics as square_to_triangle_barycentric does and writes the area
+// density times the triangle's area.
+PS_INLINE Point2 sample_triangle_emitter(const SceneView& scene, const Light& l, Point2 u, float* density_times_area) {
+  if (l.emission_grid == 0) {
+    *density_times_area = 1.f;
+    return square_to_triangle_barycentric(u);
+  }
+  return sample_emission_cells(scene.emission_cells + l.emission_cells, l.emission_grid, u, density_times_area);
+}
+
+// The area density with which sample_triangle_emitter lands at p on the light's triangle tv.
+PS_INLINE float triangle_emitter_pdf_a(const SceneView& scene, const Light& l, const TriangleVertices& tv, const Vec3& p) {
+  const float area = triangle_area(tv.p0, tv.p1, tv.p2);
+  if (!(area > 0.f)) return 0.f;
+  if (l.emission_grid == 0) return 1.f / area;
+  const Point2 b = triangle_barycentrics_of(p, tv.p0, tv.p1, tv.p2);
+  return emission_cells_density(scene.emission_cells + l.emission_cells, l.emission_grid, b) / area;
+}
+
 namespace detail {
 PS_INLINE float solid_angle_from_area(float pdf_a, const Vec3& ref, const Vec3& p, const Vec3& n) {
   const Vec3 d = p - ref;
@@ -54,7 +75,8 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
     case LightType::area_triangle: {
       const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
       const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
-      const Point2 b = square_to_triangle_barycentric(u);
+      float density_times_area;
+      const Point2 b = sample_triangle_emitter(scene, l, u, &density_times_area);
       const Vec3 p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
       const Vec3 n = triangle_normal(p0, p1, p2);
       const Vec3 d = p - ref;
@@ -64,7 +86,7 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       s->dist = dist;
       s->p = p;
       s->li = area_light_radiance(scene, l, n, -s->wi, emission_map_uv(scene, l, b));
-      s->pdf_w = detail::solid_angle_from_area(1.f / triangle_area(p0, p1, p2), ref, p, n);
+      s->pdf_w = detail::solid_angle_from_area(density_times_area / triangle_area(p0, p1, p2), ref, p, n);
       s->delta = false;
       return s->pdf_w > 0.f && !is_black(s->li);
     }
@@ -140,7 +162,7 @@ PS_INLINE float light_pdf(const SceneView& scene, const Light& l, const Vec3& re
   switch (l.type) {
     case LightType::area_triangle: {
       const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
-      return detail::solid_angle_from_area(1.f / triangle_area(tv.p0, tv.p1, tv.p2), ref, p, n);
+      return detail::solid_angle_from_area(triangle_emitter_pdf_a(scene, l, tv, p), ref, p, n);
     }
     case LightType::area_sphere: {
       const Sphere& sp = scene.spheres[l.shape];

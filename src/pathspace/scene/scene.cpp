@@ -9,6 +9,7 @@
 #include "pathspace/base/error.h"
 #include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/sampling/warps.h"
+#include "pathspace/scene/emission_cells_build.h"
 #include "pathspace/scene/point_light_intensity.h"
 #include "pathspace/scene/surface_opacity.h"
 
@@ -345,6 +346,7 @@ void Scene::finalize() {
   if (uvs.size() > positions.size() || normals.size() > positions.size())
     throw Error("more vertex uvs or normals than vertices");
   if (!uvs.empty()) uvs.resize(positions.size());
+  emission_cells_ = build_emission_cells(triangles, uvs, textures, &lights);
   if (!normals.empty()) normals.resize(positions.size());
   if (positions_end.size() > positions.size() || normals_end.size() > normals.size())
     throw Error("more end positions or normals (motion blur) than vertices");
@@ -421,6 +423,8 @@ SceneView Scene::view() const {
   v.num_textures = uint32_t(texture_views_.size());
   v.lights = lights.data();
   v.num_lights = uint32_t(lights.size());
+  v.emission_cells = emission_cells_.empty() ? nullptr : emission_cells_.data();
+  v.num_emission_cells = uint32_t(emission_cells_.size());
   v.light_selection = light_distribution_.view();
   if (light_selection == LightSelection::bvh && !light_tree_.nodes().empty()) v.light_tree = light_tree_.view();
   v.environment_light = environment_light_;

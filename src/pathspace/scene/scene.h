@@ -120,6 +120,7 @@ class Scene {
  private:
   BoundingSphere bounds_;
   DiscreteDistribution light_distribution_;
+  std::vector<float> emission_cells_;  // mapped area triangles' sampling cells (Light::emission_cells)
   LightTree light_tree_;
   int32_t environment_light_ = -1;
   bool has_cutouts_ = false;

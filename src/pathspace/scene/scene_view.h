@@ -34,6 +34,8 @@ struct SceneView {
   uint32_t num_textures = 0;
   const Light* lights = nullptr;
   uint32_t num_lights = 0;
+  const float* emission_cells = nullptr;  // mapped area triangles' sampling cells (lights/emission_cells.h)
+  uint32_t num_emission_cells = 0;        // floats
   DiscreteView light_selection;     // probability of choosing each light (light paths; NEE unless the tree is active)
   LightTreeView light_tree;         // NEE at a shading point when active (scene/light_sampling.h)
   int32_t environment_light = -1;   // index of the environment light, or -1

@@ -374,11 +374,11 @@ PS_HD Rgb connect_to_light(const SceneView& scene, const Tracer& tracer, const S
   float pa, pw, emit_to_z, direct;
   if (is_area_light(light)) {
     const Vec3 n = area_light_normal(scene, light, ls.p, z.time);
-    emission_pdf(scene, light, n, -ls.wi, z.time, &pa, &pw);
+    emission_pdf(scene, light, ls.p, n, -ls.wi, z.time, &pa, &pw);
     emit_to_z = pa * pw * cos_z;
     direct = ls.pdf_w * fabsf(dot(n, ls.wi));  // both over dist^2, which cancels
   } else {
-    emission_pdf(scene, light, ls.wi, -ls.wi, z.time, &pa, &pw);
+    emission_pdf(scene, light, ls.p, ls.wi, -ls.wi, z.time, &pa, &pw);
     emit_to_z = pa * pw * cos_z;
     if (is_point_light(light)) emit_to_z /= ls.dist * ls.dist;
     direct = ls.pdf_w;  // 1 for delta lights, the sphere pdf for the environment
@@ -538,7 +538,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
         if (segments > 1) {
           const float pick = scene.light_selection.probability(uint32_t(scene.environment_light));
           float pa, pw;
-          emission_pdf(scene, env, ray.d, -ray.d, time, &pa, &pw);
+          emission_pdf(scene, env, ray.o, ray.d, -ray.d, time, &pa, &pw);
           w_light = mis(h, pick * environment_pdf(scene, ray.d)) * dvcm + mis(h, pick * pa * pw) * dvc;
         }
         const Rgb c = beta * environment_radiance(scene, env, ray.d) * (1.f / (1.f + w_light));
@@ -561,7 +561,7 @@ PS_HD Rgb bpt_trace_pixel(const SceneView& scene, const Tracer& tracer, const Sa
       if (!is_black(le)) {
         const float pick = scene.light_selection.probability(uint32_t(hit.light));
         float pa, pw;
-        emission_pdf(scene, light, hit.ng, -ray.d, time, &pa, &pw);
+        emission_pdf(scene, light, hit.p, hit.ng, -ray.d, time, &pa, &pw);
         float w_light;
         if (segments == 1) {
           w_light = mis(h, pick * pa) * dvcm;
