@@ -33,6 +33,7 @@
 #include "pathspace/hashgrid/hash_grid_view.h"
 #include "pathspace/hashgrid/stochastic_hash_map_view.h"
 
+#include "pathspace/media/equiangular.h"
 #include "pathspace/media/free_flight.h"
 #include "pathspace/media/grid_lookup.h"
 #include "pathspace/media/henyey_greenstein.h"

@@ -25,6 +25,8 @@ struct FreeFlight {
   MediumEvent event = MediumEvent::passed;
   float t = 0.f;       // scattered: where along the ray
   Rgb weight{1.f};     // passed: transmittance / probability; scattered: sigma_s transmittance / density
+  float density = 0.f; // scattered in a homogeneous medium: the density of t (MIS with equiangular
+                       // sampling, pt_kernel.h); 0 in a grid
 };
 
 namespace media_detail {
@@ -53,6 +55,23 @@ PS_INLINE int pick_channel(const Rgb& shares, float u) {
   return u < shares.r + shares.g ? 1 : 2;
 }
 
+// The density of a collision at distance t (from the segment's start) of a segment d long: the
+// mixture of the channels' exponentials (free flight), or of their exponentials truncated to [0, d)
+// (kCollide, the scatter branch). 0 where nothing scatters.
+template <bool kCollide>
+PS_INLINE float homogeneous_collision_density(const Medium& m, float t, float d, const Rgb& shares) {
+  const Rgb st = m.sigma_t;
+  if (is_black(m.albedo) || !(t < d)) return 0.f;
+  const Rgb tr = beer_lambert(st, t);
+  if (!kCollide) return mix(shares, st * tr);
+  float density = 0.f;
+  for (int k = 0; k < 3; ++k) {
+    const float mass = !(st[k] > 0.f) ? 0.f : isinf(d) ? 1.f : -expm1f(-st[k] * d);
+    if (mass > 0.f) density += shares[k] * st[k] * tr[k] / mass;
+  }
+  return density;
+}
+
 PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& shares, Pcg32& rng) {
   FreeFlight f;
   const Rgb st = m.sigma_t;
@@ -70,6 +89,7 @@ PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& 
     f.event = MediumEvent::scattered;
     f.t = t;
     f.weight = m.albedo * st * tr / density;
+    f.density = density;
     return f;
   }
   const Rgb tr = beer_lambert(st, tmax);
@@ -157,6 +177,7 @@ PS_INLINE FreeFlight homogeneous_collision(const Medium& m, float d, const Rgb& 
   f.event = MediumEvent::scattered;
   f.t = t;
   f.weight = m.albedo * st * tr / density;
+  f.density = density;
   return f;
 }
 
@@ -229,6 +250,17 @@ PS_INLINE FreeFlight sample_scatter_branch(const MediaView& media, int32_t mediu
   FreeFlight f = media_detail::flight<true>(media, medium, ray, tmax, throughput, rng);
   if (f.event == MediumEvent::passed) f = FreeFlight{MediumEvent::absorbed, 0.f, Rgb()};  // a grid's
   return f;
+}
+
+// The density with which the free flight (kCollide false) or the scatter branch (true) along `ray`
+// up to tmax scatters at t, for a path of throughput `throughput`; 0 in a grid, whose density is not
+// known in closed form.
+template <bool kCollide>
+PS_INLINE float scatter_density(const MediaView& media, int32_t medium, const Ray& ray, float tmax, const Rgb& throughput,
+                                float t) {
+  const Medium& m = media.media[medium];
+  if (m.type != MediumType::homogeneous) return 0.f;
+  return media_detail::homogeneous_collision_density<kCollide>(m, t - ray.tmin, tmax - ray.tmin, media_detail::channel_shares(throughput));
 }
 
 PS_INLINE FreeFlight sample_pass_branch(const MediaView& media, int32_t medium, const Ray& ray, float tmax, Pcg32& rng) {

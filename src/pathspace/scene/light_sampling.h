@@ -60,6 +60,23 @@ PS_INLINE float triangle_emitter_pdf_a(const SceneView& scene, const Light& l, c
   return emission_cells_density(scene.emission_cells + l.emission_cells, l.emission_grid, b) / area;
 }
 
+// Where sample_light puts light l's point for the numbers u when that point does not depend on the
+// reference point (area triangles, point, spot, projector): the same u then gives the same point from
+// anywhere (equiangular sampling, integrators/pt/pt_kernel.h, picks its distance towards it first).
+// False for the other lights.
+PS_INLINE bool light_point_for(const SceneView& scene, const Light& l, float time, Point2 u, Vec3* p) {
+  if (is_point_light(l)) {
+    *p = light_position(l, time);
+    return true;
+  }
+  if (l.type != LightType::area_triangle) return false;
+  const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
+  float density_times_area;
+  const Point2 b = sample_triangle_emitter(scene, l, u, &density_times_area);
+  *p = tv.p0 * b.x + tv.p1 * b.y + tv.p2 * (1.f - b.x - b.y);
+  return true;
+}
+
 namespace detail {
 PS_INLINE float solid_angle_from_area(float pdf_a, const Vec3& ref, const Vec3& p, const Vec3& n) {
   const Vec3 d = p - ref;

@@ -10,6 +10,7 @@
 
 #include "pathspace/integrators/common/dimensions.h"
 #include "pathspace/integrators/common/media_steps.h"
+#include "pathspace/media/equiangular.h"
 #include "pathspace/media/henyey_greenstein.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/integrators/pt/caustic_photons.h"
@@ -368,6 +369,83 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   return PtNext::extend;
 }
 
+// The medium segment a scattering vertex lies on, for its light sample's MIS weight against the
+// segment's equiangular light sample: `equiangular` false where the segment has none.
+struct PtMediumSegment {
+  bool equiangular = false;
+  float tmax = kInfinity;      // where the segment ends (the next surface, or infinity)
+  float flight_density = 0.f;  // the density of the vertex's distance (FreeFlight::density)
+};
+
+// Whether the path's segment in its medium gets an equiangular light sample: one of its first
+// PtSettings::equiangular_segments, in a homogeneous medium that scatters, with next event estimation, where a vertex on it could still sample a light (not
+// past the path's length limit; not when the path ends at its selected vertex for a filter's query,
+// whose answer stands for all the light scattered there).
+PS_INLINE bool equiangular_applies(const SceneView& scene, const PtSettings& settings, const PtPathState& s, int max_segments,
+                                   bool query_only) {
+  if (s.segments > settings.equiangular_segments || !settings.nee || query_only || scene.num_lights == 0 || s.segments >= max_segments)
+    return false;
+  const Medium& m = scene.media.media[s.medium];
+  return m.type == MediumType::homogeneous && !is_black(m.albedo);
+}
+
+// The density with which the equiangular technique of segment `ray` (up to tmax) picks light li and
+// the distance t, given the light's point `y`: the light's probability in the scene's selection (by
+// power, or uniform: the same anywhere along the segment, and no light tree to walk) times the
+// equiangular density; 0 for lights whose points depend on where they are seen from.
+PS_INLINE float equiangular_light_density(const SceneView& scene, const Ray& ray, float tmax, uint32_t li, const Vec3& y, float t) {
+  const Light& light = scene.lights[li];
+  if (!is_point_light(light) && light.type != LightType::area_triangle) return 0.f;
+  return scene.light_selection.probability(li) * equiangular_pdf(equiangular_frame(ray.o, ray.d, ray.tmin, tmax, y), t);
+}
+
+// Equiangular sampling (media/equiangular.h; Kulla and Fajardo 2012): a light (by the scene's
+// selection distribution) and a point on it, then a distance along the segment with density proportional to 1 / distance^2 from that point, and
+// the single scattering there towards it (a shadow ray through the media). Its MIS weight shares the
+// light sample's part of the distance-sampled vertex's weight (pt_on_medium) with that vertex's light
+// sample: the balance (or power) of the two distance densities, the light's point being the same
+// function of the numbers for both. Its numbers come from the path's medium stream. The estimate
+// goes where the path's radiance goes (the prefix, or the owning selected vertex's `after`).
+// `collide`: the segment's scattering distance is drawn by the scatter branch (camera splits).
+template <typename Tracer>
+PS_HD void pt_equiangular_light(const SceneView& scene, const Tracer& tracer, const PtSettings& settings, float tmax,
+                                bool collide, PathCounters* counters, PtPathState* s) {
+  const Ray& ray = s->ray;
+  Pcg32& rng = s->medium_rng;
+  const float u_select = rng.next_float();
+  const Point2 ul{rng.next_float(), rng.next_float()};
+  const float u_t = rng.next_float();
+  float select_power;
+  const uint32_t li = scene.light_selection.sample(u_select, &select_power);
+  const Light& light = scene.lights[li];
+  Vec3 y;
+  if (!light_point_for(scene, light, ray.time, ul, &y)) return;
+  const EquiangularFrame frame = equiangular_frame(ray.o, ray.d, ray.tmin, tmax, y);
+  if (!frame.valid()) return;
+  float pdf_t;
+  const float t = sample_equiangular(frame, u_t, ray.tmin, tmax, &pdf_t);
+  if (!(pdf_t > 0.f) || !(t < tmax)) return;
+  const Vec3 x = ray.at(t);
+  LightSample ls;
+  if (!sample_light(scene, light, x, ray.time, ul, &ls)) return;
+  const Medium& m = scene.media.media[s->medium];
+  const float phase = hg_phase(dot(ray.d, ls.wi), m.g);
+  const float select_x = light_selection_probability_at(scene, x, Vec3(0.f), li);
+  const float p_distance = select_x * (collide ? scatter_density<true>(scene.media, s->medium, ray, tmax, s->abs_beta, t)
+                                               : scatter_density<false>(scene.media, s->medium, ray, tmax, s->abs_beta, t));
+  const float p_equiangular = select_power * pdf_t;
+  const float w_light = ls.delta ? 1.f : pt_detail::combine_mis(settings, select_x * ls.pdf_w, phase);
+  const float w = w_light * mis_weight(settings.mis, p_equiangular, p_distance);
+  if (!(w > 0.f)) return;
+  const Rgb scattered = m.albedo * m.sigma_t * medium_transmittance(scene.media, s->medium, ray, t, rng);
+  const Ray shadow = spawn_shadow_ray(x, Vec3(0.f), ls.wi, ls.dist, scene.ray_epsilon, ray.time);
+  ++counters->rays;
+  ++counters->shadow_rays;
+  const Rgb visible = shadow_visibility(scene, tracer, shadow, s->medium, &rng, counters);
+  if (is_black(visible)) return;
+  s->radiance() += s->beta * scattered * ls.li * visible * (phase * w / (p_equiangular * ls.pdf_w));
+}
+
 // The path's ray scatters in its medium at distance `t` (media/free_flight.h; the flight's weight is
 // in s->beta already): next event estimation through the media (its shadow ray's transmittance is
 // pt_resolve_shadow's), then a new direction from the Henyey-Greenstein phase function, whose pdf
@@ -380,9 +458,12 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
 // the ray, as a pixel's footprint spreads, and its normal bin and the consistent filter's direction
 // test separate vertices by the axis of the phase lobe. Its roughness 1 - |g| keys strongly
 // anisotropic media by direction as glossy surfaces are.
+// With equiangular sampling on the segment (PtMediumSegment) the light sample's MIS weight against the
+// phase function is shared with the segment's equiangular light sample (pt_equiangular_light).
 template <typename Tracer>
 PS_HD PtNext pt_on_medium(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const PtSettings& settings,
-                          float t, PathCounters* counters, PtPathState* s, const VisibilityProbes& probes, bool query_only) {
+                          float t, const PtMediumSegment& segment, PathCounters* counters, PtPathState* s,
+                          const VisibilityProbes& probes, bool query_only) {
   using namespace pt_detail;
   const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const Ray ray = s->ray;
@@ -427,7 +508,11 @@ PS_HD PtNext pt_on_medium(const SceneView& scene, const Tracer& tracer, const Sa
       ++counters->rays;
       ++counters->shadow_rays;
       const float pdf_light = select_prob * ls.pdf_w;
-      const float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, phase);
+      float w = ls.delta ? 1.f : combine_mis(settings, pdf_light, phase);
+      if (segment.equiangular) {
+        const float equiangular = equiangular_light_density(scene, ray, segment.tmax, li, ls.p, t);
+        if (equiangular > 0.f) w *= mis_weight(settings.mis, segment.flight_density * select_prob, equiangular);
+      }
       s->shadow_pending = true;
       if (sel) {
         s->shadow_value[0] = ls.li * (phase * w / pdf_light);
@@ -512,6 +597,7 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
   OpenVertex open[kMaxSelectedVertices];
   PtPathState s;
   pt_begin(&s, ray, open, split_code);
+  const int max_segments = settings.max_segments > 0 ? settings.max_segments : scene.max_path_segments;
   const bool media = scene.media.any();
   if (media) {
     s.medium = scene.media.camera_medium;
@@ -521,11 +607,19 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
   for (;;) {
     if (media && s.medium != kVacuum) {
       const float tmax = found ? hit.t : kInfinity;
+      // A camera-side split in the medium: bit 0 scatters (the collision drawn before tmax), bit 1
+      // passes (free_flight.h). The pass branch never scatters here, so it has no equiangular sample.
+      const bool split = splits_in_medium(scene, settings.selection, s);
+      const bool passes = split && s.take_split();
+      PtMediumSegment segment;
+      segment.equiangular = !passes && equiangular_applies(scene, settings, s, max_segments, query_only);
+      segment.tmax = tmax;
+      if (segment.equiangular) pt_equiangular_light(scene, tracer, settings, tmax, split, counters, &s);
       FreeFlight flight;
-      if (splits_in_medium(scene, settings.selection, s)) {
-        // A camera-side split in the medium: bit 0 scatters, bit 1 passes (free_flight.h).
-        flight = s.take_split() ? sample_pass_branch(scene.media, s.medium, s.ray, tmax, s.medium_rng)
-                      : sample_scatter_branch(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
+      if (passes) {
+        flight = sample_pass_branch(scene.media, s.medium, s.ray, tmax, s.medium_rng);
+      } else if (split) {
+        flight = sample_scatter_branch(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
       } else {
         flight = sample_free_flight(scene.media, s.medium, s.ray, tmax, s.abs_beta, s.medium_rng);
       }
@@ -533,7 +627,8 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       s.beta *= flight.weight;
       s.abs_beta *= flight.weight;
       if (flight.event == MediumEvent::scattered) {
-        const PtNext next = pt_on_medium(scene, tracer, sampler, settings, flight.t, counters, &s, probes, query_only);
+        segment.flight_density = flight.density;
+        const PtNext next = pt_on_medium(scene, tracer, sampler, settings, flight.t, segment, counters, &s, probes, query_only);
         if (s.shadow_pending)
           pt_resolve_shadow(&s, shadow_visibility(scene, tracer, s.shadow_ray, s.shadow_medium, &s.medium_rng, counters));
         if (next == PtNext::end) break;

@@ -19,6 +19,11 @@ OptionTable<PtSettings> pt_options() {
   t.flag("no-nee", &S::nee, false, "No next event estimation (BSDF sampling only)");
   t.flag("no-bsdf-sampling", &S::bsdf_sampling, false, "Emission only through next event estimation");
   add_mis_option(t, &S::mis);
+  t.number("equiangular-segments", &S::equiangular_segments, 0, 64,
+           "In homogeneous media: a light sample at an equiangular distance along each of a path's first N segments "
+           "(1: the camera ray; 0: none), beside the one at the distance-sampled vertex: the glow around small lights "
+           "in fog without fireflies",
+           "Kulla and Fajardo 2012; docs/media.md");
   t.flag("texture-footprint", &S::texture_footprint, true,
          "Average the textures at a camera ray's hit over its pixel (up to 4x4 lookups): no texture aliasing at 1 spp; "
          "biased where lighting and texture vary together inside a pixel",
