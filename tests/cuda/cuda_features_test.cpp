@@ -2,7 +2,8 @@
 // PS_HD code as the CPU: one Cornell box holds them all (layered walls, coateddiffuse and
 // coatedconductor; a cutout with an opacity texture, seen directly and casting a shadow; a projector
 // with a slide, a textured spot and a point light, with the ceiling light, selected by the light
-// tree). The GPU's image must agree with the CPU's by the per-pixel z-test (gpu_comparison.h;
+// tree; an emitter on the floor whose emission map is sampled by its cells, lights/emission_cells.h).
+// The GPU's image must agree with the CPU's by the per-pixel z-test (gpu_comparison.h;
 // alpha = 0.01, Sidak-corrected over this file's comparisons), plain and with the hashed filter, and
 // the wavefront must equal the megakernel bit for bit. A Cornell box whose light slides and whose
 // floor rises during the shutter checks motion blur the same way, as do a moving camera and moving
@@ -57,6 +58,17 @@ Scene features_box() {
   spot.uv_scale_u = 0.5f / std::tan(0.45f);
   spot.uv_scale_v = -spot.uv_scale_u;
   s.add_point_light(Vec3(0.8f, -0.6f, -0.4f), Rgb(0.4f, 0.3f, 0.2f));
+  // A mapped emitter on the floor, facing up: 8 x 8 texels with one bright one (4 x 4 cells).
+  ImageTexture map;
+  map.name = "emission map";
+  map.width = map.height = 8;
+  for (int i = 0; i < 64; ++i) map.texels.push_back(i == 19 ? Rgb(6.f, 5.f, 3.f) : Rgb(0.1f + 0.01f * float(i % 8), 0.2f, 0.1f));
+  const int32_t emission_map = int32_t(s.add_texture(std::move(map)));
+  const size_t first_light = s.lights.size();
+  s.add_quad(Vec3(-1.f, 0.3f, -1.26f), Vec3(-0.5f, 0.3f, -1.26f), Vec3(-0.5f, 0.8f, -1.26f), Vec3(-1.f, 0.8f, -1.26f),
+             s.add_material(make_diffuse(Rgb(0.f))), Rgb(1.f));
+  s.uvs.insert(s.uvs.end(), {Point2{0, 0}, Point2{1, 0}, Point2{1, 1}, Point2{1, 1}, Point2{0, 1}, Point2{0, 0}});
+  for (size_t i = first_light; i < s.lights.size(); ++i) s.lights[i].texture = emission_map;
   s.light_selection = LightSelection::bvh;  // the box alone selects uniformly, as SmallVCM does
   s.finalize();
   return s;
@@ -76,6 +88,7 @@ TEST(CudaFeatures, SceneHoldsEveryFeature) {
   EXPECT_TRUE(has_material(MaterialType::coated_conductor));
   EXPECT_TRUE(std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::projector; }));
   EXPECT_TRUE(std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.type == LightType::spot && l.texture >= 0; }));
+  EXPECT_TRUE(std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.emission_grid > 0; }));
   const testing::Rendered r = testing::render_integrator(scene, testing::default_config("pt", testing::test_seed(10)), 2);
   double sum = 0.0;
   for (const Rgb& p : r.mean.pixels) sum += double(p.r) + double(p.g) + double(p.b);
