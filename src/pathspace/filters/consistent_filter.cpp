@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "pathspace/filters/vertex_buffer.h"
+#include "pathspace/materials/bsdf_layers.h"
 #include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
@@ -69,8 +70,9 @@ size_t ConsistentFilter::batch_paths(int records_per_path) const {
 }
 
 float ConsistentFilter::initial_radius(const VertexBuffer& b, size_t i) const {
-  if (settings_.radius > 0.f) return settings_.radius;
-  return r0_per_distance_ * (b.prefix_distance[i] + length(b.position[i] - b.previous_position[i]));
+  const float scale = b.layer[i] == kLayerMedium ? settings_.medium_radius_scale : 1.f;
+  if (settings_.radius > 0.f) return settings_.radius * scale;
+  return r0_per_distance_ * (b.prefix_distance[i] + length(b.position[i] - b.previous_position[i])) * scale;
 }
 
 void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {

@@ -15,6 +15,10 @@ OptionTable<ConsistentFilterSettings> consistent_options() {
   t.number("psf-radius-pixels", &S::radius_pixels, 0.01, 1000.0,
            "r0 from the solid angle of K x K pixels at the length of the camera path to the vertex", "sec. 2.2");
   t.number("psf-radius", &S::radius, 0.0, 1e30, "r0 in scene units for every vertex instead (0: from --psf-radius-pixels)", "eq. 2");
+  t.number("psf-medium-radius-scale", &S::medium_radius_scale, 1.0, 1000.0,
+           "r0 of vertices in participating media, in multiples of a surface vertex's (a ball around a point of a volume "
+           "holds fewer vertices than around a point of a surface)",
+           "sec. 3; docs/media.md");
   t.choice("psf-weights", &S::weights,
            std::vector<std::pair<std::string, uint32_t>>{{"normal,albedo,visibility", kWeightNormal | kWeightAlbedo | kWeightVisibility},
                                                          {"normal,albedo", kWeightNormal | kWeightAlbedo},
