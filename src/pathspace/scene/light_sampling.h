@@ -60,13 +60,18 @@ PS_INLINE float triangle_emitter_pdf_a(const SceneView& scene, const Light& l, c
   return emission_cells_density(scene.emission_cells + l.emission_cells, l.emission_grid, b) / area;
 }
 
-// Where sample_light puts light l's point for the numbers u when that point does not depend on the
-// reference point (area triangles, point, spot, projector): the same u then gives the same point from
-// anywhere (equiangular sampling, integrators/pt/pt_kernel.h, picks its distance towards it first).
-// False for the other lights.
-PS_INLINE bool light_point_for(const SceneView& scene, const Light& l, float time, Point2 u, Vec3* p) {
+// The point equiangular sampling (integrators/pt/pt_kernel.h) aims a segment's distance at, for
+// light l and the numbers u of its light sample: where sample_light puts the point when that does not
+// depend on the reference point (area triangles; point, spot, projector), so the same u gives the
+// same point from anywhere; a sphere's centre, whose samples do depend on it. False for distant and
+// environment lights (no point to aim at).
+PS_INLINE bool equiangular_anchor(const SceneView& scene, const Light& l, float time, Point2 u, Vec3* p) {
   if (is_point_light(l)) {
     *p = light_position(l, time);
+    return true;
+  }
+  if (l.type == LightType::area_sphere) {
+    *p = scene.spheres[l.shape].center;
     return true;
   }
   if (l.type != LightType::area_triangle) return false;
@@ -75,6 +80,16 @@ PS_INLINE bool light_point_for(const SceneView& scene, const Light& l, float tim
   const Point2 b = sample_triangle_emitter(scene, l, u, &density_times_area);
   *p = tv.p0 * b.x + tv.p1 * b.y + tv.p2 * (1.f - b.x - b.y);
   return true;
+}
+
+// The same anchor known from the light sample sample_light made (its point `sampled`).
+PS_INLINE bool equiangular_anchor_of_sample(const SceneView& scene, const Light& l, const Vec3& sampled, Vec3* p) {
+  if (l.type == LightType::area_sphere) {
+    *p = scene.spheres[l.shape].center;
+    return true;
+  }
+  *p = sampled;
+  return is_point_light(l) || l.type == LightType::area_triangle;
 }
 
 namespace detail {

@@ -390,22 +390,26 @@ PS_INLINE bool equiangular_applies(const SceneView& scene, const PtSettings& set
 }
 
 // The density with which the equiangular technique of segment `ray` (up to tmax) picks light li and
-// the distance t, given the light's point `y`: the light's probability in the scene's selection (by
-// power, or uniform: the same anywhere along the segment, and no light tree to walk) times the
-// equiangular density; 0 for lights whose points depend on where they are seen from.
-PS_INLINE float equiangular_light_density(const SceneView& scene, const Ray& ray, float tmax, uint32_t li, const Vec3& y, float t) {
-  const Light& light = scene.lights[li];
-  if (!is_point_light(light) && light.type != LightType::area_triangle) return 0.f;
-  return scene.light_selection.probability(li) * equiangular_pdf(equiangular_frame(ray.o, ray.d, ray.tmin, tmax, y), t);
+// the distance t, given the light sample's point `sampled`: the light's probability in the scene's
+// selection (by power, or uniform: the same anywhere along the segment, and no light tree to walk)
+// times the equiangular density around the light's anchor (scene/light_sampling.h); 0 for distant
+// and environment lights.
+PS_INLINE float equiangular_light_density(const SceneView& scene, const Ray& ray, float tmax, uint32_t li, const Vec3& sampled,
+                                          float t) {
+  Vec3 anchor;
+  if (!equiangular_anchor_of_sample(scene, scene.lights[li], sampled, &anchor)) return 0.f;
+  return scene.light_selection.probability(li) * equiangular_pdf(equiangular_frame(ray.o, ray.d, ray.tmin, tmax, anchor), t);
 }
 
 // Equiangular sampling (media/equiangular.h; Kulla and Fajardo 2012): a light (by the scene's
-// selection distribution) and a point on it, then a distance along the segment with density proportional to 1 / distance^2 from that point, and
-// the single scattering there towards it (a shadow ray through the media). Its MIS weight shares the
-// light sample's part of the distance-sampled vertex's weight (pt_on_medium) with that vertex's light
-// sample: the balance (or power) of the two distance densities, the light's point being the same
-// function of the numbers for both. Its numbers come from the path's medium stream. The estimate
-// goes where the path's radiance goes (the prefix, or the owning selected vertex's `after`).
+// selection distribution) and its anchor (the point its light sample will take, or a sphere's
+// centre), then a distance along the segment with density proportional to 1 / distance^2 from the
+// anchor, and there a light sample with the same numbers as the anchor's and the single scattering
+// towards it (a shadow ray through the media). Its MIS weight shares the light sample's part of the
+// distance-sampled vertex's weight (pt_on_medium) with that vertex's light sample: the balance (or
+// power) of the two distance densities, the light sample's own density being a factor of both. Its
+// numbers come from the path's medium stream. The estimate goes where the path's radiance goes (the
+// prefix, or the owning selected vertex's `after`).
 // `collide`: the segment's scattering distance is drawn by the scatter branch (camera splits).
 template <typename Tracer>
 PS_HD void pt_equiangular_light(const SceneView& scene, const Tracer& tracer, const PtSettings& settings, float tmax,
@@ -418,9 +422,9 @@ PS_HD void pt_equiangular_light(const SceneView& scene, const Tracer& tracer, co
   float select_power;
   const uint32_t li = scene.light_selection.sample(u_select, &select_power);
   const Light& light = scene.lights[li];
-  Vec3 y;
-  if (!light_point_for(scene, light, ray.time, ul, &y)) return;
-  const EquiangularFrame frame = equiangular_frame(ray.o, ray.d, ray.tmin, tmax, y);
+  Vec3 anchor;
+  if (!equiangular_anchor(scene, light, ray.time, ul, &anchor)) return;
+  const EquiangularFrame frame = equiangular_frame(ray.o, ray.d, ray.tmin, tmax, anchor);
   if (!frame.valid()) return;
   float pdf_t;
   const float t = sample_equiangular(frame, u_t, ray.tmin, tmax, &pdf_t);
