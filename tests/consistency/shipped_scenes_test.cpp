@@ -1,6 +1,6 @@
 // The shipped scenes' forms render the same image (docs/scene-files.md, "Shipped test scenes"):
 // independent path-traced renders of the pbrt-v4, Mitsuba 3 and OBJ forms (the fog room, with
-// participating media, has no OBJ form) at 32x32 pass the
+// participating media, and the fog lamp have no OBJ form) at 32x32 pass the
 // per-pixel z-test against each other. The textured room's OBJ form has no environment light (OBJ
 // cannot express one), so it is compared with the pbrt form with its environment removed.
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@ namespace pathspace {
 namespace {
 
 constexpr int kSize = 32;
-constexpr int kComparisons = 5;
+constexpr int kComparisons = 6;
 const double kAlphaImage = testing::sidak(0.01, kComparisons);
 
 testing::Rendered render(const Scene& scene, uint64_t seed, uint32_t passes, const std::string& integrator = "pt") {
@@ -44,6 +44,12 @@ TEST(ShippedScenes, FogRoomFormsRenderTheSameImage) {
   const uint32_t passes = 1024;
   expect_same_image(render(load("fog-room", "scene.pbrt"), 1, passes), render(load("fog-room", "scene.xml"), 2, passes),
                     "fog-room pbrt vs Mitsuba", kAlphaImage, "pbrt", "xml");
+}
+
+TEST(ShippedScenes, FogLampFormsRenderTheSameImage) {
+  const uint32_t passes = 512;
+  expect_same_image(render(load("fog-lamp", "scene.pbrt"), 1, passes), render(load("fog-lamp", "scene.xml"), 2, passes),
+                    "fog-lamp pbrt vs Mitsuba", kAlphaImage, "pbrt", "xml");
 }
 
 TEST(ShippedScenes, TexturedRoomFormsRenderTheSameImage) {

@@ -20,7 +20,8 @@ std::vector<ShippedScene> shipped_scenes() {
   room.obj_camera.camera_up = Vec3(0.f, 1.f, 0.f);
   room.obj_camera.fov_degrees = 65.f;
   const ShippedScene fog{"fog-room", {"scene.pbrt", "scene.xml"}, {}};  // media: no OBJ form
-  return {caustic, room, fog};
+  const ShippedScene lamp{"fog-lamp", {"scene.pbrt", "scene.xml"}, {}};
+  return {caustic, room, fog, lamp};
 }
 
 const ShippedScene& shipped_scene(const std::string& name) {
