@@ -1,7 +1,8 @@
 // Next-event estimation for every light type: sample a direction towards the light, its solid-angle
 // pdf (for MIS when a BSDF-sampled ray hits an emitter), and emitted radiance.
-// Triangles: uniform area sampling, or by an emission map's brightness (lights/emission_cells.h). Spheres: uniform cone of directions from outside, uniform area
-// from inside (the only choice for the "inside of a sphere" test scenes).
+// Triangles: uniform area sampling, or by an emission map's brightness (lights/emission_cells.h).
+// Spheres: uniform cone of directions from outside, uniform area from inside (the only choice for
+// the "inside of a sphere" test scenes).
 #pragma once
 
 #include "pathspace/geometry/interaction.h"

@@ -378,9 +378,10 @@ struct PtMediumSegment {
 };
 
 // Whether the path's segment in its medium gets an equiangular light sample: one of its first
-// PtSettings::equiangular_segments, in a homogeneous medium that scatters, with next event estimation, where a vertex on it could still sample a light (not
-// past the path's length limit; not when the path ends at its selected vertex for a filter's query,
-// whose answer stands for all the light scattered there).
+// PtSettings::equiangular_segments, in a homogeneous medium that scatters, with next event
+// estimation, where a vertex on it could still sample a light (not past the path's length limit;
+// not when the path ends at its selected vertex for a filter's query, whose answer stands for all
+// the light scattered there).
 PS_INLINE bool equiangular_applies(const SceneView& scene, const PtSettings& settings, const PtPathState& s, int max_segments,
                                    bool query_only) {
   if (s.segments > settings.equiangular_segments || !settings.nee || query_only || scene.num_lights == 0 || s.segments >= max_segments)
@@ -462,8 +463,8 @@ PS_HD void pt_equiangular_light(const SceneView& scene, const Tracer& tracer, co
 // the ray, as a pixel's footprint spreads, and its normal bin and the consistent filter's direction
 // test separate vertices by the axis of the phase lobe. Its roughness 1 - |g| keys strongly
 // anisotropic media by direction as glossy surfaces are.
-// With equiangular sampling on the segment (PtMediumSegment) the light sample's MIS weight against the
-// phase function is shared with the segment's equiangular light sample (pt_equiangular_light).
+// With equiangular sampling on the segment (PtMediumSegment) the light sample's MIS weight against
+// the phase function is shared with the segment's equiangular light sample (pt_equiangular_light).
 template <typename Tracer>
 PS_HD PtNext pt_on_medium(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, const PtSettings& settings,
                           float t, const PtMediumSegment& segment, PathCounters* counters, PtPathState* s,
