@@ -55,21 +55,29 @@ PS_INLINE int pick_channel(const Rgb& shares, float u) {
   return u < shares.r + shares.g ? 1 : 2;
 }
 
-// The density of a collision at distance t (from the segment's start) of a segment d long: the
-// mixture of the channels' exponentials (free flight), or of their exponentials truncated to [0, d)
-// (kCollide, the scatter branch). 0 where nothing scatters.
+// The probability that a channel of extinction sigma collides before d (1 for an infinite d).
+PS_INLINE float collision_mass(float sigma, float d) { return !(sigma > 0.f) ? 0.f : isinf(d) ? 1.f : -expm1f(-sigma * d); }
+
+// The density of a collision where the transmittance is tr, on a segment d long: the mixture of the
+// channels' exponentials (free flight), or of their exponentials truncated to [0, d) (kCollide, the
+// scatter branch). The samplers below and scatter_density share it, so MIS sees their own density.
 template <bool kCollide>
-PS_INLINE float homogeneous_collision_density(const Medium& m, float t, float d, const Rgb& shares) {
-  const Rgb st = m.sigma_t;
-  if (is_black(m.albedo) || !(t < d)) return 0.f;
-  const Rgb tr = beer_lambert(st, t);
+PS_INLINE float mixture_density(const Rgb& st, const Rgb& tr, float d, const Rgb& shares) {
   if (!kCollide) return mix(shares, st * tr);
   float density = 0.f;
   for (int k = 0; k < 3; ++k) {
-    const float mass = !(st[k] > 0.f) ? 0.f : isinf(d) ? 1.f : -expm1f(-st[k] * d);
+    const float mass = collision_mass(st[k], d);
     if (mass > 0.f) density += shares[k] * st[k] * tr[k] / mass;
   }
   return density;
+}
+
+// The density of a collision at distance t (from the segment's start) of a segment d long; 0 where
+// nothing scatters.
+template <bool kCollide>
+PS_INLINE float homogeneous_collision_density(const Medium& m, float t, float d, const Rgb& shares) {
+  if (is_black(m.albedo) || !(t < d)) return 0.f;
+  return mixture_density<kCollide>(m.sigma_t, beer_lambert(m.sigma_t, t), d, shares);
 }
 
 PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& shares, Pcg32& rng) {
@@ -85,7 +93,7 @@ PS_INLINE FreeFlight homogeneous_flight(const Medium& m, float tmax, const Rgb& 
   const float t = st[c] > 0.f ? exponential_step(st[c], u) : kInfinity;
   if (t < tmax) {
     const Rgb tr = beer_lambert(st, t);
-    const float density = mix(shares, st * tr);
+    const float density = mixture_density<false>(st, tr, tmax, shares);
     f.event = MediumEvent::scattered;
     f.t = t;
     f.weight = m.albedo * st * tr / density;
@@ -165,15 +173,12 @@ PS_INLINE FreeFlight homogeneous_collision(const Medium& m, float d, const Rgb& 
   const int c = pick_channel(shares, rng.next_float());
   const float u = rng.next_float();
   if (is_black(m.albedo)) return f;
-  Rgb mass;  // of each channel's exponential before d
-  for (int k = 0; k < 3; ++k) mass[k] = !(st[k] > 0.f) ? 0.f : isinf(d) ? 1.f : -expm1f(-st[k] * d);
-  if (!(mass[c] > 0.f)) return f;
-  const float t = -log1pf(-u * mass[c]) / st[c];
+  const float mass = collision_mass(st[c], d);
+  if (!(mass > 0.f)) return f;
+  const float t = -log1pf(-u * mass) / st[c];
   if (!(t < d)) return f;
   const Rgb tr = beer_lambert(st, t);
-  float density = 0.f;
-  for (int k = 0; k < 3; ++k)
-    if (mass[k] > 0.f) density += shares[k] * st[k] * tr[k] / mass[k];
+  const float density = mixture_density<true>(st, tr, d, shares);
   f.event = MediumEvent::scattered;
   f.t = t;
   f.weight = m.albedo * st * tr / density;
