@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pathspace/geometry/surface_attributes.h"
 #include "pathspace/lights/emission_cells.h"
-#include "pathspace/scene/texture.h"
 
 namespace pathspace {
 namespace {
@@ -30,15 +28,10 @@ std::vector<float> cell_weights(const Triangle& tri, const Point2* uvs, const Te
   std::vector<float> w(emission_cell_count(n), 0.f);
   for (uint32_t cell = 0; cell < w.size(); ++cell) {
     if (!emission_cell_inside(n, cell)) continue;
-    const Point2 c0 = emission_cell_corner(n, cell, 0), c1 = emission_cell_corner(n, cell, 1), c2 = emission_cell_corner(n, cell, 2);
     double sum = 0.0;
-    for (int y = 0; y < kLookupSide; ++y)
-      for (int x = 0; x < kLookupSide; ++x) {
-        const Point2 s = square_to_triangle_barycentric({(float(x) + 0.5f) / kLookupSide, (float(y) + 0.5f) / kLookupSide});
-        const float s2 = 1.f - s.x - s.y;
-        const float a = (c0.x * s.x + c1.x * s.y + c2.x * s2) / float(n), c = (c0.y * s.x + c1.y * s.y + c2.y * s2) / float(n);
-        sum += luminance(value * texture_lookup(map, triangle_uv(tri, uvs, c, 1.f - a - c)));
-      }
+    for_each_map_lookup(tri, uvs, map, emission_cell_corner(n, cell, 0), emission_cell_corner(n, cell, 1),
+                        emission_cell_corner(n, cell, 2), float(n), kLookupSide,
+                        [&](const Rgb& texel) { sum += luminance(value * texel); });
     w[cell] = float(std::max(0.0, sum) / (kLookupSide * kLookupSide));
   }
   return w;

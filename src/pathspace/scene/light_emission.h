@@ -72,7 +72,7 @@ PS_INLINE bool sample_emission(const SceneView& scene, const Light& l, float tim
         const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
         const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
         const Point2 b = sample_triangle_emitter(scene, l, u_pos, &density_times_area);
-        p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
+        p = triangle_emitter_point(tv, b);
         n = triangle_normal(p0, p1, p2);
         area = triangle_area(p0, p1, p2);
         e->uv = emission_map_uv(scene, l, b);

@@ -52,6 +52,12 @@ PS_INLINE Point2 sample_triangle_emitter(const SceneView& scene, const Light& l,
   return sample_emission_cells(scene.emission_cells + l.emission_cells, l.emission_grid, u, density_times_area);
 }
 
+// The point of triangle tv at barycentrics b as sample_triangle_emitter gives them (b.x of p0, b.y of
+// p1): light samples, light paths and equiangular anchors all place it by this one expression.
+PS_INLINE Vec3 triangle_emitter_point(const TriangleVertices& tv, Point2 b) {
+  return tv.p0 * b.x + tv.p1 * b.y + tv.p2 * (1.f - b.x - b.y);
+}
+
 // The area density with which sample_triangle_emitter lands at p on the light's triangle tv.
 PS_INLINE float triangle_emitter_pdf_a(const SceneView& scene, const Light& l, const TriangleVertices& tv, const Vec3& p) {
   const float area = triangle_area(tv.p0, tv.p1, tv.p2);
@@ -79,7 +85,7 @@ PS_INLINE bool equiangular_anchor(const SceneView& scene, const Light& l, float 
   const TriangleVertices tv = triangle_at(scene, scene.triangles[l.shape], time);
   float density_times_area;
   const Point2 b = sample_triangle_emitter(scene, l, u, &density_times_area);
-  *p = tv.p0 * b.x + tv.p1 * b.y + tv.p2 * (1.f - b.x - b.y);
+  *p = triangle_emitter_point(tv, b);
   return true;
 }
 
@@ -110,7 +116,7 @@ PS_INLINE bool sample_light(const SceneView& scene, const Light& l, const Vec3& 
       const Vec3 &p0 = tv.p0, &p1 = tv.p1, &p2 = tv.p2;
       float density_times_area;
       const Point2 b = sample_triangle_emitter(scene, l, u, &density_times_area);
-      const Vec3 p = p0 * b.x + p1 * b.y + p2 * (1.f - b.x - b.y);
+      const Vec3 p = triangle_emitter_point(tv, b);
       const Vec3 n = triangle_normal(p0, p1, p2);
       const Vec3 d = p - ref;
       const float dist = length(d);

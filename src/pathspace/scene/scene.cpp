@@ -177,13 +177,11 @@ float imaged_point_light_power(const Light& l, const std::vector<ImageTexture>& 
 // density: what its texture makes of the triangle's power. It weights light selection only.
 Rgb triangle_texture_mean(const ImageTexture& texture, const Triangle& tri, const std::vector<Point2>& uvs) {
   constexpr int kSide = 8;
-  const TextureView view = texture.view();
+  const bool has_uvs = uvs.size() > tri.v[0] && uvs.size() > tri.v[1] && uvs.size() > tri.v[2];
   Rgb sum;
-  for (int j = 0; j < kSide; ++j)
-    for (int i = 0; i < kSide; ++i) {
-      const Point2 b = square_to_triangle_barycentric({(float(i) + 0.5f) / kSide, (float(j) + 0.5f) / kSide});
-      sum += texture_lookup(view, triangle_uv(tri, uvs.size() > tri.v[0] && uvs.size() > tri.v[1] && uvs.size() > tri.v[2] ? uvs.data() : nullptr, b.y, 1.f - b.x - b.y));
-    }
+  // The whole triangle: corners (1, 0), (0, 1), (0, 0) in barycentrics.
+  for_each_map_lookup(tri, has_uvs ? uvs.data() : nullptr, texture.view(), Point2{1.f, 0.f}, Point2{0.f, 1.f}, Point2{0.f, 0.f},
+                      1.f, kSide, [&](const Rgb& texel) { sum += texel; });
   return sum * (1.f / float(kSide * kSide));
 }
 
