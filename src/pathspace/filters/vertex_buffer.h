@@ -1,7 +1,7 @@
 // VertexBuffer: the selected vertices of one sample pass in structure-of-arrays form (Binder et al.
-// 2021, sec. 3: "the first phase generates paths and stores all necessary information"). Path p owns
-// the record slots [p * records_per_path, p * records_per_path + count[p]); each path writes only its
-// own slots, so filling is race-free and the layout is independent of the thread schedule.
+// 2021, sec. 3: "the first phase generates paths and stores all necessary information"). Record r of
+// path p is slot r * paths + p, r < count[p] (VertexBufferView::slot); each path writes only its own
+// slots, so filling is race-free and the layout is independent of the thread schedule.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +19,7 @@ class VertexBuffer {
   void resize(size_t paths, int records_per_path);
   size_t paths() const { return prefix.size(); }
   int records_per_path() const { return records_per_path_; }
-  size_t slot(size_t path, int record) const { return path * size_t(records_per_path_) + size_t(record); }
+  size_t slot(size_t path, int record) const { return size_t(record) * paths() + path; }
   size_t total_records() const;  // valid records (sum of count)
 
   // Stores one path's sample (drops records beyond records_per_path; the caller sizes it right):

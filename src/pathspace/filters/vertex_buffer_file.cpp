@@ -11,7 +11,7 @@ namespace pathspace {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'S', 'V', 'B', 'U', 'F', '\r', '\n'};  // \r\n: a text-mode copy breaks it
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: record r of path p in slot r * paths + p (was p * records + r)
 // A batch never has more record slots than the filter's 32-bit slot indices allow.
 constexpr uint64_t kMaxSlots = uint64_t(1) << 31;
 

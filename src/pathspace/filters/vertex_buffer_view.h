@@ -1,8 +1,12 @@
 // VertexBufferView: raw pointers to the arrays of a VertexBuffer (host) or of a DeviceVertexBuffer
 // (filters/cuda_vertex_buffer.h), so that the same PS_HD code stores and reads the selected vertices of
 // a pass on the CPU and on the GPU (Binder et al. 2021, sec. 3: the first phase stores the vertices,
-// the filter reads them). Field names are VertexBuffer's. Path p owns the record slots
-// [p * records_per_path, p * records_per_path + count[p]).
+// the filter reads them). Field names are VertexBuffer's. Record r of path p is slot r * paths + p
+// (r < count[p]): the records of one rank lie together, so the first records of all paths, which
+// nearly every path has, are one dense block, and the rarer ones (camera-side branches, a second
+// layer) fill the blocks behind it sparsely. With the path's records side by side instead, a path
+// through no glass left 3 of its 4 branch slots empty between every two paths' records, and each
+// array walk read 4x the cache lines (docs/results/one-path-per-pixel.md).
 #pragma once
 
 #include <cstddef>
@@ -24,7 +28,11 @@ struct VertexBufferView {
 #undef PATHSPACE_VIEW_SLOT_FIELD
 
   PS_HD size_t slots() const { return paths * size_t(records_per_path); }
-  PS_HD size_t slot(size_t path, int record) const { return path * size_t(records_per_path) + size_t(record); }
+  PS_HD size_t slot(size_t path, int record) const { return size_t(record) * paths + path; }
+  // The record's number in path order (path * records_per_path + record), not its slot: what a random
+  // stream per record is keyed by (the hashed filter's jitter), so that it does not depend on the layout.
+  PS_HD size_t record_stream(size_t path, int record) const { return path * size_t(records_per_path) + size_t(record); }
+  PS_HD size_t record_stream(size_t slot) const { return record_stream(slot % paths, int(slot / paths)); }
 
   // Stores one path's sample (drops records beyond records_per_path; the caller sizes it right).
   PS_HD void store(size_t path, uint32_t pixel_index, const PathSample& s) const {

@@ -75,7 +75,7 @@ __device__ inline size_t thread_index() { return size_t(blockIdx.x) * blockDim.x
 
 // Whether slot i holds a record of its path.
 __device__ inline bool valid_slot(const VertexBufferView& b, size_t i) {
-  return i < b.slots() && int(i % size_t(b.records_per_path)) < int(b.count[i / size_t(b.records_per_path)]);
+  return i < b.slots() && int(i / b.paths) < int(b.count[i % b.paths]);  // record i / paths of path i % paths
 }
 
 inline unsigned blocks_for(size_t n) { return unsigned((n + kBlock - 1) / kBlock); }

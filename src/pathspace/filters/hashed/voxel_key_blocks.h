@@ -29,7 +29,7 @@ class VoxelKeyBlocks {
     // (VertexSelection::camera_splits) most of a path's slots are empty.
     while (n < kVoxelKeyBatchSize && path_ < end_) {
       const size_t i = b_.slot(path_, record_);
-      batch_.set_input(n, key_input(b_, i), jitter_seed(pass_hash_, i));
+      batch_.set_input(n, key_input(b_, i), jitter_seed(pass_hash_, b_.record_stream(path_, record_)));
       slot_[n] = i;
       const int count = b_.count[path_];
       n += record_ < count ? 1 : 0;
