@@ -215,7 +215,13 @@ TEST(VertexBufferFile, RoundTrips) {
   EXPECT_EQ(g.buffer.records_per_path(), f.buffer.records_per_path());
   EXPECT_EQ(g.buffer.count, f.buffer.count);
   EXPECT_EQ(g.buffer.total_records(), f.buffer.total_records());
-  EXPECT_EQ(std::memcmp(g.buffer.position.data(), f.buffer.position.data(), f.buffer.position.size() * sizeof(Vec3)), 0);
+  // The records, bit for bit (slots that hold none are not part of the buffer's contents).
+  for (size_t path = 0; path < f.buffer.paths(); ++path)
+    for (int r = 0; r < f.buffer.count[path]; ++r) {
+      const size_t i = f.buffer.slot(path, r);
+      ASSERT_EQ(std::memcmp(&g.buffer.position[i], &f.buffer.position[i], sizeof(Vec3)), 0) << path << " " << r;
+      ASSERT_EQ(std::memcmp(&g.buffer.contribution[i], &f.buffer.contribution[i], sizeof(Rgb)), 0) << path << " " << r;
+    }
   EXPECT_EQ(std::memcmp(g.filtered.data(), f.filtered.data(), f.filtered.size() * sizeof(Rgb)), 0);
   EXPECT_TRUE(g.settings.neighbour_search);
   EXPECT_EQ(g.settings.key.pixel_angle, 0.25f);

@@ -82,7 +82,7 @@ void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, st
     pass_start_stats_ = stats_;
     pass_paths_ = 0;
   }
-  *filtered = buffer.contribution;  // every slot keeps its own value unless averaged below
+  buffer.copy_contributions(filtered);  // every record keeps its own value unless averaged below
   const size_t paths = buffer.paths();
   uint32_t max_neighbours = 0;
   uint64_t vertices = 0;

@@ -8,7 +8,7 @@
 namespace pathspace {
 
 void PassthroughFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
-  *filtered = buffer.contribution;
+  buffer.copy_contributions(filtered);
 }
 
 void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,

@@ -1,6 +1,9 @@
 #include "pathspace/filters/vertex_buffer.h"
 
+#include <algorithm>
 #include <numeric>
+
+#include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
 
@@ -16,8 +19,11 @@ void VertexBuffer::resize(size_t paths, int records_per_path) {
     records_per_path_ = records_per_path;
   }
   const size_t slots = paths * size_t(records_per_path);
+  const bool zero_first_block = prefix.size() != paths;  // the first block moved or grew
 #define PATHSPACE_RESIZE_PATH_FIELD(T, name, what) name.resize(paths);
-#define PATHSPACE_RESIZE_SLOT_FIELD(T, name, member, what) name.resize(slots);
+#define PATHSPACE_RESIZE_SLOT_FIELD(T, name, member, what) \
+  name.resize(slots);                                       \
+  if (zero_first_block) std::fill_n(name.data(), std::min(paths, slots), T{});
   PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_RESIZE_PATH_FIELD)
   PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_RESIZE_SLOT_FIELD)
 #undef PATHSPACE_RESIZE_PATH_FIELD
@@ -45,6 +51,14 @@ VertexBufferView VertexBuffer::view() {
 #undef PATHSPACE_VIEW_OF_PATH_FIELD
 #undef PATHSPACE_VIEW_OF_SLOT_FIELD
   return v;
+}
+
+void VertexBuffer::copy_contributions(std::vector<Rgb>* out) const {
+  out->assign(contribution.size(), Rgb());
+  parallel_for(paths(), 4096, [&](size_t begin, size_t end) {
+    for (size_t path = begin; path < end; ++path)
+      for (int r = 0; r < count[path]; ++r) (*out)[slot(path, r)] = contribution[slot(path, r)];
+  });
 }
 
 FilterVertex VertexBuffer::record(size_t i) const {

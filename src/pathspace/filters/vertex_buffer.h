@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pathspace/base/uninitialized_vector.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/filters/vertex_buffer_view.h"
 
@@ -15,7 +16,11 @@ namespace pathspace {
 class VertexBuffer {
  public:
   // Keeps the arrays' contents where the layout is unchanged (slots beyond a path's count are never
-  // read), so a buffer resized for a smaller last batch and back costs no clearing pass.
+  // read), so a buffer resized for a smaller last batch and back costs no clearing pass. New slots
+  // are left unwritten (UninitializedVector): a path writes only its records, and the blocks of
+  // the rarer records (camera-side branches, second layers) are mostly never touched, so their
+  // memory is never paged in. Only the first block is zeroed, since readers that walk every path
+  // read its first slot whether or not it holds a record (filters/hashed/voxel_key_blocks.h).
   void resize(size_t paths, int records_per_path);
   size_t paths() const { return prefix.size(); }
   int records_per_path() const { return records_per_path_; }
@@ -31,10 +36,14 @@ class VertexBuffer {
   VertexBufferView view() const { return const_cast<VertexBuffer*>(this)->view(); }
   // The record in slot i as the kernel produced it.
   FilterVertex record(size_t i) const;
+  // out sized to every slot, each record's own contribution in its slot (what a filter hands on
+  // unfiltered); the other slots are zero.
+  void copy_contributions(std::vector<Rgb>* out) const;
 
-  // One vector per field of filters/vertex_fields.h: per path, then per record slot.
+  // One vector per field of filters/vertex_fields.h: per path, then per record slot (a slot holds
+  // whatever was last written there, or nothing, unless it is one of its path's count records).
 #define PATHSPACE_HOST_PATH_FIELD(T, name, what) std::vector<T> name;
-#define PATHSPACE_HOST_SLOT_FIELD(T, name, member, what) std::vector<T> name;
+#define PATHSPACE_HOST_SLOT_FIELD(T, name, member, what) UninitializedVector<T> name;
   PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_HOST_PATH_FIELD)
   PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_HOST_SLOT_FIELD)
 #undef PATHSPACE_HOST_PATH_FIELD

@@ -2,6 +2,8 @@
 
 #include <cstring>
 #include <fstream>
+#include <type_traits>
+#include <vector>
 
 #include "pathspace/base/error.h"
 #include "pathspace/base/regular_file.h"
@@ -24,8 +26,8 @@ class Writer {
   void put(const T& v) {
     out_.write(reinterpret_cast<const char*>(&v), sizeof v);
   }
-  template <typename T>
-  void put_array(const std::vector<T>& v) {
+  template <typename T, typename A>
+  void put_array(const std::vector<T, A>& v) {
     put(uint64_t(v.size() * sizeof(T)));
     out_.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(T)));
   }
@@ -59,8 +61,8 @@ class Reader {
     return b != 0;
   }
   // An array of `count` elements, whose stored byte count must match.
-  template <typename T>
-  void get_array(std::vector<T>* v, uint64_t count, const char* what) {
+  template <typename T, typename A>
+  void get_array(std::vector<T, A>* v, uint64_t count, const char* what) {
     const uint64_t bytes = get<uint64_t>(what);
     if (bytes != count * sizeof(T))
       fail(std::string("its ") + what + " array holds " + std::to_string(bytes) + " bytes, expected " +
@@ -115,8 +117,18 @@ void write_vertex_buffer_file(const std::string& path, const VertexBufferFile& f
   w.put(f.seed);
   w.put(f.pass);
   w.put(uint8_t(!f.filtered.empty()));
+  // Slots that hold no record are written as zeros: the buffer leaves them unwritten.
+  std::vector<uint8_t> holds(slots, 0);
+  for (size_t path = 0; path < b.paths(); ++path)
+    for (int r = 0; r < b.count[path]; ++r) holds[b.slot(path, r)] = 1;
+  const auto records_only = [&](const auto& field) {
+    std::vector<typename std::decay_t<decltype(field)>::value_type> out(field.size());
+    for (size_t i = 0; i < out.size(); ++i)
+      if (holds[i]) out[i] = field[i];
+    return out;
+  };
 #define PATHSPACE_PUT_PATH_FIELD(T, name, what) w.put_array(b.name);
-#define PATHSPACE_PUT_SLOT_FIELD(T, name, member, what) w.put_array(b.name);
+#define PATHSPACE_PUT_SLOT_FIELD(T, name, member, what) w.put_array(records_only(b.name));
   PATHSPACE_VERTEX_PATH_FIELDS(PATHSPACE_PUT_PATH_FIELD)
   PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_PUT_SLOT_FIELD)
 #undef PATHSPACE_PUT_PATH_FIELD
