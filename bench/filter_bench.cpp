@@ -53,7 +53,7 @@ const VertexSet& vertex_set(int kind) {
   HashedFilterSettings debug;
   debug.debug_images = true;  // for the count image below
   HashedFilter filter(debug, set->scene().camera, size_t(kWidth) * kHeight);
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   filter.filter(b, 0, 0, &filtered);
   const Image counts = filter.aov(FilterAov::count);
   double sum = 0, n = 0;
@@ -70,7 +70,7 @@ void BM_HashedFilter(benchmark::State& state) {
   HashedFilterSettings settings;
   settings.local_combining = state.range(2) != 0;
   HashedFilter filter(settings, set.scene().camera, size_t(kWidth) * kHeight);
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   uint32_t pass = 0;
   filter.filter(set.buffer(), 0, pass++, &filtered);  // warm-up: first touch of the per-vertex arrays
   filter.reset_stats();
@@ -201,7 +201,7 @@ void BM_ConsistentFilter(benchmark::State& state) {
   settings.alpha = 1e-3f;  // the radius stays within 0.3% over the timed passes (n grows with each)
   if (state.range(2) == 0) settings.weights = 0;
   ConsistentFilter filter(settings, set.scene().camera, size_t(kWidth) * kHeight);
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   uint32_t pass = 0;
   filter.filter(set.buffer(), 0, pass++, &filtered);  // warm-up: the grid's and scratch allocations
   const ConsistentFilterStats before = filter.stats();

@@ -43,7 +43,7 @@ void measure_hash_collisions(const VertexSet& set, const char* name, const HashT
       s.table_factor = cells_per_pixel;
       s.local_combining = false;  // every vertex probes the table
       HashedFilter filter(s, set.scene->camera, pixels_of(set));
-      std::vector<Rgb> filtered;
+      SlotValues filtered;
       filter.filter(set.buffer, 0, 0, &filtered);
       const HashedFilterStats& st = filter.stats();
       Record r;
@@ -66,7 +66,7 @@ void measure_filter_time(const VertexSet& set, const char* name, const HashTable
       s.key.psf_scale = scale;
       s.local_combining = combining;
       HashedFilter filter(s, set.scene->camera, pixels_of(set));
-      std::vector<Rgb> filtered;
+      SlotValues filtered;
       filter.filter(set.buffer, 0, 0, &filtered);  // warm-up
       std::vector<double> accumulate, lookup, total;
       for (int pass = 1; pass <= std::max(1, sweep.fig8_passes); ++pass) {

@@ -76,7 +76,7 @@ TEST_P(CudaHashedFilterTest, EqualsTheCpuFilterBitForBit) {
   gpu::CudaHashedFilter gpu_filter(c.settings, pb.scene->camera, pb.pixels);
   for (const uint32_t pass : {0u, 3u}) {
     HashedFilter cpu(c.settings, pb.scene->camera, pb.pixels);
-    std::vector<Rgb> expected;
+    SlotValues expected;
     cpu.filter(pb.buffer, 7, pass, &expected);
     gpu_filter.filter(device.view(), 7, pass, filtered_device.data());
     const std::vector<Rgb> got = filtered_device.download();

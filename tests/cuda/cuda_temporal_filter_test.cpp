@@ -115,7 +115,7 @@ TEST_P(CudaTemporalFilterTest, EqualsTheCpuFilterFrameByFrame) {
       cpu.begin_frame(frame.scene->camera);
       gpu_filter.begin_frame(frame.scene->camera);
     }
-    std::vector<Rgb> expected, got;
+    SlotValues expected, got;
     cpu.filter(frame.buffer, 100 + uint64_t(f), 0, &expected);
     gpu_filter.filter(frame.buffer, 100 + uint64_t(f), 0, &got);
     size_t differing = 0;
@@ -148,7 +148,7 @@ TEST_P(CudaTemporalFilterTest, CaseExercisesItsSteps) {
   uint64_t settled = 0;
   for (int f = 0; f < kFrames; ++f) {
     if (f > 0) cpu.begin_frame(frames[size_t(f)].scene->camera);
-    std::vector<Rgb> values;
+    SlotValues values;
     cpu.filter(frames[size_t(f)].buffer, 100 + uint64_t(f), 0, &values);
     settled = cpu.stats().settled_passes;
   }
@@ -177,7 +177,7 @@ TEST(CudaTemporalFilter, RestoredFilterContinuesBitForBit) {
   settings.temporal.mode = TemporalMode::integrate;
   settings.table_factor = 0.05f;
   gpu::CudaHashedFilter original(settings, frames[0].scene->camera, pixels);
-  std::vector<Rgb> values;
+  SlotValues values;
   for (int f = 0; f < 4; ++f) {
     if (f > 0) original.begin_frame(frames[size_t(f)].scene->camera);
     original.filter(frames[size_t(f)].buffer, 100 + uint64_t(f), 0, &values);
@@ -190,7 +190,7 @@ TEST(CudaTemporalFilter, RestoredFilterContinuesBitForBit) {
   for (int f = 4; f < kFrames; ++f) {
     original.begin_frame(frames[size_t(f)].scene->camera);
     restored.begin_frame(frames[size_t(f)].scene->camera);
-    std::vector<Rgb> expected, got;
+    SlotValues expected, got;
     original.filter(frames[size_t(f)].buffer, 100 + uint64_t(f), 0, &expected);
     restored.filter(frames[size_t(f)].buffer, 100 + uint64_t(f), 0, &got);
     size_t differing = 0;

@@ -32,7 +32,7 @@ class PhotonsOnlyFilter final : public PathSpaceFilter {
     n.caustics = caustics_;
     return n;
   }
-  void filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) override { buffer.copy_contributions(filtered); }
+  void filter(const VertexBuffer& buffer, uint64_t, uint32_t, SlotValues* filtered) override { buffer.copy_contributions(filtered); }
 
  private:
   CausticSettings caustics_;

@@ -82,15 +82,15 @@ bool similar(const FilterVertex& a, const FilterVertex& b, const ConsistentFilte
 
 bool similar(const VertexBuffer& b, size_t i, size_t j, const ConsistentFilterSettings& s) { return similar(b.record(i), b.record(j), s); }
 
-std::vector<Rgb> contributions(const VertexBuffer& b) {
-  std::vector<Rgb> v;
+SlotValues contributions(const VertexBuffer& b) {
+  SlotValues v;
   b.copy_contributions(&v);
   return v;
 }
 
 // Eq. 1 by brute force over each batch, eq. 2 with n = paths_before + paths up to the batch's end.
-std::vector<Rgb> brute_force(const VertexBuffer& b, const ConsistentFilterSettings& s, uint64_t paths_before) {
-  std::vector<Rgb> out = contributions(b);
+SlotValues brute_force(const VertexBuffer& b, const ConsistentFilterSettings& s, uint64_t paths_before) {
+  SlotValues out = contributions(b);
   // Batch budget 0 is "an eighth of the RAM": one batch for these sizes.
   const size_t per_batch = s.batch_memory_mb > 0.0
                                ? std::max<size_t>(1, size_t(s.batch_memory_mb * 1048576.0) / ConsistentFilter::bytes_per_record())
@@ -124,7 +124,7 @@ std::vector<Rgb> brute_force(const VertexBuffer& b, const ConsistentFilterSettin
   return out;
 }
 
-void expect_same(const VertexBuffer& b, const std::vector<Rgb>& got, const std::vector<Rgb>& want) {
+void expect_same(const VertexBuffer& b, const SlotValues& got, const SlotValues& want) {
   ASSERT_EQ(got.size(), want.size());
   int wrong = 0;
   for (size_t p = 0; p < b.paths(); ++p)
@@ -163,7 +163,7 @@ TEST_P(ConsistentAverages, EqualBruteForceOverThreePasses) {
   for (uint32_t pass = 0; pass < 3; ++pass) {
     SCOPED_TRACE("pass " + std::to_string(pass));
     const VertexBuffer b = make_buffer(kPixels, 100 + pass);
-    std::vector<Rgb> got;
+    SlotValues got;
     filter.filter(b, 0, pass, &got);
     filter.end_pass();
     expect_same(b, got, brute_force(b, s, paths));
@@ -199,7 +199,7 @@ TEST(ConsistentFilter, QueriesAverageTheFilteredBatchAroundPointsOutsideIt) {
     EXPECT_EQ(filter.needs().query_paths, 1);
     EXPECT_TRUE(filter.needs().visibility);
     const VertexBuffer data = make_buffer(kPixels, 21), queries = make_buffer(kPixels, 22);
-    std::vector<Rgb> filtered, values;
+    SlotValues filtered, values;
     std::vector<uint8_t> found;
     filter.filter(data, 0, 0, &filtered);
     filter.query(queries, &values, &found);
@@ -207,7 +207,7 @@ TEST(ConsistentFilter, QueriesAverageTheFilteredBatchAroundPointsOutsideIt) {
     // What the queries average: the contributions after iterations - 1 rounds of eq. 1.
     ConsistentFilterSettings before = s;
     before.iterations = iterations - 1;
-    const std::vector<Rgb> averaged = iterations > 1 ? brute_force(data, before, 0) : contributions(data);
+    const SlotValues averaged = iterations > 1 ? brute_force(data, before, 0) : contributions(data);
     const float r = float(double(s.radius) * std::pow(double(kPixels) / double(kPixels), double(s.alpha)));
     int checked = 0, empty = 0;
     for (size_t qp = 0; qp < queries.paths(); ++qp)
@@ -244,7 +244,7 @@ TEST(ConsistentFilter, SmallBudgetFiltersInSeveralBatches) {
   s.batch_memory_mb = 0.01;
   ConsistentFilter filter(s, scene.camera, kPixels);
   const VertexBuffer b = make_buffer(kPixels, 5);
-  std::vector<Rgb> got;
+  SlotValues got;
   filter.filter(b, 0, 0, &got);
   const size_t per_batch = size_t(0.01 * 1048576.0) / ConsistentFilter::bytes_per_record();
   EXPECT_GE(filter.stats().batches, b.total_records() / per_batch);
@@ -263,7 +263,7 @@ TEST(ConsistentFilter, ConstantIsAFixedPointForAnyRadiusAndWeights) {
         s.iterations = iterations;
         ConsistentFilter filter(s, scene.camera, kPixels);
         const VertexBuffer b = make_buffer(kPixels, 9, true);
-        std::vector<Rgb> got;
+        SlotValues got;
         filter.filter(b, 0, 0, &got);
         for (size_t p = 0; p < b.paths(); ++p)
           for (int r = 0; r < b.count[p]; ++r) {
@@ -279,7 +279,7 @@ TEST(ConsistentFilter, SwitchesOffWhenEveryBallHoldsOnlyItself) {
   s.radius = 1e-9f;
   ConsistentFilter filter(s, scene.camera, kPixels);
   const VertexBuffer b = make_buffer(kPixels, 11);
-  std::vector<Rgb> got;
+  SlotValues got;
   filter.filter(b, 0, 0, &got);
   filter.end_pass();
   EXPECT_EQ(filter.stats().max_neighbours_last, 1u);
@@ -296,7 +296,7 @@ TEST(ConsistentFilter, SavedStateContinuesTheRadiusSequence) {
   ConsistentFilterSettings s;
   s.radius = 0.06f;
   ConsistentFilter a(s, scene.camera, kPixels), b(s, scene.camera, kPixels);
-  std::vector<Rgb> got_a, got_b;
+  SlotValues got_a, got_b;
   a.filter(make_buffer(kPixels, 1), 0, 0, &got_a);
   StateWriter out;
   a.save_state(out);

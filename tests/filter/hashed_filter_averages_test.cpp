@@ -85,7 +85,7 @@ void expect_exact_averages(Fallback fallback, int records_per_path, int threads_
   const VertexBuffer b = make_buffer(20000, records_per_path, uint64_t(threads_seed), psf_scale > 10.f ? 0.5f : 0.f);
   const uint64_t seed = 42;
   const uint32_t pass = 3;
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   filter.filter(b, seed, pass, &filtered);
   ASSERT_EQ(filter.stats().probe_failures, 0u);
 
@@ -182,7 +182,7 @@ TEST(HashedFilterAverages, EachPassFindsATableHoldingNothingOfTheLast) {
     settings.max_probes = 1;
     settings.temporal.mode = mode;
     HashedFilter filter(settings, scene.camera, size_t(1) << 16);
-    std::vector<Rgb> filtered;
+    SlotValues filtered;
     for (uint32_t pass = 0; pass < 6; ++pass) {
       const VertexBuffer b = make_buffer(3000, 1, 100 + pass, 0.f);
       filter.filter(b, 42, pass, &filtered);

@@ -87,7 +87,8 @@ inline std::vector<FilterCase> filter_cases() {
 }
 
 // Whether the filtered values of every valid record slot are the same bits; *differing counts them.
-inline bool same_filtered_bits(const VertexBuffer& b, const std::vector<Rgb>& x, const std::vector<Rgb>& y, size_t* differing) {
+template <typename X, typename Y>  // std::vector<Rgb> or SlotValues
+bool same_filtered_bits(const VertexBuffer& b, const X& x, const Y& y, size_t* differing) {
   *differing = 0;
   for (size_t path = 0; path < b.paths(); ++path)
     for (int r = 0; r < b.count[path]; ++r) {

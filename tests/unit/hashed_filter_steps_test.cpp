@@ -31,7 +31,7 @@ constexpr int kWidth = 160, kHeight = 120;
 
 // The GPU filter's algorithm (filters/hashed/cuda_hashed_filter.cu) on the CPU: accumulate, settle, look up.
 struct StepsResult {
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   uint64_t failures = 0;
   bool settled = false;
 };
@@ -123,7 +123,7 @@ TEST_P(HashedFilterSteps, EqualTheCpuFilterBitForBit) {
   ASSERT_GT(pb.buffer.total_records(), 1000u);
   for (const uint32_t pass : {0u, 3u}) {
     HashedFilter cpu(c.settings, pb.scene->camera, pb.pixels);
-    std::vector<Rgb> expected;
+    SlotValues expected;
     cpu.filter(pb.buffer, 7, pass, &expected);
     const StepsResult steps = filter_with_steps(c.settings, pb, 7, pass);
     size_t differing = 0;
@@ -151,7 +151,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, HashedFilterSteps, ::testing::ValuesIn(testing::
 TEST(HashedFilterSteps, ResolveMatchesResolveFilteredPass) {
   const PassBuffer& pb = pass_buffer("cornell-box", 2);
   HashedFilter cpu(HashedFilterSettings{}, pb.scene->camera, pb.pixels);
-  std::vector<Rgb> filtered;
+  SlotValues filtered;
   cpu.filter(pb.buffer, 1, 0, &filtered);
   filtered[pb.buffer.slot(0, 0)] = Rgb(std::numeric_limits<float>::infinity());  // one dropped path
   Film film(kWidth, kHeight);

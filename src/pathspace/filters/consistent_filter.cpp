@@ -75,7 +75,7 @@ float ConsistentFilter::initial_radius(const VertexBuffer& b, size_t i) const {
   return r0_per_distance_ * (b.prefix_distance[i] + length(b.position[i] - b.previous_position[i])) * scale;
 }
 
-void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
+void ConsistentFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, SlotValues* filtered) {
   const auto start = std::chrono::steady_clock::now();
   if (!in_pass_) {
     in_pass_ = true;
@@ -164,7 +164,7 @@ bool ConsistentFilter::agree_round(const std::vector<uint64_t>& reports, int min
   return false;
 }
 
-void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, std::vector<uint8_t>* found) {
+void ConsistentFilter::query(const VertexBuffer& q, SlotValues* values, std::vector<uint8_t>* found) {
   const auto start = std::chrono::steady_clock::now();
   const size_t slots = q.paths() * size_t(q.records_per_path());
   values->assign(slots, Rgb());
@@ -202,7 +202,7 @@ void ConsistentFilter::query(const VertexBuffer& q, std::vector<Rgb>* values, st
 }
 
 void ConsistentFilter::filter_batch(const VertexBuffer& b, const std::vector<uint32_t>& slots, double radius_scale,
-                                    std::vector<Rgb>* filtered, uint32_t* max_neighbours) {
+                                    SlotValues* filtered, uint32_t* max_neighbours) {
   const size_t m = slots.size();
   if (m == 0) return;
   // Each vertex's radius and what the weights compare, gathered in batch order (the buffer's arrays

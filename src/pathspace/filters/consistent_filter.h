@@ -57,7 +57,7 @@ class ConsistentFilter final : public PathSpaceFilter {
   const char* name() const override { return "consistent"; }
   FilterNeeds needs() const override;
   size_t batch_paths(int records_per_path) const override;
-  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) override;
   void end_pass() override;
   void skip_pass(uint64_t paths) override;
   // A distributed render agrees on the switch-off (sec. 2.2) pass by pass, as one process takes it.
@@ -68,7 +68,7 @@ class ConsistentFilter final : public PathSpaceFilter {
   uint32_t frame_warm_up() const override { return UINT32_MAX; }  // Integrator::kAllFrames
   // A new frame: r0 follows the camera's pixel size; n of eq. 2 goes on counting.
   void begin_frame(const PerspectiveCamera& camera) override;
-  void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
+  void query(const VertexBuffer& queries, SlotValues* values, std::vector<uint8_t>* found) override;
   void statistics(Statistics& out) const override;
   void save_state(StateWriter& out) const override;
   void load_state(StateReader& in) override;
@@ -87,7 +87,7 @@ class ConsistentFilter final : public PathSpaceFilter {
   };
 
  private:
-  void filter_batch(const VertexBuffer& buffer, const std::vector<uint32_t>& slots, double radius_scale, std::vector<Rgb>* filtered,
+  void filter_batch(const VertexBuffer& buffer, const std::vector<uint32_t>& slots, double radius_scale, SlotValues* filtered,
                     uint32_t* max_neighbours);
   float initial_radius(const VertexBuffer& b, size_t slot) const;  // r0 (sec. 2.2)
 

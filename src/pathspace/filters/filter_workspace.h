@@ -14,9 +14,9 @@ namespace pathspace {
 
 struct FilterWorkspace {
   VertexBuffer paths;             // one batch of the pass
-  std::vector<Rgb> filtered;      // its filtered contributions, per record slot
+  SlotValues filtered;            // its filtered contributions, per record slot
   VertexBuffer queries;           // one batch of query-only paths
-  std::vector<Rgb> queried;       // their query results
+  SlotValues queried;             // their query results
   std::vector<uint8_t> found;     // and whether each query found data
   VertexBuffer probes;            // the previous frame's paths traced again (--temporal hybrid)
 };

@@ -7,11 +7,11 @@
 
 namespace pathspace {
 
-void PassthroughFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, std::vector<Rgb>* filtered) {
+void PassthroughFilter::filter(const VertexBuffer& buffer, uint64_t, uint32_t, SlotValues* filtered) {
   buffer.copy_contributions(filtered);
 }
 
-void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,
+void resolve_filtered_pass(const VertexBuffer& buffer, const SlotValues& filtered, Film& film,
                            PathCounters* counters, const std::vector<uint8_t>* found) {
   std::atomic<uint64_t> dropped{0};
   const VertexBufferView view = buffer.view();

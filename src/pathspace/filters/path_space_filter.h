@@ -49,7 +49,7 @@ class PathSpaceFilter {
   // filtered[slot] receives the filtered contribution of every valid record slot of `buffer`, one
   // batch of the pass (the whole pass when batch_paths() is 0). `pass` and `seed` make jitter a pure
   // function of the vertex's path (determinism).
-  virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) = 0;
+  virtual void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) = 0;
   // After the last batch of a pass.
   virtual void end_pass() {}
   // A pass of `paths` camera paths that another process of a distributed render filters
@@ -66,7 +66,7 @@ class PathSpaceFilter {
   // Queries of extra camera paths (FilterNeeds::query_paths) against the batch filtered last:
   // values[slot] receives the estimate at each valid record slot, found[slot] whether it had any
   // data to average (an empty query is not accumulated).
-  virtual void query(const VertexBuffer& /*queries*/, std::vector<Rgb>* /*values*/, std::vector<uint8_t>* /*found*/) {}
+  virtual void query(const VertexBuffer& /*queries*/, SlotValues* /*values*/, std::vector<uint8_t>* /*found*/) {}
   // Statistics accumulated over all passes so far, named "<filter>.<what>".
   virtual void statistics(Statistics&) const {}
   // Debug images of the last pass, when the filter's options asked for them.
@@ -95,14 +95,14 @@ class PathSpaceFilter {
 class PassthroughFilter final : public PathSpaceFilter {
  public:
   const char* name() const override { return "passthrough"; }
-  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) override;
 };
 
 // Adds every path of the pass to the film: prefix + sum_i throughput_i * filtered_i, summed in
 // record order exactly as PathSample::value(). Paths with a NaN/Inf result are dropped and counted.
 // With `found`, a path with a record whose slot is not found is left out of the film (a query path
 // whose query was empty).
-void resolve_filtered_pass(const VertexBuffer& buffer, const std::vector<Rgb>& filtered, Film& film,
+void resolve_filtered_pass(const VertexBuffer& buffer, const SlotValues& filtered, Film& film,
                            PathCounters* counters, const std::vector<uint8_t>* found = nullptr);
 
 }  // namespace pathspace

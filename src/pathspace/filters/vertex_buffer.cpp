@@ -53,8 +53,8 @@ VertexBufferView VertexBuffer::view() {
   return v;
 }
 
-void VertexBuffer::copy_contributions(std::vector<Rgb>* out) const {
-  out->assign(contribution.size(), Rgb());
+void VertexBuffer::copy_contributions(SlotValues* out) const {
+  out->resize(contribution.size());
   parallel_for(paths(), 4096, [&](size_t begin, size_t end) {
     for (size_t path = begin; path < end; ++path)
       for (int r = 0; r < count[path]; ++r) (*out)[slot(path, r)] = contribution[slot(path, r)];

@@ -13,6 +13,10 @@
 
 namespace pathspace {
 
+// One value per record slot, e.g. a filter's output: like the buffer's own slot arrays, the entries
+// of slots that hold no record are left unwritten (and unread).
+using SlotValues = UninitializedVector<Rgb>;
+
 class VertexBuffer {
  public:
   // Keeps the arrays' contents where the layout is unchanged (slots beyond a path's count are never
@@ -37,8 +41,8 @@ class VertexBuffer {
   // The record in slot i as the kernel produced it.
   FilterVertex record(size_t i) const;
   // out sized to every slot, each record's own contribution in its slot (what a filter hands on
-  // unfiltered); the other slots are zero.
-  void copy_contributions(std::vector<Rgb>* out) const;
+  // unfiltered).
+  void copy_contributions(SlotValues* out) const;
 
   // One vector per field of filters/vertex_fields.h: per path, then per record slot (a slot holds
   // whatever was last written there, or nothing, unless it is one of its path's count records).

@@ -133,7 +133,7 @@ void write_vertex_buffer_file(const std::string& path, const VertexBufferFile& f
   PATHSPACE_VERTEX_SLOT_FIELDS(PATHSPACE_PUT_SLOT_FIELD)
 #undef PATHSPACE_PUT_PATH_FIELD
 #undef PATHSPACE_PUT_SLOT_FIELD
-  if (!f.filtered.empty()) w.put_array(f.filtered);
+  if (!f.filtered.empty()) w.put_array(records_only(f.filtered));
   w.finish();
 }
 

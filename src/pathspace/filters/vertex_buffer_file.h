@@ -17,7 +17,7 @@ namespace pathspace {
 
 struct VertexBufferFile {
   VertexBuffer buffer;
-  std::vector<Rgb> filtered;      // per record slot: HashedFilter::filter's output (empty: none)
+  SlotValues filtered;      // per record slot: HashedFilter::filter's output (empty: none)
   HashedFilterSettings settings;  // key.pixel_angle is the camera's (2 tan_y / height)
   uint64_t pixels = 0;            // the table is sized for this many (table_factor * pixels cells)
   uint64_t seed = 0;

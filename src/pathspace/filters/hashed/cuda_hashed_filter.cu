@@ -364,7 +364,7 @@ void CudaHashedFilter::filter(const VertexBufferView& b, uint64_t seed, uint32_t
   run_hashed_pass(steps, settings_, seed, pass, &stats_);
 }
 
-void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
+void CudaHashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) {
   host_buffer_.upload(buffer);
   const VertexBufferView view = host_buffer_.view();
   host_filtered_.resize(view.slots());

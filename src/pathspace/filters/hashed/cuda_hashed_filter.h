@@ -49,7 +49,7 @@ class CudaHashedFilter final : public PathSpaceFilter {
   void filter(const VertexBufferView& device_buffer, uint64_t seed, uint32_t pass, Rgb* device_filtered,
               cudaStream_t stream = 0);
   // The same for a buffer in host memory: uploaded, filtered, the values downloaded.
-  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) override;
   // A new frame (sec. 3.4): the field of view may change, the image size may not.
   void begin_frame(const PerspectiveCamera& camera) override;
   uint32_t frame_warm_up() const override { return history_.size() ? kTemporalWarmUpFrames : 0; }

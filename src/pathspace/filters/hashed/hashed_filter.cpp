@@ -191,7 +191,7 @@ VoxelKey HashedFilter::key_for_pass(const VertexBuffer& b, size_t i, uint64_t pa
 // HashedFilter's steps of the pass (hashed_pass.h): TBB over host memory.
 class HashedFilter::PassSteps final : public HashedPassSteps {
  public:
-  PassSteps(HashedFilter& f, const VertexBuffer& b, std::vector<Rgb>* filtered) : f_(f), b_(b), filtered_(filtered) {}
+  PassSteps(HashedFilter& f, const VertexBuffer& b, SlotValues* filtered) : f_(f), b_(b), filtered_(filtered) {}
   void mark(PassMark at) override { times_[int(at)] = std::chrono::steady_clock::now(); }
   void clear() override { f_.clear_table(); }
   void accumulate(uint64_t pass_hash) override { f_.accumulate(b_, pass_hash); }
@@ -224,11 +224,11 @@ class HashedFilter::PassSteps final : public HashedPassSteps {
  private:
   HashedFilter& f_;
   const VertexBuffer& b_;
-  std::vector<Rgb>* filtered_;
+  SlotValues* filtered_;
   std::chrono::steady_clock::time_point times_[int(PassMark::count)];
 };
 
-void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) {
+void HashedFilter::filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) {
   const size_t slots = buffer.paths() * size_t(buffer.records_per_path());
   // Per-slot keys, probe counts and voxel counts are kept only when something reads them after
   // accumulation (neighbour search, debug images): storing them cost ~10% of the accumulation.
@@ -488,7 +488,7 @@ void HashedFilter::blend_cells() {
   });
 }
 
-void HashedFilter::lookup(const VertexBuffer& b, std::vector<Rgb>* filtered) {
+void HashedFilter::lookup(const VertexBuffer& b, SlotValues* filtered) {
   if (history_) blend_cells();
   const VoxelHashTableView view = table_.view();
   const HashedStepSettings steps = step_settings(settings_);

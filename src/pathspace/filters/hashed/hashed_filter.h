@@ -53,8 +53,8 @@ class HashedFilter final : public PathSpaceFilter {
     n.caustics = settings_.caustics;
     return n;
   }
-  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, std::vector<Rgb>* filtered) override;
-  void query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) override;
+  void filter(const VertexBuffer& buffer, uint64_t seed, uint32_t pass, SlotValues* filtered) override;
+  void query(const VertexBuffer& queries, SlotValues* values, std::vector<uint8_t>* found) override;
   void statistics(Statistics& out) const override;
   // The debug images (voxel, count, level, probes; history and alpha with --temporal) when
   // settings.debug_images is on.
@@ -83,7 +83,7 @@ class HashedFilter final : public PathSpaceFilter {
   bool keeps_keys() const { return settings_.debug_images || settings_.neighbour_search; }
   void clear_table();
   void accumulate(const VertexBuffer& buffer, uint64_t pass_hash);
-  void lookup(const VertexBuffer& buffer, std::vector<Rgb>* filtered);
+  void lookup(const VertexBuffer& buffer, SlotValues* filtered);
   // A vertex's estimate in fine cell `slot` from the cell's `average` (this pass's, or blended with
   // its history): the coarse cell where sec. 3.1.3 chose it, else the low-count steps of sec. 3.3.
   // `key` is read only by the neighbour search, `coarse_slot` only with a coarse table.
@@ -128,7 +128,9 @@ class HashedFilter final : public PathSpaceFilter {
   std::unique_ptr<TemporalHistory> history_;      // sec. 3.4: null unless --temporal
   // Per record slot, for the lookup phase and the AOVs.
   std::vector<VoxelKey> keys_;
-  std::vector<int32_t> slots_, coarse_slots_;  // table cell per record slot; < 0: not in the table
+  // Table cell per record slot (< 0: not in the table): accumulate writes it for every record, and
+  // only records read it, so slots without a record stay unwritten and their pages untouched.
+  UninitializedVector<int32_t> slots_, coarse_slots_;
   // accumulate()'s combining cache per thread (1 MiB each), kept from pass to pass: made anew,
   // every pass of an animation paid for allocating, zeroing and faulting them in. Each pass's
   // flush_all leaves them empty.

@@ -14,7 +14,7 @@
 
 namespace pathspace {
 
-void HashedFilter::query(const VertexBuffer& queries, std::vector<Rgb>* values, std::vector<uint8_t>* found) {
+void HashedFilter::query(const VertexBuffer& queries, SlotValues* values, std::vector<uint8_t>* found) {
   const size_t slots = queries.paths() * size_t(queries.records_per_path());
   values->assign(slots, Rgb());
   found->assign(slots, 0);
