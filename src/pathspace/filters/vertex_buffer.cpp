@@ -1,9 +1,9 @@
+// No oneTBB here: the standalone GPU filter benchmark (bench/cuda) compiles this file on a machine
+// with only the CUDA toolkit. Parallel loops over the buffer live in vertex_buffer_copy.cpp.
 #include "pathspace/filters/vertex_buffer.h"
 
 #include <algorithm>
 #include <numeric>
-
-#include "pathspace/parallel/parallel_for.h"
 
 namespace pathspace {
 
@@ -51,14 +51,6 @@ VertexBufferView VertexBuffer::view() {
 #undef PATHSPACE_VIEW_OF_PATH_FIELD
 #undef PATHSPACE_VIEW_OF_SLOT_FIELD
   return v;
-}
-
-void VertexBuffer::copy_contributions(SlotValues* out) const {
-  out->resize(contribution.size());
-  parallel_for(paths(), 4096, [&](size_t begin, size_t end) {
-    for (size_t path = begin; path < end; ++path)
-      for (int r = 0; r < count[path]; ++r) (*out)[slot(path, r)] = contribution[slot(path, r)];
-  });
 }
 
 FilterVertex VertexBuffer::record(size_t i) const {
