@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "filter_render.h"
+#include "pathspace/film/block_metrics.h"
 #include "pathspace/film/image_metrics.h"
 #include "pathspace/io/image_io.h"
 #include "pathspace/scene/builtin_scenes.h"
@@ -39,6 +40,32 @@ TEST(HashedFilterQuality, CornellBox512At1sppBeatsTenfoldAnd16spp) {
               pt16, filtered, pt1 / filtered);
   EXPECT_LE(filtered * 10.0, pt1);
   EXPECT_LT(filtered, pt16);
+}
+
+// Issue 43's acceptance for cornell-box, "one path per pixel that looks like the reference": at its
+// defaults (caustic photons, camera-side branches at glass) one pass of the hashed filter at
+// 512x512 must have, as means over seeds 1-3, per-pixel relMSE <= 0.15, relMSE of 8x8 block
+// averages <= 0.015 and at most 2% blotched blocks (film/block_metrics.h). The renders are fixed
+// by their seeds, so this is a regression check with the issue's limits. Measured when written:
+// 0.054, 0.0079, 0.58% (docs/results/one-path-per-pixel.md); without the caustic photons
+// (--psf-caustic-photons 0) 1.00, 0.12 and 7.2%: the glass sphere's caustic averaged into voxels.
+TEST(HashedFilterQuality, CornellBox512OnePassMeetsTheBlotchLimits) {
+  const Image reference = read_image(PATHSPACE_TEST_DATA_DIR "/cornell-box-512-pt4096.exr");
+  const Scene scene = make_builtin_scene("cornell-box", reference.width, reference.height);
+  constexpr int kAcceptanceSeeds = 3;
+  double rel_mse = 0.0, block_rel_mse = 0.0, blotched = 0.0;
+  for (int seed = 1; seed <= kAcceptanceSeeds; ++seed) {
+    const Image image = testing::render_with(scene, testing::hashed_config(uint64_t(seed)), 1).mean;
+    rel_mse += image_error(image, reference).rel_mse / kAcceptanceSeeds;
+    const BlockError blocks = block_error(image, reference);
+    block_rel_mse += blocks.block_rel_mse / kAcceptanceSeeds;
+    blotched += blocks.blotched_share / kAcceptanceSeeds;
+  }
+  std::printf("one pass, hashed defaults: relMSE %.4g, block relMSE %.4g, blotched %.2f%%\n", rel_mse, block_rel_mse,
+              100.0 * blotched);
+  EXPECT_LE(rel_mse, 0.15);
+  EXPECT_LE(block_rel_mse, 0.015);
+  EXPECT_LE(blotched, 0.02);
 }
 
 }  // namespace

@@ -95,8 +95,10 @@ PS_INLINE Rgb gather_caustics(const SceneView& scene, const CausticMapView& map,
                               const Vec3& wo, int camera_segments) {
   if (map.radius <= 0.f) return Rgb();
   const Vec3 n_front = dot(hit.ng, wo) >= 0.f ? hit.ng : -hit.ng;
-  const Frame frame(hit.ns);
-  const Vec3 wo_local = frame.to_local(wo);
+  // The shading frame only once a photon is found: most gathers find none.
+  Frame frame;
+  Vec3 wo_local;
+  bool framed = false;
   const float r2 = map.radius * map.radius;
   Rgb sum;
   // The photons are in the grid's record order (CausticPhotonMap::index), so a cell's range indexes
@@ -107,6 +109,11 @@ PS_INLINE Rgb gather_caustics(const SceneView& scene, const CausticMapView& map,
       if (distance_squared(ph.p, hit.p) > r2) continue;
       if (camera_segments + int(ph.segments) > map.max_segments) continue;
       if (dot(n_front, ph.wi) <= 0.f) continue;
+      if (!framed) {
+        frame = Frame(hit.ns);
+        wo_local = frame.to_local(wo);
+        framed = true;
+      }
       const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
       if (all_finite(c)) sum += c;
     }
