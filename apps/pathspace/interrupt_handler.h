@@ -1,6 +1,6 @@
 // Ctrl-C (SIGINT) and SIGTERM during `pathspace render`: the first signal lets the pass in flight
 // finish; the render then writes its outputs and checkpoint from every completed pass and exits with
-// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Checkpoints, resume and interruption"). A second
+// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/checkpoints.md, "Interrupting"). A second
 // signal ends the process at once with the same code, after removing the temporary files being
 // written, so no output is ever half-written.
 #pragma once

@@ -38,7 +38,7 @@ struct RenderOptions {
   std::string stats_path;
   std::string variance_path;  // variance-of-the-mean image
   bool quiet = false;
-  // Checkpoints and interruption (docs/cli.md, "Checkpoints").
+  // Checkpoints and interruption (docs/checkpoints.md).
   std::string checkpoint;         // --checkpoint FILE: the render's state, at the end and when interrupted
   double checkpoint_every = 0.0;  // seconds between checkpoints while rendering; 0: at the end only
   std::string resume;             // --resume FILE: continue the render saved there

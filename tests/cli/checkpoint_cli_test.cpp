@@ -1,4 +1,4 @@
-// Checkpoints, resume and interruption of `pathspace render` (docs/cli.md, "Checkpoints"), with the
+// Checkpoints, resume and interruption of `pathspace render` (docs/checkpoints.md), with the
 // real binary:
 //  - 3 passes + checkpoint + resume to 8 equals 8 passes straight, byte for byte (image, variance),
 //    for pt, pt + hashed filter, pt + consistent filter (its radius follows the paths so far), lt, bpt,

@@ -1,7 +1,7 @@
 // Checkpoint files: a render's whole state on disk, so that it can be continued bit for bit
-// (`pathspace render --checkpoint FILE`, `--resume FILE`; docs/cli.md, "Checkpoints").
+// (`pathspace render --checkpoint FILE`, `--resume FILE`; docs/checkpoints.md).
 //
-// Layout (little-endian; docs/cli.md has the table):
+// Layout (little-endian; docs/checkpoints.md has the table):
 //   8 bytes   magic "PSCKPT\r\n"
 //   4 bytes   format version (kCheckpointFormatVersion)
 //   8 bytes   size H of the header
