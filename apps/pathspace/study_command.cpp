@@ -23,6 +23,9 @@ void add_common_options(CLI::App* sub, studies::StudyOptions* o, const std::stri
   sub->add_option("-t,--time", o->time_s, time_help)->check(checked_real("time", 1e-3, 1e6))->capture_default_str();
   sub->add_option("--reference-time", o->reference_time_s, "Seconds for each scene's reference (default: 20 x --time)")
       ->check(checked_real("reference-time", 1e-3, 1e7));
+  sub->add_option("--reference-dir", o->reference_dir,
+                  "Folder of references made elsewhere: a scene whose <name>.exr is there reads it (and <name>.variance.exr) "
+                  "instead of rendering one");
   sub->add_option("--scenes", o->scenes, "Built-in scenes, comma-separated names or ids")->delimiter(',')->capture_default_str();
   sub->add_option("--seed", o->seed, "Random seed of the runs (the reference uses another)")
       ->check(seed_check())
@@ -61,6 +64,10 @@ CLI::App* add_study_command(CLI::App& app, StudyCommandOptions* o) {
       ->delimiter(',')
       ->check(checked_integer("equal-time-spp", 1, 1 << 16))
       ->capture_default_str();
+  psf->add_option("--figures", o->psf_only.figures,
+                  "Make only these figures, comma-separated page ids (2014-fig2, 2021-fig1, ...; equal-time: every "
+                  "equal-time figure); default all")
+      ->delimiter(',');
   psf->add_option("--max-spp", o->psf_only.max_spp, "Last sample count of the progressive series (2014 fig. 3): 1, 4, 16, ...")
       ->check(checked_integer("max-spp", 1, 1 << 20))
       ->capture_default_str();

@@ -14,8 +14,10 @@ namespace pathspace::cli {
 
 struct StudyCommandOptions {
   std::string study;  // the subcommand given: "pclt", "psf" or "gallery"
-  studies::StudyOptions pclt{"pathspace-out/study-pclt", "128x128", 5.0, 0.0, {"bs_c", "gbs_c"}};
-  studies::StudyOptions psf{"pathspace-out/study-psf", "128x128", 3.0, 0.0, {"bs_c"}};
+  // Designated: a field added to StudyOptions cannot take another's value.
+  studies::StudyOptions pclt{
+      .out = "pathspace-out/study-pclt", .resolution = "128x128", .time_s = 5.0, .scenes = {"bs_c", "gbs_c"}};
+  studies::StudyOptions psf{.out = "pathspace-out/study-psf", .resolution = "128x128", .time_s = 3.0, .scenes = {"bs_c"}};
   studies::PsfStudyOptions psf_only;
   studies::GalleryOptions gallery;
 };

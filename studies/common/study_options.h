@@ -14,6 +14,9 @@ struct StudyOptions {
   std::string resolution = "128x128";
   double time_s = 5.0;            // equal-time budget per image (pclt); the references' time / 20
   double reference_time_s = 0.0;  // 0: 20 x time_s
+  // A folder of references made elsewhere (e.g. long PT renders): a scene whose <name>.exr is there
+  // reads it (and <name>.variance.exr when present) instead of rendering its reference.
+  std::string reference_dir;
   std::vector<std::string> scenes;
   uint64_t seed = 0;
   int threads = 0;
@@ -32,6 +35,8 @@ struct PsfStudyOptions {
   // The equal-time figures: one per count, each giving every method the hashed filter's time for that
   // many paths per pixel (studies/psf/equal_time.cpp).
   std::vector<uint32_t> equal_time_spp = {1, 4, 16};
+  // The figures to make (ids as on the page, "equal-time" for every equal-time figure); empty: all.
+  std::vector<std::string> figures;
 };
 
 // `study gallery`'s options (studies/gallery/gallery.h).

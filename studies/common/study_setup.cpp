@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -44,6 +45,8 @@ StudySetup prepare_study(const StudyOptions& o) {
     if (std::find(s.scene_names.begin(), s.scene_names.end(), info->name) == s.scene_names.end()) s.scene_names.push_back(info->name);
   }
   if (o.out.empty()) throw UsageError("--out must name a folder");
+  if (!o.reference_dir.empty() && !std::filesystem::is_directory(o.reference_dir))
+    throw UsageError("--reference-dir '" + o.reference_dir + "' is not a folder");
   s.reference_time_s = o.reference_time_s > 0 ? o.reference_time_s : kDefaultReferenceFactor * o.time_s;
   s.reference_integrator = reference_integrator();
   study::create_image_folder(o.out);
@@ -61,11 +64,19 @@ study::ExperimentRunner make_study_runner(const StudyOptions& o, bool keep_image
   return study::ExperimentRunner(r);
 }
 
-study::ReferenceSpec study_reference(const StudyOptions& o, const StudySetup& setup) {
+study::ReferenceSpec study_reference(const StudyOptions& o, const StudySetup& setup, const std::string& scene) {
   study::ReferenceSpec reference;
   reference.render = study::reference_render_config(setup.reference_integrator);
   reference.render.seed = o.seed + study::kReferenceSeedOffset;
   reference.budget = study::Budget::for_seconds(setup.reference_time_s);
+  if (!o.reference_dir.empty()) {
+    const std::filesystem::path dir(o.reference_dir);
+    if (std::filesystem::is_regular_file(dir / (scene + ".exr"))) {
+      reference.image_file = (dir / (scene + ".exr")).string();
+      if (std::filesystem::is_regular_file(dir / (scene + ".variance.exr")))
+        reference.variance_file = (dir / (scene + ".variance.exr")).string();
+    }
+  }
   return reference;
 }
 
@@ -76,6 +87,7 @@ nlohmann::ordered_json study_settings(const StudyOptions& o, const StudySetup& s
   settings["time_s"] = o.time_s;
   settings["reference_time_s"] = setup.reference_time_s;
   settings["reference_integrator"] = setup.reference_integrator;
+  settings["reference_dir"] = o.reference_dir;
   settings["seed"] = o.seed;
   settings["threads"] = o.threads;
   settings["build_type"] = build_type();

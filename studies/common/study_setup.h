@@ -26,7 +26,9 @@ void parse_resolution(const std::string& text, const std::string& option, int* w
 // Checks the options (UsageError), creates the output folder and checks it is writable.
 StudySetup prepare_study(const StudyOptions& options);
 study::ExperimentRunner make_study_runner(const StudyOptions& options, bool keep_images);
-study::ReferenceSpec study_reference(const StudyOptions& options, const StudySetup& setup);
+// The reference of one scene (a canonical name): read from --reference-dir when it holds
+// <scene>.exr, else rendered for the study's reference time.
+study::ReferenceSpec study_reference(const StudyOptions& options, const StudySetup& setup, const std::string& scene);
 // width, height, time_s, reference_time_s, reference_integrator, seed, threads, build_type, integrators.
 nlohmann::ordered_json study_settings(const StudyOptions& options, const StudySetup& setup);
 

@@ -342,7 +342,31 @@ TEST_F(CliTest, EmptyOptionValuesAreUsageErrors) {
   expect_usage_error("compare a.exr '' ", "has an empty value");
 }
 
+// `study psf --figures` makes only the named figures, and --reference-dir supplies a scene's
+// reference instead of rendering one (here a 4-spp PT image, read by its scene's name).
+TEST_F(CliTest, StudyPsfMakesOnlyTheNamedFiguresAgainstGivenReferences) {
+  fs::create_directories(dir_ / "refs");
+  const CliResult ref = run("render cornell-box -r 16x12 -s 4 --quiet -o refs/cornell-box.exr");
+  ASSERT_EQ(ref.exit_code, 0) << ref.err;
+  const CliResult r = run("study psf --scenes bs_c --resolution 16x12 --time 0.05 --figures equal-time,2021-fig1 "
+                          "--equal-time-spp 1 --reference-dir refs --no-exr --quiet -o sq");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(read_all(dir_ / "sq/study.json"));
+  std::vector<std::string> figures;
+  for (const auto& [id, figure] : json.at("figures").items()) {
+    figures.push_back(id);
+    EXPECT_FALSE(figure.at("runs").empty()) << id;
+  }
+  EXPECT_EQ(figures, (std::vector<std::string>{"2021-fig1", "equal-time-1spp"}));
+  ASSERT_EQ(json.at("scenes").size(), 1u);  // no fence, no temporal scenes
+  const auto& scene = json.at("scenes").begin().value();
+  EXPECT_EQ(fs::path(scene.at("image_file").get<std::string>()).filename(), "cornell-box.exr");
+  EXPECT_FALSE(scene.contains("integrator"));  // read, not rendered
+}
+
 TEST_F(CliTest, StudyMisuseIsAUsageError) {
+  expect_usage_error("study psf --figures 2014-fig99 --quiet", "2014-fig99");
+  expect_usage_error("study psf --reference-dir nowhere --quiet", "--reference-dir");
   expect_usage_error("study psf --vertex-set-resolution 0x3 --quiet", "--vertex-set-resolution");
   expect_usage_error("study psf --max-spp 0 --quiet", "--max-spp");
   expect_usage_error("study psf --room-scene nowhere.pbrt --quiet", "--room-scene");
