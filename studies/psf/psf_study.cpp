@@ -2,6 +2,7 @@
 // --figures names) on each scene in page order (each scene's reference first), the hash table figures
 // and the temporal figures once, and writes the page.
 #include <algorithm>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -81,17 +82,21 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf_given) {
   doc.settings["figures"] = psf.figures;
   doc.figures = make_psf_figures(psf.equal_time_spp);
   const PsfStudyParams params{o.seed, psf.max_spp, psf.equal_time_spp};
-  for (const std::string& name : setup.scene_names) {
-    // One scene at a time: its geometry, acceleration structure and images are freed before the next.
-    const study::PreparedScene scene =
-        runner.prepare(study::SceneSpec{name, setup.width, setup.height}, study_reference(o, setup, name));
-    const study::FigureRunner fr(runner, scene, o.seed);
-    for (const PerSceneRun& r : kPerSceneRuns)
-      if (wanted(psf, r.id)) r.run(fr, params, &doc.figures);
-    for (study::Figure& f : doc.figures)
-      for (study::Measurement& m : f.runs) m.image = Image();
-    doc.scenes.push_back(scene.summary);
-  }
+  // Each scene's reference costs time: none is made when no per-scene figure is asked for.
+  const bool per_scene = std::any_of(std::begin(kPerSceneRuns), std::end(kPerSceneRuns),
+                                     [&](const PerSceneRun& r) { return wanted(psf, r.id); });
+  if (per_scene)
+    for (const std::string& name : setup.scene_names) {
+      // One scene at a time: its geometry, acceleration structure and images are freed before the next.
+      const study::PreparedScene scene =
+          runner.prepare(study::SceneSpec{name, setup.width, setup.height}, study_reference(o, setup, name));
+      const study::FigureRunner fr(runner, scene, o.seed);
+      for (const PerSceneRun& r : kPerSceneRuns)
+        if (wanted(psf, r.id)) r.run(fr, params, &doc.figures);
+      for (study::Figure& f : doc.figures)
+        for (study::Measurement& m : f.runs) m.image = Image();
+      doc.scenes.push_back(scene.summary);
+    }
   if (wanted(psf, "2014-fig7")) {
     // 2014 fig. 7 needs thin geometry: the built-in fence, with a reference of its own.
     const study::PreparedScene fence = runner.prepare(study::SceneSpec{"filter-fence", setup.width, setup.height},
