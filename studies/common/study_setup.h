@@ -29,7 +29,8 @@ study::ExperimentRunner make_study_runner(const StudyOptions& options, bool keep
 // The reference of one scene (a canonical name): read from --reference-dir when it holds
 // <scene>.exr, else rendered for the study's reference time.
 study::ReferenceSpec study_reference(const StudyOptions& options, const StudySetup& setup, const std::string& scene);
-// width, height, time_s, reference_time_s, reference_integrator, seed, threads, build_type, integrators.
+// width, height, time_s, reference_time_s, reference_integrator, reference_dir, seed, threads,
+// build_type, integrators.
 nlohmann::ordered_json study_settings(const StudyOptions& options, const StudySetup& setup);
 
 // What a study produced, written as study.json and study.html.
