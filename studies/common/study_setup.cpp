@@ -70,11 +70,11 @@ study::ReferenceSpec study_reference(const StudyOptions& o, const StudySetup& se
   reference.render.seed = o.seed + study::kReferenceSeedOffset;
   reference.budget = study::Budget::for_seconds(setup.reference_time_s);
   if (!o.reference_dir.empty()) {
-    const std::filesystem::path dir(o.reference_dir);
-    if (std::filesystem::is_regular_file(dir / (scene + ".exr"))) {
-      reference.image_file = (dir / (scene + ".exr")).string();
-      if (std::filesystem::is_regular_file(dir / (scene + ".variance.exr")))
-        reference.variance_file = (dir / (scene + ".variance.exr")).string();
+    const std::filesystem::path image = std::filesystem::path(o.reference_dir) / (scene + ".exr");
+    const std::filesystem::path variance = std::filesystem::path(o.reference_dir) / (scene + ".variance.exr");
+    if (std::filesystem::is_regular_file(image)) {
+      reference.image_file = image.string();
+      if (std::filesystem::is_regular_file(variance)) reference.variance_file = variance.string();
     }
   }
   return reference;

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -59,7 +60,8 @@ void check_figure_names(const PsfStudyOptions& psf, const std::vector<study::Fig
 
 int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf_given) {
   PsfStudyOptions psf = psf_given;
-  check_figure_names(psf, make_psf_figures(psf.equal_time_spp));
+  std::vector<study::Figure> figures = make_psf_figures(psf.equal_time_spp);
+  check_figure_names(psf, figures);
   // The temporal figures share their runs: the orbit and fig. 9 the frames, sec. 3.4.3 the flight.
   if (!wanted(psf, "2021-sec3.4.1") && !wanted(psf, "2021-fig9")) psf.temporal_frames = 0;
   if (!wanted(psf, "2021-sec3.4.3")) psf.eviction_frames = 0;
@@ -80,7 +82,7 @@ int run_psf_study(const StudyOptions& o, const PsfStudyOptions& psf_given) {
   doc.settings["eviction_frames"] = psf.eviction_frames;
   doc.settings["equal_time_spp"] = psf.equal_time_spp;
   doc.settings["figures"] = psf.figures;
-  doc.figures = make_psf_figures(psf.equal_time_spp);
+  doc.figures = std::move(figures);
   const PsfStudyParams params{o.seed, psf.max_spp, psf.equal_time_spp};
   // Each scene's reference costs time: none is made when no per-scene figure is asked for.
   const bool per_scene = std::any_of(std::begin(kPerSceneRuns), std::end(kPerSceneRuns),
