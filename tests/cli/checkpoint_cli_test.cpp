@@ -130,6 +130,7 @@ TEST_P(ResumeEqualsStraight, ThreePlusFiveAndTwoPlusThreePlusThree) {
 INSTANTIATE_TEST_SUITE_P(Integrators, ResumeEqualsStraight,
                          ::testing::Values(ResumeCase{"pt", "-i pt"}, ResumeCase{"pt_hashed", "-i pt --filter hashed --psf-scale 4"},
                                            ResumeCase{"pt_hashed_caustics_clamp", "-i pt --filter hashed --psf-caustic-photons 2 --psf-clamp 4"},
+                                           ResumeCase{"pt_hashed_one_bounce", "-i pt --filter hashed --psf-one-bounce-photons"},
                                            ResumeCase{"pt_consistent", "-i pt --filter consistent --psf-iterations 2 --psf-batch-memory 0.01"},
                                            ResumeCase{"pt_consistent_caustics_aa",
                                                       "-i pt --filter consistent --psf-aa-paths 1 --psf-caustic-photons 2 --psf-batch-memory 0.05"},

@@ -105,6 +105,7 @@ TEST_F(CliTest, BadNumbersAreUsageErrors) {
   expect_usage_error("render --filter hashed --psf-scale 0", "--psf-scale");
   expect_usage_error("render --filter hashed --psf-scale nan", "--psf-scale");
   expect_usage_error("render --aov", "--aov applies to --filter hashed");
+  expect_usage_error("render --filter hashed --psf-caustic-photons 0 --psf-one-bounce-photons", "needs --psf-caustic-photons");
   // Options belong to integrators: another integrator's option names where it applies.
   expect_usage_error("render -i lt --pclt-alpha 0.5", "--pclt-alpha applies to --integrator pclt");
   expect_usage_error("render -i sppm --mis balance", "--mis applies to --integrator bpt, pt");

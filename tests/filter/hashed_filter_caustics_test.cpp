@@ -3,7 +3,7 @@
 // turns into bright blotches on every wall, come from a caustic photon map instead. On cornell-box
 // against a long path-traced reference both the per-pixel and the block-averaged error (the
 // blotches, film/block_metrics.h) fall at 1 path per pixel; the filtered image stays bit-identical
-// for any thread count; and --psf-clamp, the anti-firefly clamp, averages exactly the clamped values
+// for any thread count, with one-bounce photons too; and --psf-clamp, the anti-firefly clamp, averages exactly the clamped values
 // (hashed_filter_averages_test.cpp) and is biased low, which the last test shows. Means over seeds.
 #include <gtest/gtest.h>
 
@@ -20,9 +20,10 @@ namespace {
 constexpr int kSize = 64;
 constexpr int kSeeds = 4;
 
-RenderConfig config(double photons_per_pixel, float max_luminance, uint64_t seed) {
+RenderConfig config(double photons_per_pixel, float max_luminance, uint64_t seed, bool one_bounce = false) {
   HashedFilterSettings s;
   s.caustics.photons_per_pixel = photons_per_pixel;
+  s.caustics.one_bounce = one_bounce;
   s.max_luminance = max_luminance;
   return testing::hashed_config(seed, s);
 }
@@ -62,11 +63,14 @@ TEST(HashedFilterCaustics, PhotonMappedCausticsRemoveTheBlotches) {
 
 TEST(HashedFilterCaustics, BitIdenticalForOneAndTwoThreads) {
   const Scene scene = make_builtin_scene("cornell-box", 48, 40);
-  const RenderConfig c = config(2.0, 4.f, 5);
-  const auto one = testing::render_with(scene, c, 2, 1);
-  const auto two = testing::render_with(scene, c, 2, 2);
-  EXPECT_TRUE(testing::bit_identical(one.mean, two.mean));
-  EXPECT_GT(one.stats.details.number("caustics.stored"), 0.0);
+  for (const bool one_bounce : {false, true}) {
+    const RenderConfig c = config(2.0, 4.f, 5, one_bounce);
+    const auto one = testing::render_with(scene, c, 2, 1);
+    const auto two = testing::render_with(scene, c, 2, 2);
+    EXPECT_TRUE(testing::bit_identical(one.mean, two.mean)) << "one-bounce photons: " << one_bounce;
+    EXPECT_GT(one.stats.details.number("caustics.stored"), 0.0);
+    if (one_bounce) EXPECT_GT(one.stats.details.number("caustics.stored_one_bounce"), 0.0);
+  }
 }
 
 // The clamp trades noise for bias: with many passes its image is darker than the reference by more

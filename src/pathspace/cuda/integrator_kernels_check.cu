@@ -55,7 +55,7 @@ __global__ void pt_compile_check(SceneView scene, PtSettings settings, Visibilit
   out[i] = sample.value() + pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters);
   pt_trace_path(scene, NullTracer{}, sampler, ray, settings, &counters, &sample, probes, i % 2 == 0, &caustics);
   out[i] += sample.value();
-  trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, caustics.receivers, &counters, &photons[i]);
+  trace_caustic_photon(scene, NullTracer{}, Sampler(1, i, 0), scene.max_path_segments, caustics.receivers, true, &counters, &photons[2 * i]);
   BsdfLayers layers;  // the receivers' test of the camera paths and the photons (selectable_vertex.h)
   merge_layers(&layers);
   if (is_selectable(layers, caustics.receivers)) out[i] = Rgb();

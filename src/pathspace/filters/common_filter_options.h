@@ -34,6 +34,15 @@ void add_caustic_options(OptionTable<Settings>& table, CausticSettings Settings:
                "Vertices with a layer smoother than this are links of caustic chains (photons pass them, they gather none): "
                "near-specular glossy reflections of lights come from the photon map too (Phong exponent 20 ~ 0.3)",
                "2014 paper, sec. 2.3");
+  table.flag("psf-one-bounce-photons", [caustics](Settings& s) -> bool& { return (s.*caustics).one_bounce; }, true,
+             "Also photons after one diffuse bounce, gathered at every rough vertex of a path, the first of which alone estimates "
+             "direct light: light that reaches walls off a small lit patch (a lamp in a shade, a spot) comes from the lights' "
+             "side (needs --psf-caustic-photons)",
+             "2014 paper, sec. 2.3");
+  table.check([caustics](const Settings& s) {
+    if ((s.*caustics).one_bounce && !(s.*caustics).enabled())
+      throw OptionError("--psf-one-bounce-photons are traced with the caustic photons: it needs --psf-caustic-photons above 0");
+  });
 }
 
 }  // namespace pathspace

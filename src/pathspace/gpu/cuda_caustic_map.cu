@@ -12,13 +12,15 @@ namespace {
 
 constexpr int kThreads = 128;
 
-// Photon i of the pass, from the stream the CPU's CausticPhotonMap::build uses for it.
+// Photon path i of the pass, from the stream the CPU's CausticPhotonMap::build uses for it, into
+// out[2 i] and out[2 i + 1].
 __global__ void trace_photons_kernel(SceneView scene, BvhTracer tracer, uint64_t photon_seed, uint32_t pass, int max_segments,
-                                     VertexSelection receivers, uint32_t n, CausticPhoton* out, PathCountersDevice* counters) {
+                                     VertexSelection receivers, bool one_bounce, uint32_t n, CausticPhoton* out,
+                                     PathCountersDevice* counters) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
   PathCounters c;
-  trace_caustic_photon(scene, tracer, Sampler(photon_seed, i, pass), max_segments, receivers, &c, &out[i]);
+  trace_caustic_photon(scene, tracer, Sampler(photon_seed, i, pass), max_segments, receivers, one_bounce, &c, &out[2 * size_t(i)]);
   add_counters(counters, uint32_t(c.rays), 0u, 0u, 0u);
 }
 
@@ -35,29 +37,35 @@ void DeviceCausticMap::build(const SceneView& scene, const BvhTracer& tracer, ui
                              PathCountersDevice* counters) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t n = uint32_t(host_.photons_per_pass());
-  traced_.resize(n);
+  traced_.resize(2 * size_t(n));
   if (n > 0) {
     trace_photons_kernel<<<(n + kThreads - 1) / kThreads, kThreads>>>(scene, tracer, caustic_photon_seed(seed), pass,
-                                                                     host_.max_segments(), host_.receivers(), n,
+                                                                     host_.max_segments(), host_.receivers(), host_.one_bounce(), n,
                                                                      traced_.data(), counters);
     PS_CUDA_CHECK_LAUNCH("trace_photons_kernel");
   }
   std::vector<CausticPhoton>& traced = host_.traced_photons();
-  traced_.download(traced.data(), n);  // waits for the kernel
+  traced_.download(traced.data(), traced.size());  // waits for the kernel
   host_.index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  const CausticMapView& map = host_.view();
-  slots_.upload(map.grid.slots, size_t(map.grid.slot_mask) + 1);
-  records_.upload(map.grid.records, map.grid.record_capacity);
-  in_cells_.upload(map.photons, host_.grid().compacted_records());
-  view_ = map;
-  view_.grid.slots = slots_.data();
-  view_.grid.records = records_.data();
-  view_.grid.counters = nullptr;  // gathers only read
-  if (map.grid.occupancy.words) {
-    occupancy_.upload(map.grid.occupancy.words, map.grid.occupancy.word_count());
-    view_.grid.occupancy.words = occupancy_.data();
+  view_ = host_.view();
+  view_.caustic = caustic_.upload(view_.caustic, host_.caustic_grid());
+  view_.one_bounce = one_bounce_.upload(view_.one_bounce, host_.one_bounce_grid());
+}
+
+PhotonSetView DeviceCausticMap::DeviceSet::upload(const PhotonSetView& host, const HashGrid& grid) {
+  slots.upload(host.grid.slots, size_t(host.grid.slot_mask) + 1);
+  records.upload(host.grid.records, host.grid.record_capacity);
+  in_cells.upload(host.photons, grid.compacted_records());
+  PhotonSetView device = host;
+  device.grid.slots = slots.data();
+  device.grid.records = records.data();
+  device.grid.counters = nullptr;  // gathers only read
+  if (host.grid.occupancy.words) {
+    occupancy.upload(host.grid.occupancy.words, host.grid.occupancy.word_count());
+    device.grid.occupancy.words = occupancy.data();
   }
-  view_.photons = in_cells_.data();
+  device.photons = in_cells.data();
+  return device;
 }
 
 }  // namespace pathspace::gpu

@@ -31,11 +31,19 @@ class DeviceCausticMap {
   void load_state(StateReader& in) { host_.load_state(in); }
 
  private:
+  // One kind of photons in device memory (PhotonSetView).
+  struct DeviceSet {
+    DeviceBuffer<CausticPhoton> in_cells;
+    DeviceBuffer<GridSlot> slots;
+    DeviceBuffer<GridRecord> records;
+    DeviceBuffer<uint64_t> occupancy;
+    // Uploads the host's set (grid: its grid) and returns its view with device pointers.
+    PhotonSetView upload(const PhotonSetView& host, const HashGrid& grid);
+  };
+
   CausticPhotonMap host_;
-  DeviceBuffer<CausticPhoton> traced_, in_cells_;
-  DeviceBuffer<GridSlot> slots_;
-  DeviceBuffer<GridRecord> records_;
-  DeviceBuffer<uint64_t> occupancy_;
+  DeviceBuffer<CausticPhoton> traced_;
+  DeviceSet caustic_, one_bounce_;
   CausticMapView view_;
 };
 

@@ -58,7 +58,7 @@ PS_HD WavefrontAfterShade wavefront_shade(const SceneView& scene, const Tracer& 
                                           PathCounters* counters, const CausticMapView* caustics = nullptr) {
   ++counters->rays;
   if (!found) {
-    pt_on_miss(scene, settings, s);
+    pt_on_miss(scene, settings, s, caustics);
     return WavefrontAfterShade::ended;
   }
   const Sampler sampler(seed, pixel, pass);

@@ -27,6 +27,7 @@ CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings
                                    const VertexSelection& selection)
     : scene_(scene),
       max_segments_(max_segments),
+      one_bounce_(settings.one_bounce),
       receivers_(selection),
       photons_per_pass_(uint64_t(std::llround(settings.photons_per_pixel * double(scene.camera.width) * double(scene.camera.height)))) {
   const float r0 = settings.initial_radius > 0.f ? settings.initial_radius : settings.radius_fraction * scene.bounds.radius;
@@ -39,14 +40,14 @@ CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings
 void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
   const size_t n = size_t(photons_per_pass_);
-  traced_.resize(n);
+  traced_.resize(2 * n);
   std::atomic<uint64_t> rays{0};
   const uint64_t photon_seed = caustic_photon_seed(seed);
   parallel_for(n, 256, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t i = begin; i < end; ++i) {
       const Sampler sampler(photon_seed, i, pass);
-      trace_caustic_photon(scene_, accel, sampler, max_segments_, receivers_, &local, &traced_[i]);
+      trace_caustic_photon(scene_, accel, sampler, max_segments_, receivers_, one_bounce_, &local, &traced_[2 * i]);
     }
     rays += local.rays;
   });
@@ -54,37 +55,47 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
   index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
-void CausticPhotonMap::index(uint32_t pass, double trace_seconds) {
-  const auto start = std::chrono::steady_clock::now();
-  const size_t n = traced_.size();
-  const float r = radius_.at(pass);
+void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths) {
   // The grid holds the stored photons only (a few in ten of the traced ones): its table, sized by
   // its points, then stays small enough for the caches that every gather's probes go through.
-  stored_index_.clear();
-  for (size_t i = 0; i < n; ++i)
-    if (traced_[i].stored) stored_index_.push_back(uint32_t(i));
-  grid_.build(stored_index_.size(), r, [&](size_t i) { return traced_[stored_index_[i]].p; });
+  stored_index.clear();
+  for (size_t i = size_t(kind); i < traced.size(); i += 2)
+    if (traced[i].stored) stored_index.push_back(uint32_t(i));
+  grid.build(stored_index.size(), radius, [&](size_t i) { return traced[stored_index[i]].p; });
   // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
-  const size_t linked = grid_.compacted_records();
-  in_cells_.resize(linked);
+  const size_t linked = grid.compacted_records();
+  in_cells.resize(linked);
   parallel_for(linked, 4096, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) in_cells_[i] = traced_[stored_index_[grid_.record(i).payload]];
+    for (size_t i = begin; i < end; ++i) in_cells[i] = traced[stored_index[grid.record(i).payload]];
   });
-  view_.grid = grid_.view();
-  view_.photons = in_cells_.data();
-  view_.radius = linked ? r : 0.f;
-  view_.inv_area_count = n ? float(1.0 / (double(kPi) * double(r) * double(r) * double(n))) : 0.f;
+  view.grid = grid.view();
+  view.photons = in_cells.data();
+  view.radius = linked ? radius : 0.f;
+  view.inv_area_count = paths ? float(1.0 / (double(kPi) * double(radius) * double(radius) * double(paths))) : 0.f;
+}
+
+void CausticPhotonMap::index(uint32_t pass, double trace_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  const size_t n = traced_.size() / 2;
+  const float r = radius_.at(pass);
+  caustic_set_.index(traced_, 0, r, n);
+  if (one_bounce_) one_bounce_set_.index(traced_, 1, r, n);
+  view_.caustic = caustic_set_.view;
+  view_.one_bounce = one_bounce_set_.view;
   view_.max_segments = max_segments_;
   view_.receivers = receivers_;
+  view_.with_one_bounce = one_bounce_;
   last_radius_ = r;
   photons_ += n;
-  stored_ += linked;
+  stored_ += caustic_set_.grid.compacted_records();
+  if (one_bounce_) stored_one_bounce_ += one_bounce_set_.grid.compacted_records();
   seconds_ += trace_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void CausticPhotonMap::statistics(Statistics& out) const {
   out.counter("caustics.photons", photons_, "caustic photon paths traced (sec. 2.3)");
   out.counter("caustics.stored", stored_, "photons stored after light -> specular+ -> non-delta");
+  if (one_bounce_) out.counter("caustics.stored_one_bounce", stored_one_bounce_, "photons stored after one diffuse bounce");
   out.value("caustics.initial_radius", radius_.initial(), "scene units");
   out.value("caustics.last_radius", last_radius_, "scene units, the last pass of this run");
   out.seconds("caustics.time", seconds_);
@@ -93,6 +104,7 @@ void CausticPhotonMap::statistics(Statistics& out) const {
 void CausticPhotonMap::save_state(StateWriter& out) const {
   out.put("caustics.photons", photons_);
   out.put("caustics.stored", stored_);
+  if (one_bounce_) out.put("caustics.stored_one_bounce", stored_one_bounce_);
   out.put("caustics.last_radius", last_radius_);
   out.put("caustics.seconds", seconds_);
 }
@@ -100,6 +112,7 @@ void CausticPhotonMap::save_state(StateWriter& out) const {
 void CausticPhotonMap::load_state(StateReader& in) {
   in.get("caustics.photons", &photons_);
   in.get("caustics.stored", &stored_);
+  if (one_bounce_) in.get("caustics.stored_one_bounce", &stored_one_bounce_);
   in.get("caustics.last_radius", &last_radius_);
   in.get("caustics.seconds", &seconds_);
 }

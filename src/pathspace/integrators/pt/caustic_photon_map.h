@@ -1,6 +1,7 @@
 // The caustic photon map of the path tracer (Keller, Dahm, Binder 2014, sec. 2.3; kernel in
 // caustic_photons.h): per pass, N photon paths from the lights, the caustic photons among them in a
-// hash grid with the pass's radius. The radius shrinks with the pass index as in progressive photon
+// hash grid with the pass's radius, and with CausticSettings::one_bounce the photons after one
+// diffuse bounce in a second grid. The radius shrinks with the pass index as in progressive photon
 // mapping (common/progressive_radius.h, as SPPM and PCLT), so the caustics converge as the filter's
 // radius does; it is a function of the pass index only, so a resumed render continues it.
 #pragma once
@@ -35,35 +36,47 @@ class CausticPhotonMap {
   // Traces the pass's photons and builds the map; the view stays valid until the next build.
   void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
   // The two halves of build() for a caller that traces the photons elsewhere (the GPU path tracer,
-  // gpu/cuda_caustic_map.h): photon i of the pass from Sampler(caustic_photon_seed(seed), i, pass)
-  // into traced_photons()[i], then index() builds the same map as build() would.
+  // gpu/cuda_caustic_map.h): photon path i of the pass from Sampler(caustic_photon_seed(seed), i,
+  // pass) into traced_photons()[2 i] and [2 i + 1], then index() builds the same map as build() would.
   uint64_t photons_per_pass() const { return photons_per_pass_; }
   int max_segments() const { return max_segments_; }
+  bool one_bounce() const { return one_bounce_; }
   std::vector<CausticPhoton>& traced_photons() {
-    traced_.resize(size_t(photons_per_pass_));
+    traced_.resize(2 * size_t(photons_per_pass_));
     return traced_;
   }
   void index(uint32_t pass, double trace_seconds);
   const CausticMapView& view() const { return view_; }
-  const HashGrid& grid() const { return grid_; }
+  // The grids of the two kinds (the second empty without one-bounce photons).
+  const HashGrid& caustic_grid() const { return caustic_set_.grid; }
+  const HashGrid& one_bounce_grid() const { return one_bounce_set_.grid; }
   void statistics(Statistics& out) const;
   // The totals behind the statistics (the radius follows from the pass index).
   void save_state(StateWriter& out) const;
   void load_state(StateReader& in);
 
  private:
+  // The stored photons of one kind (traced_[2 i + kind]) in a grid, in the grid's record order.
+  struct PhotonSet {
+    // Most caustic gathers land where no caustic falls: an occupancy bitmap (8 bits per slot, a few
+    // tens of KiB) answers them without a cache miss in the slot table.
+    HashGrid grid{HashGridConfig{.occupancy_bits_per_slot = 8}};
+    std::vector<CausticPhoton> in_cells;
+    std::vector<uint32_t> stored_index;  // of traced_, in order
+    PhotonSetView view;
+    void index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths);
+  };
+
   SceneView scene_;
   int max_segments_;
+  bool one_bounce_;
   VertexSelection receivers_;
   uint64_t photons_per_pass_;
   ProgressiveRadius radius_;
-  // Most gathers land where no caustic falls: an occupancy bitmap (8 bits per slot, a few tens of
-  // KiB) answers them without a cache miss in the slot table.
-  HashGrid grid_{HashGridConfig{.occupancy_bits_per_slot = 8}};
-  std::vector<CausticPhoton> traced_, in_cells_;
-  std::vector<uint32_t> stored_index_;  // of traced_, in order
+  std::vector<CausticPhoton> traced_;  // two per photon path: its caustic and its one-bounce photon
+  PhotonSet caustic_set_, one_bounce_set_;
   CausticMapView view_;
-  uint64_t photons_ = 0, stored_ = 0;
+  uint64_t photons_ = 0, stored_ = 0, stored_one_bounce_ = 0;
   float last_radius_ = 0.f;
   double seconds_ = 0.0;
 };

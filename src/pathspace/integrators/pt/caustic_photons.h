@@ -34,34 +34,51 @@ struct CausticPhoton {
   bool stored = false;
 };
 
-// The photon map of one pass: a hash grid over the stored photons, photons[i] belonging to grid
-// record i (cell order), and the pass's radius and normalisation 1 / (pi r^2 N).
-struct CausticMapView {
+// One kind of stored photon in a pass: a hash grid over them, photons[i] belonging to grid record
+// i (cell order), and the pass's radius and normalisation 1 / (pi r^2 N); radius 0: none stored.
+struct PhotonSetView {
   HashGridView grid;
   const CausticPhoton* photons = nullptr;
   float radius = 0.f;
   float inv_area_count = 0.f;
+};
+
+// The photon map of one pass: the caustic photons (light -> links+ -> receiver) and, when asked
+// for (CausticSettings::one_bounce), the photons after one diffuse bounce (light -> links* ->
+// receiver -> links* -> receiver), each kind in its own grid so that a gather for one kind never
+// reads the other's.
+struct CausticMapView {
+  PhotonSetView caustic;
+  PhotonSetView one_bounce;
   int max_segments = 0;
   // Which vertices gather (and store) photons: the camera paths' selection with its roughness limit
   // raised to CausticSettings::min_roughness; the others are links of caustic chains.
   VertexSelection receivers;
+  // Whether the pass traced photons after one diffuse bounce (their set may still be empty): the
+  // path tracer then leaves out the paths they stand for (pt_kernel.h, PtPathState::receivers_passed).
+  bool with_one_bounce = false;
 };
 
 // The sampler seed of a pass's photon paths: a stream apart from the camera paths' (both are indexed
 // from 0), the same on both devices.
 PS_INLINE uint64_t caustic_photon_seed(uint64_t seed) { return seed ^ 0x636175737469637aull; }
 
-// Traces one photon path; *out receives the stored photon (out->stored false when there is none).
-// `receivers`: CausticMapView::receivers, whose roughness test decides where photons stop.
+// Traces one photon path; out[0] receives its caustic photon, out[1] its photon after one diffuse
+// bounce (only with `one_bounce`; `stored` false where there is none). `receivers`:
+// CausticMapView::receivers, whose roughness test decides where photons are stored. Without
+// `one_bounce` the path ends at its first receiver; with it the path bounces there once more and
+// ends at the next receiver, so the two kinds together carry all light that reaches a receiver
+// after at least one bounce and at most one receiver bounce.
 template <typename Tracer>
 PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, int max_segments,
-                                const VertexSelection& receivers, PathCounters* counters, CausticPhoton* out) {
-  out->stored = false;
+                                const VertexSelection& receivers, bool one_bounce, PathCounters* counters, CausticPhoton out[2]) {
+  out[0].stored = out[1].stored = false;
   LightPathStart start;
   if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
   const EmissionSample& e = start.emission;
   Rgb beta = e.weight * (1.f / start.select_prob);
   Ray ray = first_light_ray(scene, e);
+  bool after_receiver = false;
   // The shortest camera side is one segment, so longer light paths cannot join.
   for (int segments = 1; segments < max_segments; ++segments) {
     SurfaceHit hit;
@@ -71,8 +88,13 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
     const Material& mat = shading_material(scene, hit, &textured);
     const Vec3 wi_world = -ray.d;
     if (is_selectable_material(mat, receivers)) {
-      if (segments > 1) *out = {hit.p, wi_world, beta, uint8_t(segments), true};
-      return;
+      if (after_receiver) {
+        out[1] = {hit.p, wi_world, beta, uint8_t(segments), true};
+        return;
+      }
+      if (segments > 1) out[0] = {hit.p, wi_world, beta, uint8_t(segments), true};
+      if (!one_bounce) return;
+      after_receiver = true;
     }
     const Frame frame(hit.ns);
     const uint32_t v = uint32_t(segments - 1);
@@ -87,38 +109,70 @@ PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, co
   }
 }
 
-// Radiance reflected towards wo (world, unit) at a camera-path vertex by the caustic photons within
-// the pass's radius: sum f(wo, wi_p) Phi_p / (pi r^2 N), photons from the side the camera path
-// arrived from only, and only where the joined path fits the segment limit. Summed in the grid's
-// record order: deterministic.
-PS_INLINE Rgb gather_caustics(const SceneView& scene, const CausticMapView& map, const SurfaceHit& hit, const Material& mat,
-                              const Vec3& wo, int camera_segments) {
-  if (map.radius <= 0.f) return Rgb();
+// Calls visit(photon) for each photon of one kind within the pass's radius of a camera-path vertex
+// that arrived from the side the camera path did (wo: world, unit, towards the camera side) and
+// whose joined path fits the segment limit, in the grid's record order: deterministic.
+template <typename Visit>
+PS_INLINE void for_each_gathered_photon(const PhotonSetView& map, int max_segments, const SurfaceHit& hit, const Vec3& wo,
+                                        int camera_segments, Visit&& visit) {
+  if (map.radius <= 0.f) return;
   const Vec3 n_front = dot(hit.ng, wo) >= 0.f ? hit.ng : -hit.ng;
-  // The shading frame only once a photon is found: most gathers find none.
-  Frame frame;
-  Vec3 wo_local;
-  bool framed = false;
   const float r2 = map.radius * map.radius;
-  Rgb sum;
   // The photons are in the grid's record order (CausticPhotonMap::index), so a cell's range indexes
   // them directly: one array read per photon instead of a record and then the photon.
   map.grid.for_each_cell_range(hit.p, map.radius, [&](uint32_t begin, uint32_t end) {
     for (uint32_t i = begin; i < end; ++i) {
       const CausticPhoton& ph = map.photons[i];
       if (distance_squared(ph.p, hit.p) > r2) continue;
-      if (camera_segments + int(ph.segments) > map.max_segments) continue;
+      if (camera_segments + int(ph.segments) > max_segments) continue;
       if (dot(n_front, ph.wi) <= 0.f) continue;
-      if (!framed) {
-        frame = Frame(hit.ns);
-        wo_local = frame.to_local(wo);
-        framed = true;
-      }
-      const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
-      if (all_finite(c)) sum += c;
+      visit(ph);
     }
   });
+}
+
+// Radiance reflected towards wo (world, unit) at a camera-path vertex by one kind of photons:
+// sum f(wo, wi_p) Phi_p / (pi r^2 N) over the photons for_each_gathered_photon visits.
+PS_INLINE Rgb gather_photons(const PhotonSetView& map, int max_segments, const SurfaceHit& hit, const Material& mat,
+                             const Vec3& wo, int camera_segments) {
+  // The shading frame only once a photon is found: most gathers find none.
+  Frame frame;
+  Vec3 wo_local;
+  bool framed = false;
+  Rgb sum;
+  for_each_gathered_photon(map, max_segments, hit, wo, camera_segments, [&](const CausticPhoton& ph) {
+    if (!framed) {
+      frame = Frame(hit.ns);
+      wo_local = frame.to_local(wo);
+      framed = true;
+    }
+    const Rgb c = bsdf_eval(mat, wo_local, frame.to_local(ph.wi), TransportMode::radiance) * ph.power;
+    if (all_finite(c)) sum += c;
+  });
   return sum * map.inv_area_count;
+}
+
+// Whether f is Lambert's alone, rho_d / pi: a gather then sums the photons' power and multiplies once.
+PS_INLINE bool is_lambertian(const Material& m) {
+  return m.type == MaterialType::standard && is_black(m.glossy) && is_black(m.specular);
+}
+
+// gather_photons for the one-bounce photons, which are everywhere (a gather finds tens): at a
+// Lambertian vertex the sum of the powers from above the surface times rho_d / pi, the test as
+// bsdf_eval makes it but without a shading frame and an evaluation per photon.
+PS_INLINE Rgb gather_one_bounce_photons(const PhotonSetView& map, int max_segments, const SurfaceHit& hit, const Material& mat,
+                                        const Vec3& wo, int camera_segments) {
+  if (!is_lambertian(mat)) return gather_photons(map, max_segments, hit, mat, wo, camera_segments);
+  float wo_z = dot(hit.ns, wo);
+  const bool flip = detail::mirrors_to_wo_side(mat) && wo_z < 0.f;
+  if (flip) wo_z = -wo_z;
+  if (wo_z < kMinCosine) return Rgb();
+  Rgb power;
+  for_each_gathered_photon(map, max_segments, hit, wo, camera_segments, [&](const CausticPhoton& ph) {
+    const float wi_z = flip ? -dot(hit.ns, ph.wi) : dot(hit.ns, ph.wi);
+    if (wi_z >= kMinCosine) power += ph.power;
+  });
+  return mat.diffuse * (kInvPi * map.inv_area_count) * power;
 }
 
 }  // namespace pathspace

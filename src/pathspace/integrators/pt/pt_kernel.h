@@ -135,6 +135,11 @@ struct PtPathState {
   // With caustics: 1 after a gathering (selectable) vertex's bounce, 2 once vertices that are not
   // selectable alone followed it (emission found then belongs to the photon map), 0 otherwise.
   int caustic_chain = 0;
+  // Gathering vertices passed. With one-bounce photons (CausticMapView::with_one_bounce) every
+  // gathering vertex gathers them, and only the first gathers caustics and estimates direct light:
+  // the light that reaches a later one directly or through links (its next event estimate, the
+  // emission found after it, its caustics) is what the previous vertex's one-bounce photons carry.
+  int receivers_passed = 0;
   int selected = 0, diffuse_index = 0;
   int segments = 1;          // of the ray being traced (camera ray = segment 1)
   // Camera-side branches (VertexSelection::camera_splits): bit k of split_code picks the path's
@@ -144,7 +149,7 @@ struct PtPathState {
   int splits = 0;
   // Next event estimation waiting for its shadow ray: added if the ray is unoccluded.
   bool shadow_pending = false;
-  int shadow_vertex = -1;    // -1: shadow_value[0] adds to open[shadow_owner] / the prefix; k: sets open[k].nee[l]
+  int shadow_vertex = -1;    // -1: shadow_value[0] adds to open[shadow_owner] / the prefix; k: to open[k].nee[l]
   int shadow_owner = -1;
   Ray shadow_ray;
   Rgb shadow_value[kMaxBsdfLayers];
@@ -155,6 +160,11 @@ struct PtPathState {
   Pcg32 medium_rng;
 
   PS_HD Rgb& radiance() { return owner < 0 ? prefix : open[owner].after; }
+  // Whether emission reached now belongs to the photon map: through links from a gathering vertex,
+  // or at all from the receiver standing for a one-bounce photon's bounce.
+  PS_HD bool emission_is_photons(const CausticMapView* caustics) const {
+    return caustic_chain == 2 || (caustic_chain == 1 && receivers_passed >= 2 && caustics->with_one_bounce);
+  }
   // Whether the path may split here (at smooth glass, in a scattering medium): a filter selects
   // vertices, none is selectable yet, and the split budget is not spent.
   PS_HD bool may_split(const VertexSelection& selection) const {
@@ -190,6 +200,29 @@ PS_HD OpenVertex* open_selected_vertex(const SceneView& scene, const Tracer& tra
   ++s->selected;
   return sel;
 }
+
+// One-bounce photons at a gathering vertex (CausticMapView::with_one_bounce): light arriving here
+// as the next event estimate's does, so at a selected vertex `sel` they join its estimate, per layer,
+// and the filter averages them with it (the gather discs too); elsewhere they go to what owns the
+// radiance. wo: towards the camera side, in world space and in the shading frame `frame`;
+// `segments`: the camera path's up to the vertex.
+PS_INLINE void add_one_bounce_photons(const CausticMapView& caustics, const SurfaceHit& hit, const Material& mat, const Frame& frame,
+                                      const Vec3& wo_world, const Vec3& wo, const BsdfLayers& layers, bool split_layers,
+                                      int segments, OpenVertex* sel, PtPathState* s) {
+  const PhotonSetView& photons = caustics.one_bounce;
+  if (!sel) {
+    s->radiance() += s->beta * gather_one_bounce_photons(photons, caustics.max_segments, hit, mat, wo_world, segments);
+  } else if (layers.count == 1 && is_lambertian(mat)) {
+    sel->nee[0] += gather_one_bounce_photons(photons, caustics.max_segments, hit, mat, wo_world, segments);
+  } else {
+    for_each_gathered_photon(photons, caustics.max_segments, hit, wo_world, segments, [&](const CausticPhoton& ph) {
+      Rgb fl[kMaxBsdfLayers];
+      eval_layers(mat, layers, split_layers, wo, frame.to_local(ph.wi), fl);
+      for (int l = 0; l < layers.count; ++l)
+        if (all_finite(fl[l])) sel->nee[l] += fl[l] * ph.power * photons.inv_area_count;
+    });
+  }
+}
 }  // namespace pt_detail
 
 // What follows a step: trace s.ray next, or the path has ended (after its pending shadow ray).
@@ -208,7 +241,7 @@ PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* o
   s->prev_p = ray.o;
   s->prev_ns = Vec3(0.f);
   s->path_distance = s->prev_distance = 0.f;
-  s->caustic_chain = s->selected = s->diffuse_index = 0;
+  s->caustic_chain = s->receivers_passed = s->selected = s->diffuse_index = 0;
   s->segments = 1;
   s->split_code = split_code;
   s->splits = 0;
@@ -216,9 +249,10 @@ PS_INLINE void pt_begin(PtPathState* s, const Ray& ray, pt_detail::OpenVertex* o
 }
 
 // The path's ray left the scene: environment emission; the path ends.
-PS_INLINE void pt_on_miss(const SceneView& scene, const PtSettings& settings, PtPathState* s) {
+PS_INLINE void pt_on_miss(const SceneView& scene, const PtSettings& settings, PtPathState* s,
+                          const CausticMapView* caustics = nullptr) {
   using namespace pt_detail;
-  if (scene.environment_light < 0 || s->caustic_chain == 2) return;
+  if (scene.environment_light < 0 || (caustics && s->emission_is_photons(caustics))) return;
   const Light& env = scene.lights[scene.environment_light];
   const Ray& ray = s->ray;
   if (s->after_delta || !settings.nee) {
@@ -245,7 +279,7 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   s->prev_distance = s->path_distance;
   s->path_distance += hit.t;
 
-  if (hit.light != kNoLight && s->caustic_chain != 2) {
+  if (hit.light != kNoLight && !(caustics && s->emission_is_photons(caustics))) {
     const Light& light = scene.lights[hit.light];
     const Rgb le = area_light_radiance(scene, light, hit.ng, -ray.d, hit.uv);
     if (!is_black(le)) {
@@ -281,23 +315,28 @@ PS_HD PtNext pt_on_hit(const SceneView& scene, const Tracer& tracer, const Sampl
   // Caustic photons gather at selectable vertices rough enough (CausticMapView::receivers); the
   // others are links of caustic chains.
   const bool gathers = caustics && selectable && is_selectable(layers, caustics->receivers);
+  if (gathers) ++s->receivers_passed;
+  // A gathering vertex whose direct light and caustics the previous one's one-bounce photons carry.
+  const bool silent = gathers && s->receivers_passed >= 2 && caustics->with_one_bounce;
   if (selectable) {
     // Caustics at every sufficiently diffuse vertex, into what owns the radiance here: the prefix
     // up to the first selected vertex (so not averaged by the filter, sec. 2.3), after it the last
     // selected vertex's contribution (light arriving there from elsewhere, filtered with it).
-    if (gathers) s->radiance() += s->beta * gather_caustics(scene, *caustics, hit, mat, -ray.d, segments);
+    if (gathers && !silent) s->radiance() += s->beta * gather_photons(caustics->caustic, caustics->max_segments, hit, mat, -ray.d, segments);
     ++s->diffuse_index;
     if (wants_vertex(selection, s->diffuse_index, s->selected)) {
       sel = open_selected_vertex(scene, tracer, hit, -ray.d, segments, layers, probes, counters, s);
       if (query_only && !selects_more(selection, s->selected)) return PtNext::end;
     }
+    if (gathers && caustics->with_one_bounce)
+      add_one_bounce_photons(*caustics, hit, mat, frame, -ray.d, wo, layers, selection.split_layers, segments, sel, s);
   }
 
   // Next event estimation: one light, one point on it; its contribution waits for the shadow ray.
   // Not at a vertex that is not selectable reached from a gathering vertex through such vertices
   // only: light -> it -> ... -> that vertex is a caustic path, which the photon map carries.
   const bool in_caustic_chain = caustics && s->caustic_chain != 0 && !gathers;
-  if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat) && !in_caustic_chain) {
+  if (settings.nee && scene.num_lights > 0 && bsdf_has_non_delta(mat) && !in_caustic_chain && !silent) {
     float select_prob;
     const uint32_t li = select_light_at(scene, hit.p, hit.ns, sampler.at(dims::vertex(v, dims::kLightSelect)), &select_prob);
     LightSample ls;
@@ -559,7 +598,7 @@ PS_INLINE void pt_resolve_shadow(PtPathState* s, bool occluded) {
   if (occluded) return;
   if (s->shadow_vertex >= 0) {
     pt_detail::OpenVertex& o = s->open[s->shadow_vertex];
-    for (int l = 0; l < o.layers.count; ++l) o.nee[l] = s->shadow_value[l];
+    for (int l = 0; l < o.layers.count; ++l) o.nee[l] += s->shadow_value[l];
   } else {
     (s->shadow_owner < 0 ? s->prefix : s->open[s->shadow_owner].after) += s->shadow_value[0];
   }
@@ -643,7 +682,7 @@ PS_HD int pt_trace_branch(const SceneView& scene, const Tracer& tracer, const Sa
       }
     }
     if (!found) {
-      pt_on_miss(scene, settings, &s);
+      pt_on_miss(scene, settings, &s, caustics);
       break;
     }
     if (media && scene.materials[hit.material].type == MaterialType::interface) {
