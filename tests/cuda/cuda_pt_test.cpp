@@ -73,6 +73,17 @@ TEST(CudaPt, FilteredCornellBoxWithCausticPhotonsMatchesCpu) {
   expect_gpu_matches_cpu(make_builtin_scene("cornell-box", 64, 64), config, 256, "cornell-box pt + hashed + caustic photons cuda vs cpu");
 }
 
+// The same with one-bounce photons: two photons per photon path, two grids, gathers at every receiver.
+TEST(CudaPt, FilteredCornellBoxWithOneBouncePhotonsMatchesCpu) {
+  PATHSPACE_REQUIRE_GPU();
+  HashedFilterSettings s;
+  s.caustics.photons_per_pixel = 1.0;
+  s.caustics.one_bounce = true;
+  RenderConfig config = with_filter(testing::default_config("pt", testing::test_seed(6)), "hashed", s);
+  expect_gpu_matches_cpu(make_builtin_scene("cornell-box", 64, 64), config, 256,
+                         "cornell-box pt + hashed + one-bounce photons cuda vs cpu");
+}
+
 TEST(CudaPt, WavefrontEqualsMegakernelBitForBit) {
   PATHSPACE_REQUIRE_GPU();
   testing::expect_pipelines_agree(make_builtin_scene("cornell-glossy", 64, 64), FilterChoice{});
@@ -81,6 +92,9 @@ TEST(CudaPt, WavefrontEqualsMegakernelBitForBit) {
   testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
   HashedFilterSettings with_photons;
   with_photons.caustics.photons_per_pixel = 1.0;
+  hashed.settings = with_photons;
+  testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
+  with_photons.caustics.one_bounce = true;
   hashed.settings = with_photons;
   testing::expect_pipelines_agree(make_builtin_scene("cornell-box", 64, 64), hashed);
 }
