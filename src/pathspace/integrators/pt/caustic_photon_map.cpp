@@ -55,13 +55,14 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
   index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
-void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths) {
+void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths,
+                                        float cell_radii) {
   // The grid holds the stored photons only (a few in ten of the traced ones): its table, sized by
   // its points, then stays small enough for the caches that every gather's probes go through.
   stored_index.clear();
   for (size_t i = size_t(kind); i < traced.size(); i += 2)
     if (traced[i].stored) stored_index.push_back(uint32_t(i));
-  grid.build(stored_index.size(), radius, [&](size_t i) { return traced[stored_index[i]].p; });
+  grid.build(stored_index.size(), cell_radii * radius, [&](size_t i) { return traced[stored_index[i]].p; });
   // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
   const size_t linked = grid.compacted_records();
   in_cells.resize(linked);
@@ -78,8 +79,10 @@ void CausticPhotonMap::index(uint32_t pass, double trace_seconds) {
   const auto start = std::chrono::steady_clock::now();
   const size_t n = traced_.size() / 2;
   const float r = radius_.at(pass);
-  caustic_set_.index(traced_, 0, r, n);
-  if (one_bounce_) one_bounce_set_.index(traced_, 1, r, n);
+  caustic_set_.index(traced_, 0, r, n, 1.f);
+  // The one-bounce photons are everywhere: in cells four radii wide (not two) a gather reads one or
+  // two cells' consecutive photons more often than up to eight cells' (a pass 2.6x -> 2.4x PT).
+  if (one_bounce_) one_bounce_set_.index(traced_, 1, r, n, 2.f);
   view_.caustic = caustic_set_.view;
   view_.one_bounce = one_bounce_set_.view;
   view_.max_segments = max_segments_;

@@ -64,7 +64,8 @@ class CausticPhotonMap {
     std::vector<CausticPhoton> in_cells;
     std::vector<uint32_t> stored_index;  // of traced_, in order
     PhotonSetView view;
-    void index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths);
+    // cell_radii: the grid's cells are built for a radius this many times the gather radius.
+    void index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths, float cell_radii);
   };
 
   SceneView scene_;
