@@ -49,7 +49,8 @@ void DeviceCausticMap::build(const SceneView& scene, const BvhTracer& tracer, ui
   host_.index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   view_ = host_.view();
   view_.caustic = caustic_.upload(view_.caustic, host_.caustic_grid());
-  view_.one_bounce = one_bounce_.upload(view_.one_bounce, host_.one_bounce_grid());
+  // Without one-bounce photons their grid is never built: nothing to upload.
+  if (host_.one_bounce()) view_.one_bounce = one_bounce_.upload(view_.one_bounce, host_.one_bounce_grid());
 }
 
 PhotonSetView DeviceCausticMap::DeviceSet::upload(const PhotonSetView& host, const HashGrid& grid) {
