@@ -4,7 +4,10 @@
 // The two use different triangle tests (Woop et al.'s watertight test, Embree's own), so a ray
 // through a shared edge or vertex may be given to either triangle, and t, u, v differ by rounding:
 // such rays are counted, not forbidden, and must stay below 1e-4 of all. Hits of different
-// primitives at the same t (coplanar overlapping faces) are ties, counted apart.
+// primitives at the same t (coplanar overlapping faces) are ties, counted apart. The wide BVH
+// (accel/wide_bvh.h) collapsed from the same tree tests the same primitives with the same code, so
+// on every ray it must find the binary tracer's nearest t exactly (its primitive too, but for ties)
+// and give every shadow ray the same answer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +20,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/accel/bvh_build.h"
 #include "pathspace/accel/bvh_tracer.h"
+#include "pathspace/accel/wide_bvh_build.h"
 #include "pathspace/integrators/common/camera_sample.h"
 #include "pathspace/integrators/pt/pt_kernel.h"
 #include "pathspace/sampling/rng.h"
@@ -45,6 +49,8 @@ struct Traced {
   Accel accel{scene};
   FlatBvh bvh = build_bvh(view);
   BvhTracer tracer{view, bvh.view()};
+  WideBvh wide = build_wide_bvh(bvh);
+  WideBvhTracer wide_tracer{view, wide.view()};
 };
 
 // Rays from random points in the scene's bounds in random directions (one in eight along an axis
@@ -140,6 +146,24 @@ Agreement compare_occluded(const Traced& t, const std::vector<Ray>& rays, uint64
   return a;
 }
 
+// The wide tracer against the binary one: nearest hits (found, t to the bit, primitive but for
+// ties) and shadow rays of random lengths; returns the rays whose answers differ.
+size_t wide_differences(const Traced& t, const std::vector<Ray>& rays, uint64_t seed) {
+  Pcg32 rng(seed, 13);
+  size_t differ = 0;
+  for (Ray ray : rays) {
+    SurfaceHit b, w;
+    const bool fb = t.tracer.intersect(ray, &b), fw = t.wide_tracer.intersect(ray, &w);
+    if (fb != fw || (fb && (std::memcmp(&b.t, &w.t, sizeof b.t) != 0 || ((b.prim != w.prim || b.kind != w.kind) && b.t != w.t)))) {
+      ++differ;
+      continue;
+    }
+    ray.tmax = (fb ? b.t : 1.f) * (0.5f + rng.next_float());
+    if (t.tracer.occluded(ray) != t.wide_tracer.occluded(ray)) ++differ;
+  }
+  return differ;
+}
+
 void expect_agreement(const Scene& scene, const std::string& name, size_t count) {
   SCOPED_TRACE(name);
   const Traced t{scene};
@@ -155,6 +179,9 @@ void expect_agreement(const Scene& scene, const std::string& name, size_t count)
   std::printf("%s: %u nodes, %u refs, depth %u, %.2f ms; of %zu rays, %zu nearest hits differ (%zu ties), %zu shadow answers\n",
               name.c_str(), t.bvh.stats.nodes, t.bvh.stats.prim_refs, t.bvh.stats.max_depth, 1e3 * t.bvh.stats.build_seconds,
               hits.rays, hits.disagree, hits.ties, shadows.disagree);
+  EXPECT_EQ(wide_differences(t, rays, 3), 0u) << "wide BVH against the binary one";
+  std::printf("%s wide: %u nodes, %.2f children each, depth %u\n", name.c_str(), t.wide.stats.nodes, t.wide.stats.mean_children,
+              t.wide.stats.max_depth);
 }
 
 TEST(BvhTracer, HitsAgreeWithEmbreeOnTheBuiltinScenes) {

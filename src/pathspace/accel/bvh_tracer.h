@@ -57,10 +57,9 @@ PS_INLINE RayPrep prepare(const Ray& ray) {
   return r;
 }
 
-// Entry distance of child c of `node` when the ray's (tmin, tmax) interval overlaps its box.
+// Entry distance of the box [lo, hi] when the ray's (tmin, tmax) interval overlaps it.
 // Ize 2013: the far distance times 1 + 2 gamma(3) covers the rounding of the three slab products.
-PS_INLINE bool hit_child_box(const RayPrep& r, const BvhNode& node, int c, float tmin, float tmax, float* entry) {
-  const Vec3 lo = node.lo(c), hi = node.hi(c);
+PS_INLINE bool hit_box(const RayPrep& r, const Vec3& lo, const Vec3& hi, float tmin, float tmax, float* entry) {
   const float x0 = (lo.x - r.o.x) * r.inv_d.x, x1 = (hi.x - r.o.x) * r.inv_d.x;
   const float y0 = (lo.y - r.o.y) * r.inv_d.y, y1 = (hi.y - r.o.y) * r.inv_d.y;
   const float z0 = (lo.z - r.o.z) * r.inv_d.z, z1 = (hi.z - r.o.z) * r.inv_d.z;
@@ -70,6 +69,11 @@ PS_INLINE bool hit_child_box(const RayPrep& r, const BvhNode& node, int c, float
   const float t_far = min_of(min_of(max_of(x0, x1), max_of(y0, y1)), min_of(max_of(z0, z1), tmax)) * 1.0000004f;
   *entry = t_near;
   return t_near <= t_far;
+}
+
+// hit_box for child c of a binary node.
+PS_INLINE bool hit_child_box(const RayPrep& r, const BvhNode& node, int c, float tmin, float tmax, float* entry) {
+  return hit_box(r, node.lo(c), node.hi(c), tmin, tmax, entry);
 }
 
 // Woop, Benthin, Wald 2013, fig. 6 (without backface culling) for the hit decision. On a hit in (tmin, tmax): t, and u, v
@@ -185,16 +189,33 @@ PS_HD bool traverse(const SceneView& scene, const BvhView& bvh, const Ray& ray, 
 
 }  // namespace bvh_detail
 
-struct BvhTracer {
+// How a tree of view type View is traversed: run<AnyHit, Moving>(scene, view, ray, &t, &ref, &u, &v)
+// as bvh_detail::traverse. Specialised per tree (accel/wide_bvh.h has the wide one's).
+template <typename View>
+struct TreeTraversal;
+
+template <>
+struct TreeTraversal<BvhView> {
+  template <bool AnyHit, bool Moving>
+  PS_HD static bool run(const SceneView& scene, const BvhView& bvh, const Ray& ray, float* t, uint32_t* ref, float* u, float* v) {
+    return bvh_detail::traverse<AnyHit, Moving>(scene, bvh, ray, t, ref, u, v);
+  }
+};
+
+// The Tracer interface (intersect / occluded, as accel/accel.h's Accel) over a tree and the scene
+// it indexes.
+template <typename View>
+struct TreeTracer {
   SceneView scene;
-  BvhView bvh;
+  View bvh;
 
   // Nearest hit in (ray.tmin, ray.tmax); fills every field of *hit as Accel::intersect does.
   PS_HD bool intersect(const Ray& ray, SurfaceHit* hit) const {
     float t = 0.f, u = 0.f, v = 0.f;
     uint32_t ref = 0;
-    const bool found = scene.positions_end ? bvh_detail::traverse<false, true>(scene, bvh, ray, &t, &ref, &u, &v)
-                                           : bvh_detail::traverse<false, false>(scene, bvh, ray, &t, &ref, &u, &v);
+    using T = TreeTraversal<View>;
+    const bool found = scene.positions_end ? T::template run<false, true>(scene, bvh, ray, &t, &ref, &u, &v)
+                                           : T::template run<false, false>(scene, bvh, ray, &t, &ref, &u, &v);
     if (!found) return false;
     fill_surface_hit(scene, bvh_ref_kind(ref), bvh_ref_index(ref), t, u, v, ray, hit);
     return true;
@@ -204,9 +225,12 @@ struct BvhTracer {
   PS_HD bool occluded(const Ray& ray) const {
     float t = 0.f, u = 0.f, v = 0.f;
     uint32_t ref = 0;
-    return scene.positions_end ? bvh_detail::traverse<true, true>(scene, bvh, ray, &t, &ref, &u, &v)
-                               : bvh_detail::traverse<true, false>(scene, bvh, ray, &t, &ref, &u, &v);
+    using T = TreeTraversal<View>;
+    return scene.positions_end ? T::template run<true, true>(scene, bvh, ray, &t, &ref, &u, &v)
+                               : T::template run<true, false>(scene, bvh, ray, &t, &ref, &u, &v);
   }
 };
+
+using BvhTracer = TreeTracer<BvhView>;
 
 }  // namespace pathspace

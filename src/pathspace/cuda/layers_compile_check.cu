@@ -74,6 +74,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/accel/bvh_tracer.h"
 #include "pathspace/accel/bvh_view.h"
+#include "pathspace/accel/wide_bvh.h"
 #include "pathspace/accel/surface_hit_fill.h"
 #include "pathspace/filters/path_sample.h"
 #include "pathspace/filters/vertex_selection.h"
@@ -223,6 +224,16 @@ __global__ void bvh_tracer_compile_check(SceneView scene, BvhView bvh, const Ray
   if (i >= n) return;
   const BvhTracer tracer{scene, bvh};
   if (!tracer.intersect(rays[i], &hits[i])) fill_sphere_hit(scene, 0, 1.f, rays[i], &hits[i]);
+  blocked[i] = tracer.occluded(rays[i]);
+}
+
+// The tracer over the 8-wide BVH with quantised child boxes.
+__global__ void wide_bvh_tracer_compile_check(SceneView scene, WideBvhView bvh, const Ray* rays, SurfaceHit* hits, bool* blocked,
+                                              uint32_t n) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  const WideBvhTracer tracer{scene, bvh};
+  tracer.intersect(rays[i], &hits[i]);
   blocked[i] = tracer.occluded(rays[i]);
 }
 
