@@ -3,6 +3,7 @@
 // directions) and camera rays, on the Cornell box and on Bitterli's living room (outside the
 // repository, docs/testing.md; skipped when missing). Rays/s is the "items_per_second" counter.
 // The BVH tracer is written for GPUs (no SIMD); on the CPU this shows its cost relative to Embree.
+// The wide tracer (accel/wide_bvh.h) over the same tree collapsed to 8-wide nodes runs beside it.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -12,6 +13,7 @@
 #include "pathspace/accel/accel.h"
 #include "pathspace/accel/bvh_build.h"
 #include "pathspace/accel/bvh_tracer.h"
+#include "pathspace/accel/wide_bvh_build.h"
 #include "pathspace/io/scene_loader.h"
 #include "pathspace/sampling/rng.h"
 #include "pathspace/sampling/warps.h"
@@ -31,6 +33,7 @@ struct Setup {
   SceneView view;
   std::unique_ptr<Accel> accel;
   FlatBvh bvh;
+  WideBvh wide;
   std::vector<Ray> incoherent, camera;
 };
 
@@ -40,6 +43,7 @@ std::unique_ptr<Setup> make_setup(Scene scene) {
   s->view = s->scene.view();
   s->accel = std::make_unique<Accel>(s->scene);
   s->bvh = build_bvh(s->view);
+  s->wide = build_wide_bvh(s->bvh);
   Pcg32 rng(1, 2);
   const Bounds3 b = s->scene.geometry_bounds();
   const Vec3 e = b.diagonal();
@@ -87,32 +91,44 @@ void trace(benchmark::State& state, const Setup* s, const Tracer& tracer, bool c
   state.counters["bvh_build_ms"] = 1e3 * s->bvh.stats.build_seconds;
 }
 
-void run(benchmark::State& state, const Setup* (*setup)(), bool bvh, bool camera) {
+enum class Tracer { embree, bvh, wide };
+
+void run(benchmark::State& state, const Setup* (*setup)(), Tracer which, bool camera) {
   const Setup* s = setup();
   if (!s)
     state.SkipWithError("scene missing (docs/testing.md, 'Test data outside the repository')");
-  else if (bvh)
+  else if (which == Tracer::bvh)
     trace(state, s, BvhTracer{s->view, s->bvh.view()}, camera);
+  else if (which == Tracer::wide)
+    trace(state, s, WideBvhTracer{s->view, s->wide.view()}, camera);
   else
     trace(state, s, *s->accel, camera);
 }
 
-void BM_CornellIncoherentEmbree(benchmark::State& s) { run(s, cornell, false, false); }
-void BM_CornellIncoherentBvh(benchmark::State& s) { run(s, cornell, true, false); }
-void BM_CornellCameraEmbree(benchmark::State& s) { run(s, cornell, false, true); }
-void BM_CornellCameraBvh(benchmark::State& s) { run(s, cornell, true, true); }
-void BM_LivingRoomIncoherentEmbree(benchmark::State& s) { run(s, living_room, false, false); }
-void BM_LivingRoomIncoherentBvh(benchmark::State& s) { run(s, living_room, true, false); }
-void BM_LivingRoomCameraEmbree(benchmark::State& s) { run(s, living_room, false, true); }
-void BM_LivingRoomCameraBvh(benchmark::State& s) { run(s, living_room, true, true); }
+void BM_CornellIncoherentEmbree(benchmark::State& s) { run(s, cornell, Tracer::embree, false); }
+void BM_CornellIncoherentBvh(benchmark::State& s) { run(s, cornell, Tracer::bvh, false); }
+void BM_CornellIncoherentWide(benchmark::State& s) { run(s, cornell, Tracer::wide, false); }
+void BM_CornellCameraEmbree(benchmark::State& s) { run(s, cornell, Tracer::embree, true); }
+void BM_CornellCameraBvh(benchmark::State& s) { run(s, cornell, Tracer::bvh, true); }
+void BM_CornellCameraWide(benchmark::State& s) { run(s, cornell, Tracer::wide, true); }
+void BM_LivingRoomIncoherentEmbree(benchmark::State& s) { run(s, living_room, Tracer::embree, false); }
+void BM_LivingRoomIncoherentBvh(benchmark::State& s) { run(s, living_room, Tracer::bvh, false); }
+void BM_LivingRoomIncoherentWide(benchmark::State& s) { run(s, living_room, Tracer::wide, false); }
+void BM_LivingRoomCameraEmbree(benchmark::State& s) { run(s, living_room, Tracer::embree, true); }
+void BM_LivingRoomCameraBvh(benchmark::State& s) { run(s, living_room, Tracer::bvh, true); }
+void BM_LivingRoomCameraWide(benchmark::State& s) { run(s, living_room, Tracer::wide, true); }
 BENCHMARK(BM_CornellIncoherentEmbree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CornellIncoherentBvh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CornellIncoherentWide)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CornellCameraEmbree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CornellCameraBvh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CornellCameraWide)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LivingRoomIncoherentEmbree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LivingRoomIncoherentBvh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LivingRoomIncoherentWide)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LivingRoomCameraEmbree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LivingRoomCameraBvh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LivingRoomCameraWide)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace pathspace
