@@ -12,7 +12,10 @@
 // gathered radiance goes into the path's prefix: it is not averaged again by the filter ("the
 // contribution to vertices obtained by photon mapping should not be included in path space
 // filtering"); at later vertices it is light arriving at the selected vertex from elsewhere,
-// averaged with the rest of its contribution.
+// averaged with the rest of its contribution. With one-bounce photons (CausticSettings::one_bounce)
+// a photon path goes on from its first receiver and is stored once more at the next; those are
+// gathered at every receiver, and only the first receiver keeps its direct light and caustics
+// (pt_kernel.h, PtPathState::receivers_passed).
 #pragma once
 
 #include "pathspace/hashgrid/hash_grid_view.h"
