@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "pathspace/accel/accel.h"
 #include "pathspace/base/error.h"
@@ -15,6 +17,16 @@
 
 namespace pathspace {
 namespace {
+
+// A texture named "t" of width x height linear texels, every other field at its default.
+ImageTexture texture_of(int width, int height, std::vector<Rgb> texels) {
+  ImageTexture t;
+  t.name = "t";
+  t.width = width;
+  t.height = height;
+  t.texels = std::move(texels);
+  return t;
+}
 
 // 2x2 texels, row 0 at the top: a b / c d.
 const Rgb kTexels[4] = {Rgb(1.f, 0.f, 0.f), Rgb(0.f, 1.f, 0.f), Rgb(0.f, 0.f, 1.f), Rgb(1.f, 1.f, 1.f)};
@@ -123,7 +135,7 @@ TEST(SurfaceAttributes, TriangleUvAndShadingNormalAreInterpolated) {
   s.add_triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), m);
   s.uvs = {Point2{0.1f, 0.2f}, Point2{0.9f, 0.2f}, Point2{0.1f, 0.6f}};
   s.normals = {Vec3(0, 0, 1), normalize(Vec3(1, 0, 1)), normalize(Vec3(0, 1, 1))};
-  s.add_texture(ImageTexture{"t", 1, 1, {Rgb(1.f)}});  // hits carry uvs in scenes with textures
+  s.add_texture(texture_of(1, 1, {Rgb(1.f)}));  // hits carry uvs in scenes with textures
   s.camera = test_camera();
   s.finalize();
   const Accel accel(s);
@@ -145,7 +157,7 @@ TEST(SurfaceAttributes, MeshesWithoutAttributesKeepFlatShadingAndDefaultUv) {
   s.add_triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), m);
   s.uvs = {Point2{0.5f, 0.5f}};  // only the first vertex: finalize pads the others with (0, 0)
   s.add_triangle(Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(2, 1, 0), m);
-  s.add_texture(ImageTexture{"t", 1, 1, {Rgb(1.f)}});
+  s.add_texture(texture_of(1, 1, {Rgb(1.f)}));
   s.camera = test_camera();
   s.finalize();
   EXPECT_EQ(s.uvs.size(), s.positions.size());
@@ -163,7 +175,7 @@ TEST(SurfaceAttributes, SphereUvIsSpherical) {
   Scene s;
   const uint32_t m = s.add_material(make_diffuse(Rgb(0.5f)));
   s.add_sphere(Vec3(1, 2, 3), 2.f, m);
-  s.add_texture(ImageTexture{"t", 1, 1, {Rgb(1.f)}});  // hits carry uvs in scenes with textures
+  s.add_texture(texture_of(1, 1, {Rgb(1.f)}));  // hits carry uvs in scenes with textures
   s.camera = test_camera();
   s.finalize();
   const Accel accel(s);
@@ -190,7 +202,7 @@ TEST(SurfaceAttributes, SphereUvIsSpherical) {
 
 TEST(ShadingMaterial, TexturesMultiplyTheReflectances) {
   Scene s;
-  s.add_texture(ImageTexture{"t", 2, 2, {kTexels[0], kTexels[1], kTexels[2], kTexels[3]}});
+  s.add_texture(texture_of(2, 2, {kTexels[0], kTexels[1], kTexels[2], kTexels[3]}));
   Material textured = make_phong(Rgb(0.5f), Rgb(0.25f), 10.f);
   textured.diffuse_texture = 0;
   const uint32_t mt = s.add_material(textured);
