@@ -18,7 +18,7 @@ struct CausticSettings {
   // caustic chains: photons pass them, and only rougher vertices gather (caustic_photons.h).
   float min_roughness = 0.3f;
   // Also photons after one diffuse bounce (light -> links* -> receiver -> links* -> receiver),
-  // gathered at a camera path's first receiver: light that reaches a wall off a small lit patch
+  // gathered at every receiver of a camera path: light that reaches a wall off a small lit patch
   // comes from the lights' side, where a camera path's one BSDF sample rarely finds the patch.
   bool one_bounce = false;
   bool enabled() const { return photons_per_pixel > 0.0; }

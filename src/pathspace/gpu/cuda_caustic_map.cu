@@ -13,14 +13,15 @@ namespace {
 constexpr int kThreads = 128;
 
 // Photon path i of the pass, from the stream the CPU's CausticPhotonMap::build uses for it, into
-// out[2 i] and out[2 i + 1].
+// out[caustic_photons_per_path(one_bounce) * i] on.
 __global__ void trace_photons_kernel(SceneView scene, BvhTracer tracer, uint64_t photon_seed, uint32_t pass, int max_segments,
                                      VertexSelection receivers, bool one_bounce, uint32_t n, CausticPhoton* out,
                                      PathCountersDevice* counters) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
   PathCounters c;
-  trace_caustic_photon(scene, tracer, Sampler(photon_seed, i, pass), max_segments, receivers, one_bounce, &c, &out[2 * size_t(i)]);
+  CausticPhoton* slots = &out[caustic_photons_per_path(one_bounce) * size_t(i)];
+  trace_caustic_photon(scene, tracer, Sampler(photon_seed, i, pass), max_segments, receivers, one_bounce, &c, slots);
   add_counters(counters, uint32_t(c.rays), 0u, 0u, 0u);
 }
 
@@ -37,7 +38,7 @@ void DeviceCausticMap::build(const SceneView& scene, const BvhTracer& tracer, ui
                              PathCountersDevice* counters) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t n = uint32_t(host_.photons_per_pass());
-  traced_.resize(2 * size_t(n));
+  traced_.resize(host_.photons_per_path() * size_t(n));
   if (n > 0) {
     trace_photons_kernel<<<(n + kThreads - 1) / kThreads, kThreads>>>(scene, tracer, caustic_photon_seed(seed), pass,
                                                                      host_.max_segments(), host_.receivers(), host_.one_bounce(), n,

@@ -40,14 +40,15 @@ CausticPhotonMap::CausticPhotonMap(const SceneView& scene, const CausticSettings
 void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
   const size_t n = size_t(photons_per_pass_);
-  traced_.resize(2 * n);
+  const size_t stride = photons_per_path();
+  traced_.resize(stride * n);
   std::atomic<uint64_t> rays{0};
   const uint64_t photon_seed = caustic_photon_seed(seed);
   parallel_for(n, 256, [&](size_t begin, size_t end) {
     PathCounters local;
     for (size_t i = begin; i < end; ++i) {
       const Sampler sampler(photon_seed, i, pass);
-      trace_caustic_photon(scene_, accel, sampler, max_segments_, receivers_, one_bounce_, &local, &traced_[2 * i]);
+      trace_caustic_photon(scene_, accel, sampler, max_segments_, receivers_, one_bounce_, &local, &traced_[stride * i]);
     }
     rays += local.rays;
   });
@@ -55,12 +56,13 @@ void CausticPhotonMap::build(const Accel& accel, uint64_t seed, uint32_t pass, P
   index(pass, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
-void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths,
+void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced, size_t kind, size_t stride, float radius,
                                         float cell_radii) {
+  const size_t paths = traced.size() / stride;
   // The grid holds the stored photons only (a few in ten of the traced ones): its table, sized by
   // its points, then stays small enough for the caches that every gather's probes go through.
   stored_index.clear();
-  for (size_t i = size_t(kind); i < traced.size(); i += 2)
+  for (size_t i = kind; i < traced.size(); i += stride)
     if (traced[i].stored) stored_index.push_back(uint32_t(i));
   grid.build(stored_index.size(), cell_radii * radius, [&](size_t i) { return traced[stored_index[i]].p; });
   // Photons in the grid's record order, so a gather reads each cell's photons from consecutive memory.
@@ -77,12 +79,12 @@ void CausticPhotonMap::PhotonSet::index(const std::vector<CausticPhoton>& traced
 
 void CausticPhotonMap::index(uint32_t pass, double trace_seconds) {
   const auto start = std::chrono::steady_clock::now();
-  const size_t n = traced_.size() / 2;
+  const size_t stride = photons_per_path(), n = traced_.size() / stride;
   const float r = radius_.at(pass);
-  caustic_set_.index(traced_, 0, r, n, 1.f);
+  caustic_set_.index(traced_, 0, stride, r, 1.f);
   // The one-bounce photons are everywhere: in cells four radii wide (not two) a gather reads one or
   // two cells' consecutive photons more often than up to eight cells' (a pass 2.6x -> 2.4x PT).
-  if (one_bounce_) one_bounce_set_.index(traced_, 1, r, n, 2.f);
+  if (one_bounce_) one_bounce_set_.index(traced_, 1, stride, r, 2.f);
   view_.caustic = caustic_set_.view;
   view_.one_bounce = one_bounce_set_.view;
   view_.max_segments = max_segments_;

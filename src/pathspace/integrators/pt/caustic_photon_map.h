@@ -37,12 +37,15 @@ class CausticPhotonMap {
   void build(const Accel& accel, uint64_t seed, uint32_t pass, PathCounters& counters);
   // The two halves of build() for a caller that traces the photons elsewhere (the GPU path tracer,
   // gpu/cuda_caustic_map.h): photon path i of the pass from Sampler(caustic_photon_seed(seed), i,
-  // pass) into traced_photons()[2 i] and [2 i + 1], then index() builds the same map as build() would.
+  // pass) into traced_photons()[photons_per_path() * i] on, then index() builds the same map as
+  // build() would.
   uint64_t photons_per_pass() const { return photons_per_pass_; }
   int max_segments() const { return max_segments_; }
   bool one_bounce() const { return one_bounce_; }
+  // Slots per photon path in traced_photons(): its caustic photon, and its one-bounce photon if asked for.
+  size_t photons_per_path() const { return caustic_photons_per_path(one_bounce_); }
   std::vector<CausticPhoton>& traced_photons() {
-    traced_.resize(2 * size_t(photons_per_pass_));
+    traced_.resize(photons_per_path() * size_t(photons_per_pass_));
     return traced_;
   }
   void index(uint32_t pass, double trace_seconds);
@@ -56,7 +59,7 @@ class CausticPhotonMap {
   void load_state(StateReader& in);
 
  private:
-  // The stored photons of one kind (traced_[2 i + kind]) in a grid, in the grid's record order.
+  // The stored photons of one kind (traced_[stride i + kind]) in a grid, in the grid's record order.
   struct PhotonSet {
     // Most caustic gathers land where no caustic falls: an occupancy bitmap (8 bits per slot, a few
     // tens of KiB) answers them without a cache miss in the slot table.
@@ -65,7 +68,7 @@ class CausticPhotonMap {
     std::vector<uint32_t> stored_index;  // of traced_, in order
     PhotonSetView view;
     // cell_radii: the grid's cells are built for a radius this many times the gather radius.
-    void index(const std::vector<CausticPhoton>& traced, int kind, float radius, size_t paths, float cell_radii);
+    void index(const std::vector<CausticPhoton>& traced, size_t kind, size_t stride, float radius, float cell_radii);
   };
 
   SceneView scene_;
@@ -74,7 +77,7 @@ class CausticPhotonMap {
   VertexSelection receivers_;
   uint64_t photons_per_pass_;
   ProgressiveRadius radius_;
-  std::vector<CausticPhoton> traced_;  // two per photon path: its caustic and its one-bounce photon
+  std::vector<CausticPhoton> traced_;  // photons_per_path() per photon path
   PhotonSet caustic_set_, one_bounce_set_;
   CausticMapView view_;
   uint64_t photons_ = 0, stored_ = 0, stored_one_bounce_ = 0;

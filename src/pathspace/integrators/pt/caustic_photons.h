@@ -66,16 +66,21 @@ struct CausticMapView {
 // from 0), the same on both devices.
 PS_INLINE uint64_t caustic_photon_seed(uint64_t seed) { return seed ^ 0x636175737469637aull; }
 
-// Traces one photon path; out[0] receives its caustic photon, out[1] its photon after one diffuse
-// bounce (only with `one_bounce`; `stored` false where there is none). `receivers`:
+// Photons a photon path may store (trace_caustic_photon's room in `out`): its caustic photon, and
+// its one-bounce photon when those are asked for.
+PS_INLINE uint32_t caustic_photons_per_path(bool one_bounce) { return one_bounce ? 2u : 1u; }
+
+// Traces one photon path; out[0] receives its caustic photon and, only with `one_bounce` (out then
+// has room for caustic_photons_per_path(true)), out[1] its photon after one diffuse bounce (`stored` false where there is none). `receivers`:
 // CausticMapView::receivers, whose roughness test decides where photons are stored. Without
 // `one_bounce` the path ends at its first receiver; with it the path bounces there once more and
 // ends at the next receiver, so the two kinds together carry all light that reaches a receiver
 // after at least one bounce and at most one receiver bounce.
 template <typename Tracer>
 PS_HD void trace_caustic_photon(const SceneView& scene, const Tracer& tracer, const Sampler& sampler, int max_segments,
-                                const VertexSelection& receivers, bool one_bounce, PathCounters* counters, CausticPhoton out[2]) {
-  out[0].stored = out[1].stored = false;
+                                const VertexSelection& receivers, bool one_bounce, PathCounters* counters, CausticPhoton* out) {
+  out[0].stored = false;
+  if (one_bounce) out[1].stored = false;
   LightPathStart start;
   if (!start_light_path(scene, sampler, light_path_time(scene, sampler), &start)) return;
   const EmissionSample& e = start.emission;
