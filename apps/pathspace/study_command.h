@@ -15,9 +15,13 @@ namespace pathspace::cli {
 struct StudyCommandOptions {
   std::string study;  // the subcommand given: "pclt", "psf" or "gallery"
   // Designated: a field added to StudyOptions cannot take another's value.
-  studies::StudyOptions pclt{
-      .out = "pathspace-out/study-pclt", .resolution = "128x128", .time_s = 5.0, .reference_dir = {}, .scenes = {"bs_c", "gbs_c"}};
-  studies::StudyOptions psf{.out = "pathspace-out/study-psf", .resolution = "128x128", .time_s = 3.0, .reference_dir = {}, .scenes = {"bs_c"}};
+  studies::StudyOptions pclt{.out = "pathspace-out/study-pclt",
+                             .resolution = "128x128",
+                             .time_s = 5.0,
+                             .reference_dir = {},
+                             .scenes = {"bs_c", "gbs_c"}};
+  studies::StudyOptions psf{
+      .out = "pathspace-out/study-psf", .resolution = "128x128", .time_s = 3.0, .reference_dir = {}, .scenes = {"bs_c"}};
   studies::PsfStudyOptions psf_only;
   studies::GalleryOptions gallery;
 };

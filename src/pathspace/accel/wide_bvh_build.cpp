@@ -48,17 +48,17 @@ class Collapse {
     add_children(index, children, &count);
     while (count < kWideBvhWidth) {
       int widest = -1;
-      for (int c = 0; c < count; ++c)
-        if (children[c].ref >= 0 && (widest < 0 || surface_area(children[c].box) > surface_area(children[widest].box))) widest = c;
+      for (int c = 0; c < count; ++c) {
+        const bool wider = widest < 0 || surface_area(children[c].box) > surface_area(children[widest].box);
+        if (children[c].ref >= 0 && wider) widest = c;
+      }
       if (widest < 0) break;
       const int32_t opened = children[widest].ref;
       children[widest] = children[--count];
       add_children(opened, children, &count);
     }
     const int32_t self = int32_t(nodes_.size());
-    nodes_.emplace_back();
-    const WideBvhNode quantised = quantise(children, count);
-    nodes_[size_t(self)] = quantised;
+    nodes_.push_back(quantise(children, count));
     for (int c = 0; c < count; ++c)
       if (children[c].ref >= 0) nodes_[size_t(self)].child[c] = node(children[c].ref, depth + 1);
     return self;
